@@ -1,0 +1,35 @@
+#pragma once
+// The command line: subcommands and their options, parsed with CLI11 into plain structs.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ds::app {
+
+enum class Command { Default, Info, Scenes, Settings, Capture, ExportScene };
+
+struct Size {
+    uint32_t width = 1280;
+    uint32_t height = 720;
+};
+
+struct Options {
+    Command command = Command::Default;
+    bool validate = false;  // VK_LAYER_KHRONOS_validation; any message -> exit code 3
+    std::string device;     // "N" or a name substring; "" = first suitable
+    std::string scene = "atrium";
+    Size size;
+    std::string out;  // capture folder / export file
+    std::vector<std::string> sets;  // "name=value"
+    bool renderdoc = false;
+};
+
+// Parses argv. Returns the exit code to use right away (help printed: 0), or nullopt to run.
+// Usage errors throw ds::UsageError.
+std::optional<int> parse_command_line(int argc, char** argv, Options& options);
+
+// "640x360" -> Size; throws UsageError.
+Size parse_size(const std::string& text);
+
+}  // namespace ds::app

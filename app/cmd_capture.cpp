@@ -1,0 +1,93 @@
+// capture and export-scene: load a scene, render or write it, and leave complete output only.
+#include <cstdio>
+
+#include <renderdoc_app.h>
+
+#include "app/commands.h"
+#include "renderer/capture/image_writer.h"
+#include "renderer/capture/output_dir.h"
+#include "renderer/capture/renderdoc.h"
+#include "renderer/capture/report.h"
+#include "renderer/common/error.h"
+#include "renderer/renderer.h"
+#include "renderer/scene/builtin/builtin.h"
+#include "renderer/scene/loader.h"
+
+#ifndef DS_CAPTURE_ROOT
+#define DS_CAPTURE_ROOT "captures"
+#endif
+
+namespace ds::app {
+namespace {
+
+Settings settings_from(const Options& o) {
+    Settings settings;
+    for (const auto& assignment : o.sets) settings.apply(assignment);
+    return settings;
+}
+
+std::filesystem::path capture_dir(const Options& o, const scene::Scene& scene) {
+    if (!o.out.empty()) return o.out;
+    return capture::default_capture_dir(DS_CAPTURE_ROOT, scene.name);
+}
+
+// Validation messages were printed as they came; the exit code tells scripts.
+int exit_code_for(const Renderer& renderer) {
+    const uint64_t messages = renderer.validation_message_count();
+    if (messages == 0) return 0;
+    std::fprintf(stderr, "depthscope: %llu validation message(s)\n",
+                 static_cast<unsigned long long>(messages));
+    return 3;
+}
+
+}  // namespace
+
+int run_capture(const Options& o) {
+    const Settings settings = settings_from(o);
+    // Input first: a bad file fails before any Vulkan work, and before output exists.
+    const scene::Scene scene = scene::load_scene(o.scene, settings);
+    std::unique_ptr<capture::RenderDoc> renderdoc;
+    if (o.renderdoc && !(renderdoc = capture::RenderDoc::attach())) {
+        throw UsageError(
+            "--renderdoc: RenderDoc is not loaded in this process (run under `renderdoccmd "
+            "capture`)");
+    }
+    capture::OutputDir out(capture_dir(o, scene));
+
+    Renderer renderer({.validate = o.validate, .device = o.device});
+    renderer.set_scene(scene);
+    void* device_pointer = RENDERDOC_DEVICEPOINTER_FROM_VKINSTANCE(renderer.instance());
+    if (renderdoc) renderdoc->start(device_pointer, out.staging_path("frame"));
+    const FrameResult frame = renderer.render(scene.camera, settings, o.size.width, o.size.height);
+    if (renderdoc) renderdoc->end(device_pointer);
+
+    capture::write_png_rgba8(out.staging_path("final.png"), frame.width, frame.height,
+                             frame.rgba8);
+    const auto& device = renderer.device_report();
+    capture::ReportInput report{.device_name = device.name,
+                                .driver = device.driver_info,
+                                .api_version = device.api_version_text(),
+                                .scene = &scene,
+                                .width = frame.width,
+                                .height = frame.height,
+                                .settings = &settings,
+                                .gpu_ms = frame.gpu_ms,
+                                .cpu_ms = frame.cpu_ms,
+                                .validation_messages = renderer.validation_message_count()};
+    capture::write_json(out.staging_path("report.json"), capture::make_report(report));
+    out.commit();
+    std::printf("depthscope: wrote %s\n", out.final_dir().c_str());
+    return exit_code_for(renderer);
+}
+
+int run_export_scene(const Options& o) {
+    if (!scene::builtin::exists(o.scene)) {
+        scene::builtin::build(o.scene, Settings{});  // throws the error that lists the names
+    }
+    const auto model = scene::builtin::build(o.scene, settings_from(o));
+    scene::builtin::export_model(model, o.out);
+    std::printf("depthscope: wrote %s\n", o.out.c_str());
+    return 0;
+}
+
+}  // namespace ds::app

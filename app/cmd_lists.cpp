@@ -1,0 +1,37 @@
+// The listing commands: info, scenes, settings.
+#include <cstdio>
+
+#include "app/commands.h"
+#include "renderer/scene/builtin/builtin.h"
+#include "renderer/settings/settings.h"
+#include "renderer/vk/capabilities.h"
+
+namespace ds::app {
+
+int run_info(const Options& options) {
+    const auto reports = vk::probe_all_devices(options.validate);
+    const int selected = vk::select_device_index(reports, options.device);
+    for (size_t i = 0; i < reports.size(); ++i) {
+        std::printf("%s%s\n", int(i) == selected ? "* " : "  ",
+                    vk::format_report(reports[i]).c_str());
+    }
+    return 0;
+}
+
+int run_scenes() {
+    for (const auto& s : scene::builtin::list()) {
+        std::printf("%-10s %s\n", s.name.c_str(), s.description.c_str());
+    }
+    return 0;
+}
+
+int run_settings() {
+    std::printf("%-18s %-6s %-8s %-14s %s\n", "NAME", "TYPE", "DEFAULT", "RANGE", "HELP");
+    for (const auto& d : SettingsRegistry::instance().all()) {
+        std::printf("%-18s %-6s %-8s %-14s %s\n", d.name.c_str(), d.type_name().c_str(),
+                    d.default_value.c_str(), d.range_text().c_str(), d.help.c_str());
+    }
+    return 0;
+}
+
+}  // namespace ds::app

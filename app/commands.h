@@ -1,0 +1,13 @@
+#pragma once
+// One function per subcommand; each returns the process exit code.
+#include "app/cli.h"
+
+namespace ds::app {
+
+int run_info(const Options& options);
+int run_scenes();
+int run_settings();
+int run_capture(const Options& options);
+int run_export_scene(const Options& options);
+
+}  // namespace ds::app

@@ -1,0 +1,46 @@
+// depthscope's entry point: parse, dispatch, and turn every error into one line and an exit
+// code (DESIGN decision 8): 0 ok, 1 runtime or input error, 2 usage error, 3 validation.
+#include <cstdio>
+#include <exception>
+
+#include "app/cli.h"
+#include "app/commands.h"
+#include "renderer/common/error.h"
+
+namespace {
+
+int dispatch(const ds::app::Options& o) {
+    using ds::app::Command;
+    switch (o.command) {
+        case Command::Info: return ds::app::run_info(o);
+        case Command::Scenes: return ds::app::run_scenes();
+        case Command::Settings: return ds::app::run_settings();
+        case Command::ExportScene: return ds::app::run_export_scene(o);
+        case Command::Capture: return ds::app::run_capture(o);
+        case Command::Default:
+            // No inspector yet: the default is a headless capture of the default scene.
+            std::fprintf(stderr, "depthscope: rendering a headless capture of '%s'\n",
+                         o.scene.c_str());
+            return ds::app::run_capture(o);
+    }
+    return 2;
+}
+
+int fail(const char* what, int code) {
+    std::fprintf(stderr, "depthscope: error: %s\n", what);
+    return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        ds::app::Options options;
+        if (auto exit_code = ds::app::parse_command_line(argc, argv, options)) return *exit_code;
+        return dispatch(options);
+    } catch (const ds::UsageError& e) {
+        return fail(e.what(), 2);
+    } catch (const std::exception& e) {
+        return fail(e.what(), 1);
+    }
+}

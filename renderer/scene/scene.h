@@ -1,0 +1,160 @@
+#pragma once
+// The scene model: what the renderer draws. Produced only by the glTF importer (files and
+// built-in scenes both go through it), consumed by the renderer. No Vulkan here.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace ds::scene {
+
+enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
+const char* to_string(AlphaMode mode);
+
+// Interleaved vertex as uploaded to the GPU (48 bytes).
+struct Vertex {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};
+    glm::vec2 uv0{0.0f};
+    glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz tangent, w handedness
+};
+static_assert(sizeof(Vertex) == 48);
+
+struct Bounds {
+    glm::vec3 min{1e30f};
+    glm::vec3 max{-1e30f};
+    bool valid() const { return min.x <= max.x && min.y <= max.y && min.z <= max.z; }
+    void extend(const glm::vec3& p) {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void extend(const Bounds& b) {
+        if (b.valid()) {
+            extend(b.min);
+            extend(b.max);
+        }
+    }
+    glm::vec3 center() const { return (min + max) * 0.5f; }
+    glm::vec3 extent() const { return max - min; }
+};
+
+// One glTF primitive (triangles, one material). glTF meshes with several primitives become
+// several Meshes; `gltf_mesh` keeps the original index.
+struct Mesh {
+    std::string name;
+    uint32_t gltf_mesh = 0;
+    uint32_t material = 0;  // index into Scene::materials (a default material is appended if needed)
+    std::vector<Vertex> vertices;
+    std::vector<uint32_t> indices;  // always present (generated 0..n-1 when the file has none)
+    Bounds bounds;                  // object space
+};
+
+// Decoded image, always RGBA8. `srgb` is true when a material uses it as base colour or
+// emissive (colour data); otherwise it holds linear data (normals, metallic-roughness, AO).
+struct Image {
+    std::string name;
+    uint32_t width = 0;
+    uint32_t height = 0;
+    bool srgb = false;
+    std::vector<uint8_t> rgba8;
+};
+
+enum class Filter : uint8_t { Nearest, Linear };
+enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
+
+struct Sampler {
+    Filter mag = Filter::Linear;
+    Filter min = Filter::Linear;
+    bool mipmaps = true;       // minFilter uses mipmaps
+    Filter mip = Filter::Linear;
+    Wrap wrap_s = Wrap::Repeat;
+    Wrap wrap_t = Wrap::Repeat;
+};
+
+struct Texture {
+    uint32_t image = 0;
+    uint32_t sampler = 0;  // index into Scene::samplers (a default sampler is always at the end)
+};
+
+struct TextureRef {
+    int32_t texture = -1;  // -1: none
+    uint32_t uv_set = 0;   // only set 0 is supported by the renderer
+    bool present() const { return texture >= 0; }
+};
+
+struct Material {
+    std::string name;
+    glm::vec4 base_color_factor{1.0f};
+    float metallic_factor = 1.0f;
+    float roughness_factor = 1.0f;
+    glm::vec3 emissive_factor{0.0f};
+    float normal_scale = 1.0f;
+    float occlusion_strength = 1.0f;
+    TextureRef base_color;
+    TextureRef metallic_roughness;
+    TextureRef normal;
+    TextureRef occlusion;
+    TextureRef emissive;
+    AlphaMode alpha_mode = AlphaMode::Opaque;
+    float alpha_cutoff = 0.5f;
+    bool double_sided = false;
+};
+
+// One placement of a Mesh in the world (from the node hierarchy).
+struct Instance {
+    uint32_t mesh = 0;
+    glm::mat4 world{1.0f};
+};
+
+// Instances that share (mesh, alpha mode, double-sided): drawn with one instanced draw
+// (seed 000). Instances of a group are contiguous in Scene::instances. Groups keep the order
+// in which the file first uses them (authored order, never sorted front to back).
+struct DrawGroup {
+    uint32_t mesh = 0;
+    AlphaMode alpha_mode = AlphaMode::Opaque;
+    bool double_sided = false;
+    uint32_t first_instance = 0;
+    uint32_t instance_count = 0;
+};
+
+struct Camera {
+    glm::vec3 position{0.0f, 0.0f, 5.0f};
+    glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit
+    glm::vec3 up{0.0f, 1.0f, 0.0f};        // unit
+    float yfov = 0.8f;                     // radians
+    float znear = 0.1f;
+    float zfar = 1000.0f;
+    glm::mat4 view() const;
+};
+
+struct DirectionalLight {
+    glm::vec3 direction{-0.3f, -1.0f, -0.4f};  // direction the light travels (unit)
+    glm::vec3 color{1.0f};
+    float intensity = 3.0f;
+};
+
+struct Scene {
+    std::string name;    // "atrium", or the file's stem
+    std::string source;  // "builtin:atrium" or the file path
+    uint32_t gltf_mesh_count = 0;
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<Image> images;
+    std::vector<Sampler> samplers;
+    std::vector<Texture> textures;
+    std::vector<Instance> instances;
+    std::vector<DrawGroup> draw_groups;
+    Bounds bounds;                      // world space
+    std::optional<Camera> file_camera;  // the file's first camera, when it has one
+    Camera camera;                      // file_camera, or framed from the bounds
+    DirectionalLight sun;
+
+    uint64_t triangle_count() const;  // over all instances
+};
+
+// Camera that looks at `bounds` from a pleasant direction with the whole box in view.
+Camera frame_bounds(const Bounds& bounds, float yfov = 0.8f);
+
+}  // namespace ds::scene

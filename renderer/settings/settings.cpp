@@ -1,0 +1,192 @@
+#include "renderer/settings/settings.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "renderer/common/error.h"
+
+namespace ds {
+namespace {
+
+SettingDef bool_knob(std::string name, std::string group, bool def, std::string help,
+                     Invalidates inv) {
+    return SettingDef{std::move(name), std::move(group), SettingType::Bool, def ? "on" : "off", 0,
+                      0, {"on", "off"}, std::move(help), inv};
+}
+
+SettingDef int_knob(std::string name, std::string group, int def, int min, int max,
+                    std::string help, Invalidates inv) {
+    return SettingDef{std::move(name), std::move(group), SettingType::Int, std::to_string(def),
+                      double(min), double(max), {}, std::move(help), inv};
+}
+
+SettingDef float_knob(std::string name, std::string group, std::string def, double min,
+                      double max, std::string help, Invalidates inv) {
+    return SettingDef{std::move(name), std::move(group), SettingType::Float, std::move(def),
+                      min, max, {}, std::move(help), inv};
+}
+
+// Shortest text that reads back to the same float ("0.5", "45", "1e-05").
+std::string format_number(double v) {
+    std::ostringstream out;
+    out.precision(7);
+    out << v;
+    return out.str();
+}
+
+std::string join(const std::vector<std::string>& items, std::string_view sep) {
+    std::string out;
+    for (size_t i = 0; i < items.size(); ++i) {
+        if (i) out += sep;
+        out += items[i];
+    }
+    return out;
+}
+
+std::string canonical_bool(const SettingDef& def, std::string_view v) {
+    if (v == "on" || v == "true" || v == "1" || v == "yes") return "on";
+    if (v == "off" || v == "false" || v == "0" || v == "no") return "off";
+    throw UsageError("setting " + def.name + ": '" + std::string(v) + "' is not on|off");
+}
+
+double parse_number(const SettingDef& def, std::string_view v) {
+    double value = 0.0;
+    const char* end = v.data() + v.size();
+    auto [ptr, ec] = std::from_chars(v.data(), end, value);
+    if (v.empty() || ec != std::errc() || ptr != end || !std::isfinite(value)) {
+        throw UsageError("setting " + def.name + ": '" + std::string(v) + "' is not a number (" +
+                         def.type_name() + " in " + def.range_text() + ")");
+    }
+    if (value < def.min || value > def.max) {
+        throw UsageError("setting " + def.name + ": " + std::string(v) + " is out of range " +
+                         def.range_text());
+    }
+    return value;
+}
+
+std::string canonical_value(const SettingDef& def, std::string_view v) {
+    switch (def.type) {
+        case SettingType::Bool:
+            return canonical_bool(def, v);
+        case SettingType::Int: {
+            double value = parse_number(def, v);
+            if (value != std::floor(value)) {
+                throw UsageError("setting " + def.name + ": '" + std::string(v) +
+                                 "' is not an integer (" + def.range_text() + ")");
+            }
+            return std::to_string(static_cast<long long>(value));
+        }
+        case SettingType::Float:
+            return format_number(parse_number(def, v));
+        case SettingType::Enum:
+            for (const auto& c : def.choices) {
+                if (c == v) return c;
+            }
+            throw UsageError("setting " + def.name + ": '" + std::string(v) + "' is not one of " +
+                             def.range_text());
+    }
+    return std::string(v);
+}
+
+}  // namespace
+
+std::string SettingDef::type_name() const {
+    switch (type) {
+        case SettingType::Bool: return "bool";
+        case SettingType::Int: return "int";
+        case SettingType::Float: return "float";
+        case SettingType::Enum: return "enum";
+    }
+    return "?";
+}
+
+std::string SettingDef::range_text() const {
+    switch (type) {
+        case SettingType::Bool:
+        case SettingType::Enum: return join(choices, "|");
+        case SettingType::Int:
+        case SettingType::Float: return format_number(min) + ".." + format_number(max);
+    }
+    return "";
+}
+
+// The registry. Each issue that adds a knob adds it here, with help text.
+SettingsRegistry::SettingsRegistry() {
+    using I = Invalidates;
+    defs_ = {
+        int_knob("overdraw_layers", "scene", 8, 1, 64,
+                 "overdraw scene: number of view-filling quads, drawn back to front", I::Scene),
+        int_knob("zfight_pairs", "scene", 6, 1, 16,
+                 "zfight scene: number of coplanar / nearly coplanar quad pairs", I::Scene),
+        float_knob("sun_azimuth", "lighting", "35", -360, 360,
+                   "sun direction around the vertical axis, degrees", I::Nothing),
+        float_knob("sun_elevation", "lighting", "55", 1, 90,
+                   "sun height above the horizon, degrees", I::Nothing),
+        float_knob("sun_intensity", "lighting", "3", 0, 100, "sun illuminance (linear scale)",
+                   I::Nothing),
+        float_knob("ambient", "lighting", "0.35", 0, 10,
+                   "hemispherical sky/ground ambient strength", I::Nothing),
+        float_knob("exposure", "lighting", "1", 0.01, 64,
+                   "exposure multiplier applied before tonemapping", I::Nothing),
+    };
+}
+
+const SettingsRegistry& SettingsRegistry::instance() {
+    static const SettingsRegistry registry;
+    return registry;
+}
+
+const SettingDef* SettingsRegistry::find(std::string_view name) const {
+    for (const auto& d : defs_) {
+        if (d.name == name) return &d;
+    }
+    return nullptr;
+}
+
+const SettingDef& SettingsRegistry::at(std::string_view name) const {
+    if (const SettingDef* d = find(name)) return *d;
+    std::vector<std::string> names;
+    for (const auto& d : defs_) names.push_back(d.name);
+    throw UsageError("unknown setting '" + std::string(name) + "' (valid: " + join(names, ", ") +
+                     ")");
+}
+
+Settings::Settings() {
+    for (const auto& d : SettingsRegistry::instance().all()) values_[d.name] = d.default_value;
+}
+
+void Settings::set(std::string_view name, std::string_view value) {
+    const SettingDef& def = SettingsRegistry::instance().at(name);
+    values_[def.name] = canonical_value(def, value);
+}
+
+void Settings::apply(std::string_view assignment) {
+    const size_t eq = assignment.find('=');
+    if (eq == std::string_view::npos || eq == 0) {
+        throw UsageError("--set expects name=value, got '" + std::string(assignment) + "'");
+    }
+    set(assignment.substr(0, eq), assignment.substr(eq + 1));
+}
+
+const std::string& Settings::get(std::string_view name) const {
+    auto it = values_.find(name);
+    if (it == values_.end()) SettingsRegistry::instance().at(name);  // throws with the list
+    return it->second;
+}
+
+bool Settings::get_bool(std::string_view name) const { return get(name) == "on"; }
+
+int Settings::get_int(std::string_view name) const { return std::stoi(get(name)); }
+
+float Settings::get_float(std::string_view name) const { return std::stof(get(name)); }
+
+std::vector<std::string> Settings::diff(const Settings& other) const {
+    std::vector<std::string> names;
+    for (const auto& [name, value] : values_) {
+        if (other.get(name) != value) names.push_back(name);
+    }
+    return names;
+}
+
+}  // namespace ds

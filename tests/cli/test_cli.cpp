@@ -1,0 +1,70 @@
+// The command line as a user meets it: help, listings, usage errors and their exit codes.
+#include <gtest/gtest.h>
+
+#include "tests/support/run_process.h"
+
+using ds::test::count_lines;
+using ds::test::run_depthscope;
+
+TEST(Cli, HelpDescribesEveryCommand) {
+    auto r = run_depthscope("--help");
+    EXPECT_EQ(r.exit_code, 0);
+    for (const char* cmd : {"info", "scenes", "settings", "capture", "export-scene"}) {
+        EXPECT_NE(r.out.find(cmd), std::string::npos) << cmd;
+    }
+    EXPECT_NE(r.out.find("Exit codes"), std::string::npos);
+    auto c = run_depthscope("capture --help");
+    EXPECT_EQ(c.exit_code, 0);
+    for (const char* opt : {"--scene", "--size", "--out", "--set", "--validate", "--renderdoc"}) {
+        EXPECT_NE(c.out.find(opt), std::string::npos) << opt;
+    }
+}
+
+TEST(Cli, ScenesListsOneLineEach) {
+    auto r = run_depthscope("scenes");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(count_lines(r.out), 5u) << r.out;
+    for (const char* name : {"atrium", "overdraw", "zfight", "foliage", "edges"}) {
+        EXPECT_NE(r.out.find(name), std::string::npos) << name;
+    }
+    EXPECT_EQ(r.out.rfind("atrium", 0), 0u) << "the default scene comes first";
+}
+
+TEST(Cli, SettingsListsTheRegistry) {
+    auto r = run_depthscope("settings");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("overdraw_layers"), std::string::npos);
+    EXPECT_NE(r.out.find("1..64"), std::string::npos);
+}
+
+TEST(Cli, InfoPrintsTheLavapipeCapabilities) {
+    auto r = run_depthscope("info");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("llvmpipe"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("D32_SFLOAT"), std::string::npos) << r.out;
+}
+
+TEST(Cli, UsageErrorsExitTwoWithOneLine) {
+    for (const char* args :
+         {"--bogus", "capture --size 12", "capture --size 0x5", "capture --set nope=1",
+          "capture --set overdraw_layers=0", "capture --set exposure", "frobnicate"}) {
+        auto r = run_depthscope(args);
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+        EXPECT_EQ(count_lines(r.err), 1u) << args << "\n" << r.err;
+        EXPECT_EQ(r.err.rfind("depthscope: error: ", 0), 0u) << args << "\n" << r.err;
+    }
+}
+
+TEST(Cli, UnknownSettingNamesTheValidOnes) {
+    auto r = run_depthscope("capture --set overdraw_layer=3");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("overdraw_layers"), std::string::npos) << r.err;
+}
+
+TEST(Cli, RenderDocWithoutRenderDocIsAClearError) {
+    auto dir = ds::test::fresh_dir("renderdoc-missing");
+    auto r = run_depthscope("capture --renderdoc --size 32x32 --out " + (dir / "cap").string());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("RenderDoc is not loaded"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "cap"));
+}

@@ -1,0 +1,54 @@
+// capture: the files it writes, their contents, determinism and atomicity.
+#include <gtest/gtest.h>
+
+#include "tests/render/capture_helpers.h"
+
+namespace fs = std::filesystem;
+using namespace ds::test;
+
+TEST(Capture, AtriumWritesImageAndReport) {
+    Capture c = capture("atrium-report", "atrium", "640x360");
+    ASSERT_EQ(c.image.width, 640);
+    ASSERT_EQ(c.image.height, 360);
+    EXPECT_GT(distinct_colours(c.image), 1000u) << "a lit, textured courtyard has many colours";
+    ASSERT_FALSE(c.report.is_discarded());
+    EXPECT_EQ(c.report["scene"]["name"], "atrium");
+    EXPECT_EQ(c.report["size"]["width"], 640);
+    EXPECT_EQ(c.report["validation_messages"], 0);
+    EXPECT_GT(c.report["scene"]["draw_groups"].get<int>(), 5);
+    EXPECT_GT(c.report["scene"]["materials"]["mask"].get<int>(), 0);
+    EXPECT_GT(c.report["scene"]["materials"]["blend"].get<int>(), 0);
+    EXPECT_EQ(c.report["settings"]["overdraw_layers"], "8");
+    EXPECT_GT(c.report["frame"]["gpu_ms"].get<double>(), 0.0);
+    EXPECT_FALSE(c.report["device"]["name"].get<std::string>().empty());
+    // Only the finished files: no staging left behind.
+    size_t entries = 0;
+    for (const auto& e : fs::directory_iterator(c.dir)) entries += !e.path().empty();
+    EXPECT_EQ(entries, 2u);
+}
+
+TEST(Capture, TwoRunsAreByteIdentical) {
+    Capture a = capture("determinism-a", "atrium", "640x360");
+    Capture b = capture("determinism-b", "atrium", "640x360");
+    EXPECT_EQ(read_file(a.dir / "final.png"), read_file(b.dir / "final.png"));
+}
+
+TEST(Capture, SettingsReachTheImage) {
+    Capture dim = capture("exposure-dim", "atrium", "160x90", "--set exposure=0.25");
+    Capture bright = capture("exposure-bright", "atrium", "160x90", "--set exposure=4");
+    EXPECT_EQ(dim.report["settings"]["exposure"], "0.25");
+    EXPECT_GT(differing_pixels(dim.image, bright.image, 8), size_t(160 * 90 / 2));
+}
+
+TEST(Capture, DefaultFolderIsUnderCaptures) {
+    auto r = run_depthscope("capture --scene overdraw --size 32x32");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // "depthscope: wrote DIR"
+    const std::string prefix = "depthscope: wrote ";
+    ASSERT_EQ(r.out.rfind(prefix, 0), 0u) << r.out;
+    fs::path dir = r.out.substr(prefix.size(), r.out.find('\n') - prefix.size());
+    EXPECT_EQ(dir.parent_path().filename(), "captures");
+    EXPECT_NE(dir.filename().string().find("-overdraw"), std::string::npos) << dir;
+    EXPECT_TRUE(fs::exists(dir / "final.png"));
+    fs::remove_all(dir);
+}

@@ -1,0 +1,36 @@
+#pragma once
+// Test helpers that run the real depthscope executable and read what it wrote.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ds::test {
+
+struct ProcessResult {
+    int exit_code = -1;
+    std::string out;  // stdout
+    std::string err;  // stderr
+};
+
+// Runs `depthscope ARGS` (a shell word list) with a time limit in seconds.
+ProcessResult run_depthscope(const std::string& args, int timeout_s = 120);
+
+// A fresh empty folder under the build tree, removed by the caller when wanted.
+std::filesystem::path fresh_dir(const std::string& name);
+
+struct Png {
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> rgba;
+};
+Png read_png(const std::filesystem::path& path);  // fails the test on error (width 0)
+std::string read_file(const std::filesystem::path& path);
+
+size_t count_lines(const std::string& text);
+// Number of distinct RGB colours (a blank image has 1).
+size_t distinct_colours(const Png& png);
+// Pixels whose channels differ by more than `tolerance` in any channel.
+size_t differing_pixels(const Png& a, const Png& b, int tolerance);
+
+}  // namespace ds::test

@@ -1,0 +1,89 @@
+#include <gtest/gtest.h>
+
+#include "renderer/common/error.h"
+#include "renderer/settings/settings.h"
+
+using ds::Settings;
+using ds::SettingsRegistry;
+using ds::UsageError;
+
+namespace {
+
+// Runs `fn`, expects a UsageError and returns its message.
+template <typename Fn>
+std::string usage_error_of(Fn&& fn) {
+    try {
+        fn();
+    } catch (const UsageError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no UsageError thrown";
+    return {};
+}
+
+}  // namespace
+
+TEST(Settings, DefaultsComeFromTheRegistry) {
+    Settings s;
+    for (const auto& def : SettingsRegistry::instance().all()) {
+        EXPECT_EQ(s.get(def.name), def.default_value) << def.name;
+        EXPECT_FALSE(def.help.empty()) << def.name;
+    }
+    EXPECT_EQ(s.get_int("overdraw_layers"), 8);
+}
+
+TEST(Settings, UnknownNameListsValidNames) {
+    Settings s;
+    const std::string msg = usage_error_of([&] { s.set("overdraw_layer", "3"); });
+    EXPECT_NE(msg.find("unknown setting 'overdraw_layer'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("overdraw_layers"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("exposure"), std::string::npos) << msg;
+}
+
+TEST(Settings, IntRangeAndTypeAreChecked) {
+    Settings s;
+    s.set("overdraw_layers", "12");
+    EXPECT_EQ(s.get_int("overdraw_layers"), 12);
+    EXPECT_NE(usage_error_of([&] { s.set("overdraw_layers", "0"); }).find("out of range 1..64"),
+              std::string::npos);
+    EXPECT_NE(usage_error_of([&] { s.set("overdraw_layers", "2.5"); }).find("not an integer"),
+              std::string::npos);
+    EXPECT_NE(usage_error_of([&] { s.set("overdraw_layers", "many"); }).find("not a number"),
+              std::string::npos);
+    EXPECT_EQ(s.get_int("overdraw_layers"), 12);  // a rejected value leaves the old one
+}
+
+TEST(Settings, FloatsAreCanonicalised) {
+    Settings s;
+    s.set("exposure", "2.50");
+    EXPECT_EQ(s.get("exposure"), "2.5");
+    EXPECT_FLOAT_EQ(s.get_float("exposure"), 2.5f);
+    EXPECT_NE(usage_error_of([&] { s.set("exposure", "nan"); }).find("not a number"),
+              std::string::npos);
+    EXPECT_NE(usage_error_of([&] { s.set("exposure", "1e9"); }).find("out of range"),
+              std::string::npos);
+}
+
+TEST(Settings, ApplyParsesAssignments) {
+    Settings s;
+    s.apply("zfight_pairs=3");
+    EXPECT_EQ(s.get_int("zfight_pairs"), 3);
+    EXPECT_NE(usage_error_of([&] { s.apply("zfight_pairs"); }).find("name=value"),
+              std::string::npos);
+    EXPECT_NE(usage_error_of([&] { s.apply("=3"); }).find("name=value"), std::string::npos);
+}
+
+TEST(Settings, DiffNamesChangedKnobs) {
+    Settings a, b;
+    EXPECT_TRUE(a.diff(b).empty());
+    b.set("exposure", "2");
+    ASSERT_EQ(a.diff(b).size(), 1u);
+    EXPECT_EQ(a.diff(b)[0], "exposure");
+}
+
+TEST(Settings, RangeTextDescribesEachType) {
+    const auto& reg = SettingsRegistry::instance();
+    EXPECT_EQ(reg.at("overdraw_layers").range_text(), "1..64");
+    EXPECT_EQ(reg.at("overdraw_layers").type_name(), "int");
+    EXPECT_THROW(reg.at("nope"), UsageError);
+}
