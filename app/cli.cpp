@@ -43,7 +43,6 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
     std::string size_text;
 
     auto* info = app.add_subcommand("info", "list Vulkan devices and their capabilities");
-    info->add_flag("--validate", o.validate, "enable the validation layer");
     info->add_option("--device", o.device, "mark this device as selected (index or name)");
     app.add_subcommand("scenes", "list the built-in scenes, one line each");
     app.add_subcommand("settings", "list every setting: name, type, default, range, help");
@@ -52,8 +51,7 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
         "capture", "render one frame headless; write DIR/final.png and DIR/report.json");
     add_render_options(*capture, o, /*with_scene=*/true);
     capture->add_option("--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)");
-    capture->add_option("--out", o.out,
-                        "output folder (default captures/YYYYmmdd-HHMMSS-SCENE/)");
+    capture->add_option("--out", o.out, "output folder (default captures/YYYYmmdd-HHMMSS-SCENE/)");
     capture->add_flag("--renderdoc", o.renderdoc,
                       "bracket the frame with RenderDoc's StartFrameCapture/EndFrameCapture and "
                       "store the .rdc in the output folder (needs RenderDoc loaded)");

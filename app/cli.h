@@ -20,7 +20,7 @@ struct Options {
     std::string device;     // "N" or a name substring; "" = first suitable
     std::string scene = "atrium";
     Size size;
-    std::string out;  // capture folder / export file
+    std::string out;                // capture folder / export file
     std::vector<std::string> sets;  // "name=value"
     bool renderdoc = false;
 };

@@ -12,6 +12,7 @@
 #include "renderer/renderer.h"
 #include "renderer/scene/builtin/builtin.h"
 #include "renderer/scene/loader.h"
+#include "renderer/vk/capabilities.h"
 
 #ifndef DS_CAPTURE_ROOT
 #define DS_CAPTURE_ROOT "captures"
@@ -61,12 +62,11 @@ int run_capture(const Options& o) {
     const FrameResult frame = renderer.render(scene.camera, settings, o.size.width, o.size.height);
     if (renderdoc) renderdoc->end(device_pointer);
 
-    capture::write_png_rgba8(out.staging_path("final.png"), frame.width, frame.height,
-                             frame.rgba8);
+    capture::write_png_rgba8(out.staging_path("final.png"), frame.width, frame.height, frame.rgba8);
     const auto& device = renderer.device_report();
-    capture::ReportInput report{.device_name = device.name,
-                                .driver = device.driver_info,
-                                .api_version = device.api_version_text(),
+    capture::ReportInput report{.device_name = device.candidate.name,
+                                .driver = device.driver_name + " " + device.driver_info,
+                                .api_version = vk::version_string(device.candidate.api_version),
                                 .scene = &scene,
                                 .width = frame.width,
                                 .height = frame.height,

@@ -9,11 +9,14 @@
 namespace ds::app {
 
 int run_info(const Options& options) {
-    const auto reports = vk::probe_all_devices(options.validate);
-    const int selected = vk::select_device_index(reports, options.device);
-    for (size_t i = 0; i < reports.size(); ++i) {
-        std::printf("%s%s\n", int(i) == selected ? "* " : "  ",
-                    vk::format_report(reports[i]).c_str());
+    const auto reports = vk::probe_all_devices();
+    std::vector<vk::DeviceCandidate> candidates;
+    for (const auto& r : reports) candidates.push_back(r.candidate);
+    // The same rule the renderer uses; a request nothing matches is an error here too.
+    const uint32_t selected = vk::select_device(candidates, options.device);
+    for (const auto& r : reports) {
+        std::printf("%s%s\n", r.candidate.index == selected ? "[selected] " : "",
+                    vk::format_report(r).c_str());
     }
     return 0;
 }

@@ -12,11 +12,16 @@ namespace {
 int dispatch(const ds::app::Options& o) {
     using ds::app::Command;
     switch (o.command) {
-        case Command::Info: return ds::app::run_info(o);
-        case Command::Scenes: return ds::app::run_scenes();
-        case Command::Settings: return ds::app::run_settings();
-        case Command::ExportScene: return ds::app::run_export_scene(o);
-        case Command::Capture: return ds::app::run_capture(o);
+        case Command::Info:
+            return ds::app::run_info(o);
+        case Command::Scenes:
+            return ds::app::run_scenes();
+        case Command::Settings:
+            return ds::app::run_settings();
+        case Command::ExportScene:
+            return ds::app::run_export_scene(o);
+        case Command::Capture:
+            return ds::app::run_capture(o);
         case Command::Default:
             // No inspector yet: the default is a headless capture of the default scene.
             std::fprintf(stderr, "depthscope: rendering a headless capture of '%s'\n",

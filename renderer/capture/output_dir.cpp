@@ -39,7 +39,9 @@ OutputDir::~OutputDir() {
     fs::remove_all(staging_, ec);  // leave nothing half-written behind
 }
 
-fs::path OutputDir::staging_path(const std::string& name) const { return staging_ / name; }
+fs::path OutputDir::staging_path(const std::string& name) const {
+    return staging_ / name;
+}
 
 void OutputDir::commit() {
     std::error_code ec;

@@ -9,7 +9,7 @@
 namespace ds::capture {
 
 class OutputDir {
-public:
+  public:
     // Throws ds::Error ("DIR: cannot create: …") when the folder cannot be made.
     explicit OutputDir(std::filesystem::path final_dir);
     ~OutputDir();
@@ -24,7 +24,7 @@ public:
     // Moves every staged file to the final folder. Throws ds::Error on failure.
     void commit();
 
-private:
+  private:
     std::filesystem::path final_;
     std::filesystem::path staging_;
     bool final_existed_ = false;

@@ -9,7 +9,9 @@
 namespace ds::capture {
 namespace {
 
-RENDERDOC_API_1_4_1* api_of(void* api) { return static_cast<RENDERDOC_API_1_4_1*>(api); }
+RENDERDOC_API_1_4_1* api_of(void* api) {
+    return static_cast<RENDERDOC_API_1_4_1*>(api);
+}
 
 }  // namespace
 

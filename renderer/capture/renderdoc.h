@@ -8,7 +8,7 @@
 namespace ds::capture {
 
 class RenderDoc {
-public:
+  public:
     // Nullptr when RenderDoc is not loaded in the process.
     static std::unique_ptr<RenderDoc> attach();
 
@@ -18,7 +18,7 @@ public:
     // Ends the capture; returns the .rdc's path (throws ds::Error if none was written).
     std::filesystem::path end(void* device_pointer);
 
-private:
+  private:
     explicit RenderDoc(void* api) : api_(api) {}
     void* api_;  // RENDERDOC_API_1_4_1*, kept opaque so the header needs no RenderDoc include
 };

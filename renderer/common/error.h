@@ -8,19 +8,19 @@ namespace ds {
 
 // Runtime or input failure (bad file, Vulkan error, unwritable folder): exit code 1.
 class Error : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
 // Bad input data (a broken glTF, a missing file). Message form: "FILE: WHAT". Exit code 1.
 class InputError : public Error {
-public:
+  public:
     using Error::Error;
 };
 
 // Bad command line or unknown setting / bad setting value: exit code 2.
 class UsageError : public Error {
-public:
+  public:
     using Error::Error;
 };
 

@@ -45,7 +45,8 @@ struct Bounds {
 struct Mesh {
     std::string name;
     uint32_t gltf_mesh = 0;
-    uint32_t material = 0;  // index into Scene::materials (a default material is appended if needed)
+    uint32_t material =
+        0;  // index into Scene::materials (a default material is appended if needed)
     std::vector<Vertex> vertices;
     std::vector<uint32_t> indices;  // always present (generated 0..n-1 when the file has none)
     Bounds bounds;                  // object space
@@ -67,7 +68,7 @@ enum class Wrap : uint8_t { Repeat, ClampToEdge, MirroredRepeat };
 struct Sampler {
     Filter mag = Filter::Linear;
     Filter min = Filter::Linear;
-    bool mipmaps = true;       // minFilter uses mipmaps
+    bool mipmaps = true;  // minFilter uses mipmaps
     Filter mip = Filter::Linear;
     Wrap wrap_s = Wrap::Repeat;
     Wrap wrap_t = Wrap::Repeat;
@@ -150,6 +151,7 @@ struct Scene {
     std::optional<Camera> file_camera;  // the file's first camera, when it has one
     Camera camera;                      // file_camera, or framed from the bounds
     DirectionalLight sun;
+    std::vector<std::string> warnings;  // import notes, one line each (skipped primitives ...)
 
     uint64_t triangle_count() const;  // over all instances
 };

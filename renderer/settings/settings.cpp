@@ -9,22 +9,30 @@
 namespace ds {
 namespace {
 
-SettingDef bool_knob(std::string name, std::string group, bool def, std::string help,
-                     Invalidates inv) {
-    return SettingDef{std::move(name), std::move(group), SettingType::Bool, def ? "on" : "off", 0,
-                      0, {"on", "off"}, std::move(help), inv};
-}
-
 SettingDef int_knob(std::string name, std::string group, int def, int min, int max,
                     std::string help, Invalidates inv) {
-    return SettingDef{std::move(name), std::move(group), SettingType::Int, std::to_string(def),
-                      double(min), double(max), {}, std::move(help), inv};
+    return SettingDef{std::move(name),
+                      std::move(group),
+                      SettingType::Int,
+                      std::to_string(def),
+                      double(min),
+                      double(max),
+                      {},
+                      std::move(help),
+                      inv};
 }
 
-SettingDef float_knob(std::string name, std::string group, std::string def, double min,
-                      double max, std::string help, Invalidates inv) {
-    return SettingDef{std::move(name), std::move(group), SettingType::Float, std::move(def),
-                      min, max, {}, std::move(help), inv};
+SettingDef float_knob(std::string name, std::string group, std::string def, double min, double max,
+                      std::string help, Invalidates inv) {
+    return SettingDef{std::move(name),
+                      std::move(group),
+                      SettingType::Float,
+                      std::move(def),
+                      min,
+                      max,
+                      {},
+                      std::move(help),
+                      inv};
 }
 
 // Shortest text that reads back to the same float ("0.5", "45", "1e-05").
@@ -93,10 +101,14 @@ std::string canonical_value(const SettingDef& def, std::string_view v) {
 
 std::string SettingDef::type_name() const {
     switch (type) {
-        case SettingType::Bool: return "bool";
-        case SettingType::Int: return "int";
-        case SettingType::Float: return "float";
-        case SettingType::Enum: return "enum";
+        case SettingType::Bool:
+            return "bool";
+        case SettingType::Int:
+            return "int";
+        case SettingType::Float:
+            return "float";
+        case SettingType::Enum:
+            return "enum";
     }
     return "?";
 }
@@ -104,9 +116,11 @@ std::string SettingDef::type_name() const {
 std::string SettingDef::range_text() const {
     switch (type) {
         case SettingType::Bool:
-        case SettingType::Enum: return join(choices, "|");
+        case SettingType::Enum:
+            return join(choices, "|");
         case SettingType::Int:
-        case SettingType::Float: return format_number(min) + ".." + format_number(max);
+        case SettingType::Float:
+            return format_number(min) + ".." + format_number(max);
     }
     return "";
 }
@@ -175,11 +189,17 @@ const std::string& Settings::get(std::string_view name) const {
     return it->second;
 }
 
-bool Settings::get_bool(std::string_view name) const { return get(name) == "on"; }
+bool Settings::get_bool(std::string_view name) const {
+    return get(name) == "on";
+}
 
-int Settings::get_int(std::string_view name) const { return std::stoi(get(name)); }
+int Settings::get_int(std::string_view name) const {
+    return std::stoi(get(name));
+}
 
-float Settings::get_float(std::string_view name) const { return std::stof(get(name)); }
+float Settings::get_float(std::string_view name) const {
+    return std::stof(get(name));
+}
 
 std::vector<std::string> Settings::diff(const Settings& other) const {
     std::vector<std::string> names;

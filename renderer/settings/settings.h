@@ -30,20 +30,20 @@ struct SettingDef {
 };
 
 class SettingsRegistry {
-public:
+  public:
     static const SettingsRegistry& instance();
     const std::vector<SettingDef>& all() const { return defs_; }
     const SettingDef* find(std::string_view name) const;  // nullptr when unknown
-    const SettingDef& at(std::string_view name) const;     // throws UsageError when unknown
+    const SettingDef& at(std::string_view name) const;    // throws UsageError when unknown
 
-private:
+  private:
     SettingsRegistry();
     std::vector<SettingDef> defs_;
 };
 
 // A full set of values, one per registered knob, stored in canonical text form.
 class Settings {
-public:
+  public:
     Settings();  // every knob at its default
 
     // Throws UsageError for an unknown name (listing the valid names) or a bad value (listing
@@ -60,7 +60,7 @@ public:
     // Knobs whose value differs from `other`, by name.
     std::vector<std::string> diff(const Settings& other) const;
 
-private:
+  private:
     std::map<std::string, std::string, std::less<>> values_;
 };
 

@@ -30,20 +30,26 @@ TEST(BadInput, MissingFile) {
 TEST(BadInput, BrokenGltfFilesFailCleanlyAndWriteNothing) {
     const fs::path root = DS_ASSIMP_MODELS "/glTF2";
     const char* files[] = {
-        "IndexOutOfRange/IndexOutOfRange.gltf", "IndexOutOfRange/AllIndicesOutOfRange.gltf",
-        "MissingBin/BoxTextured.gltf",          "SchemaFailures/sceneWrongType.gltf",
-        "wrongTypes/badArray.gltf",             "wrongTypes/badNumber.gltf",
-        "wrongTypes/badString.gltf",            "wrongTypes/badObject.gltf",
-        "wrongTypes/badUint.gltf",              "RecursiveNodes/RecursiveNodes.gltf",
-        "TestNoRootNode/NoScene.gltf",          "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb",
+        "IndexOutOfRange/IndexOutOfRange.gltf",
+        "IndexOutOfRange/AllIndicesOutOfRange.gltf",
+        "MissingBin/BoxTextured.gltf",
+        "SchemaFailures/sceneWrongType.gltf",
+        "wrongTypes/badArray.gltf",
+        "wrongTypes/badNumber.gltf",
+        "wrongTypes/badString.gltf",
+        "wrongTypes/badObject.gltf",
+        "wrongTypes/badUint.gltf",
+        "RecursiveNodes/RecursiveNodes.gltf",
+        "TestNoRootNode/NoScene.gltf",
+        "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb",
         "draco/2CylinderEngine.gltf",
     };
     auto dir = ds::test::fresh_dir("bad-input");
     for (const char* f : files) {
         const fs::path out = dir / "cap";
-        expect_input_error("capture --size 32x32 --scene " + (root / f).string() + " --out " +
-                               out.string(),
-                           (root / f).string());
+        expect_input_error(
+            "capture --size 32x32 --scene " + (root / f).string() + " --out " + out.string(),
+            (root / f).string());
         EXPECT_FALSE(fs::exists(out)) << f;
     }
 }
@@ -68,8 +74,8 @@ TEST(BadInput, UnwritableOutputFolder) {
 TEST(BadInput, OutputPathThatIsAFile) {
     auto dir = ds::test::fresh_dir("out-is-file");
     { std::ofstream(dir / "taken") << "x"; }
-    auto r = run_depthscope("capture --scene overdraw --size 32x32 --out " +
-                            (dir / "taken").string());
+    auto r =
+        run_depthscope("capture --scene overdraw --size 32x32 --out " + (dir / "taken").string());
     EXPECT_EQ(r.exit_code, 1) << r.err;
     EXPECT_NE(r.err.find("not a folder"), std::string::npos) << r.err;
 }

@@ -13,12 +13,15 @@ TEST_P(SceneRenders, NonBlankAndValidationClean) {
     for (char& ch : tag) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
     Capture c = capture("scene-" + tag, GetParam(), "320x180");
     ASSERT_EQ(c.image.width, 320);
-    EXPECT_GT(distinct_colours(c.image), 8u) << GetParam();
+    // A blank frame is one clear colour. overdraw's nearest quad fills the whole view, so it
+    // shows only a few shades; every other scene shows many.
+    const size_t min_colours = GetParam() == "overdraw" ? 2 : 8;
+    EXPECT_GT(distinct_colours(c.image), min_colours) << GetParam();
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    BuiltIn, SceneRenders, ::testing::Values("atrium", "overdraw", "zfight", "foliage", "edges"),
-    [](const auto& info) { return info.param; });
+INSTANTIATE_TEST_SUITE_P(BuiltIn, SceneRenders,
+                         ::testing::Values("atrium", "overdraw", "zfight", "foliage", "edges"),
+                         [](const auto& info) { return info.param; });
 
 INSTANTIATE_TEST_SUITE_P(
     AssimpModels, SceneRenders,

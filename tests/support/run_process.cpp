@@ -31,8 +31,8 @@ fs::path fresh_dir(const std::string& name) {
 
 ProcessResult run_depthscope(const std::string& args, int timeout_s) {
     static int counter = 0;
-    const fs::path io = fs::path(DS_TEST_WORK_DIR) / ("io-" + std::to_string(::getpid()) + "-" +
-                                                      std::to_string(counter++));
+    const fs::path io = fs::path(DS_TEST_WORK_DIR) /
+                        ("io-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
     const std::string cmd = "timeout " + std::to_string(timeout_s) + " " DS_EXECUTABLE " " + args +
                             " >" + io.string() + ".out 2>" + io.string() + ".err";
     const int status = std::system(cmd.c_str());

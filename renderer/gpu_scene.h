@@ -1,0 +1,113 @@
+#pragma once
+// A Scene on the GPU: one vertex and one index buffer for every mesh, the instance buffer
+// (model + normal matrices), textures with mips, samplers, and one descriptor set per
+// material (lavapipe has no descriptor indexing). Immutable once built; set_scene() replaces
+// the whole object.
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/scene/scene.h"
+#include "renderer/vk/buffer.h"
+#include "renderer/vk/descriptors.h"
+#include "renderer/vk/image.h"
+#include "renderer/vk/upload.h"
+
+namespace ds {
+
+namespace vk {
+class Context;
+}
+
+// std140 twin of MaterialUniforms in shaders/common/bindings.glsl.
+struct GpuMaterial {
+    glm::vec4 base_color_factor{1.0f};
+    glm::vec4 emissive_factor{0.0f};
+    float metallic_factor = 1.0f;
+    float roughness_factor = 1.0f;
+    float normal_scale = 1.0f;
+    float occlusion_strength = 1.0f;
+    float alpha_cutoff = 0.5f;
+    uint32_t flags = 0;
+    float pad[2] = {};
+};
+static_assert(sizeof(GpuMaterial) == 64);
+inline constexpr uint32_t kMaterialHasNormalMap = 1u;
+
+// std430 twin of InstanceData.
+struct GpuInstance {
+    glm::mat4 model{1.0f};
+    glm::mat4 normal_matrix{1.0f};
+};
+static_assert(sizeof(GpuInstance) == 128);
+
+struct GpuMesh {
+    uint32_t first_index = 0;
+    uint32_t index_count = 0;
+    int32_t vertex_offset = 0;
+    uint32_t material = 0;
+};
+
+// Material set bindings (set 1): uniforms, then the five textures in this order.
+enum MaterialBinding : uint32_t {
+    kMaterialUniforms = 0,
+    kBaseColorTexture = 1,
+    kMetallicRoughnessTexture = 2,
+    kNormalTexture = 3,
+    kOcclusionTexture = 4,
+    kEmissiveTexture = 5,
+};
+// The layout every pass that draws materials binds as set 1.
+vk::DescriptorSetLayout create_material_set_layout(vk::Context& context);
+
+class GpuScene {
+  public:
+    GpuScene(vk::Context& context, const scene::Scene& scene,
+             VkDescriptorSetLayout material_layout);  // uploads and waits
+
+    VkBuffer vertex_buffer() const { return vertices_.handle(); }
+    VkBuffer index_buffer() const { return indices_.handle(); }
+    VkBuffer instance_buffer() const { return instances_.handle(); }
+    VkDescriptorSet material_set(uint32_t material) const { return material_sets_.at(material); }
+
+    const std::vector<GpuMesh>& meshes() const { return meshes_; }
+    const std::vector<scene::DrawGroup>& draw_groups() const { return draw_groups_; }
+    // World-space centre of each instance's bounds (sorting blended draws).
+    const std::vector<glm::vec3>& instance_centers() const { return instance_centers_; }
+    // How each image's mip chain was filled (the report says which path ran).
+    const std::vector<vk::MipFill>& mip_fills() const { return mip_fills_; }
+
+  private:
+    void upload_geometry(const scene::Scene& scene, vk::UploadBatch& batch);
+    void upload_instances(const scene::Scene& scene, vk::UploadBatch& batch);
+    void upload_textures(const scene::Scene& scene, vk::UploadBatch& batch);
+    void create_samplers(const scene::Scene& scene);
+    static bool texture_valid(const scene::Scene& scene, const scene::TextureRef& ref);
+    // View and sampler for a texture reference; the fallback image when it is missing.
+    std::pair<VkImageView, VkSampler> texture_binding(const scene::Scene& scene,
+                                                      const scene::TextureRef& ref,
+                                                      uint32_t fallback_image) const;
+    void create_material_sets(const scene::Scene& scene, VkDescriptorSetLayout layout,
+                              vk::UploadBatch& batch);
+
+    vk::Context& context_;
+    vk::Buffer vertices_;
+    vk::Buffer indices_;
+    vk::Buffer instances_;
+    vk::Buffer material_uniforms_;
+    std::vector<vk::Image> images_;  // scene images, then the two defaults
+    std::vector<vk::Sampler> samplers_;
+    vk::DescriptorPool pool_;
+    std::vector<VkDescriptorSet> material_sets_;
+    std::vector<GpuMesh> meshes_;
+    std::vector<scene::DrawGroup> draw_groups_;
+    std::vector<glm::vec3> instance_centers_;
+    std::vector<vk::MipFill> mip_fills_;
+    uint32_t white_image_ = 0;  // indices into images_
+    uint32_t flat_normal_image_ = 0;
+};
+
+}  // namespace ds

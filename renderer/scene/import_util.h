@@ -1,0 +1,61 @@
+#pragma once
+// Small helpers shared by the glTF import files. Internal to renderer/scene.
+#include <cfloat>
+#include <cmath>
+#include <string>
+#include <string_view>
+
+#include "renderer/common/error.h"
+
+namespace ds::scene::detail {
+
+// Import helpers throw InputError with a WHAT only; import_model / load_gltf prefix the source
+// ("FILE: WHAT"), so one message format holds for files and built-in scenes alike.
+[[noreturn]] inline void fail(std::string what) {
+    throw InputError(std::move(what));
+}
+
+// A double from the file as a float; NaN, Inf and values beyond float range are rejected (the
+// conversion itself would be undefined behaviour).
+inline float to_float(double value, const std::string& what) {
+    if (!std::isfinite(value) || std::fabs(value) > double{FLT_MAX}) fail(what + " is not finite");
+    return static_cast<float>(value);
+}
+
+// The first non-empty line of `text`, trimmed, with control characters replaced: error
+// messages end up on one line of `depthscope: error: ...`.
+inline std::string one_line(std::string_view text) {
+    std::string line;
+    for (char c : text) {
+        if (c == '\n' || c == '\r') {
+            if (line.find_first_not_of(' ') != std::string::npos) break;
+            line.clear();
+            continue;
+        }
+        const auto u = static_cast<unsigned char>(c);
+        line.push_back(u < 0x20 || u == 0x7f ? ' ' : c);
+    }
+    const size_t first = line.find_first_not_of(' ');
+    if (first == std::string::npos) return {};
+    const size_t last = line.find_last_not_of(' ');
+    return line.substr(first, last - first + 1);
+}
+
+// Extensions that may appear in `extensionsRequired` although we ignore them: they only add
+// shading detail (the base PBR material stays a faithful approximation).
+inline bool is_ignorable_extension(std::string_view name) {
+    return name.starts_with("KHR_materials_") || name == "KHR_texture_transform" ||
+           name == "KHR_lights_punctual";
+}
+
+// glTF 2.x only; an absent version means a glTF 1.0 file (2.0 made `asset.version` required).
+inline bool is_supported_version(std::string_view version) {
+    return version.starts_with("2.");
+}
+
+inline std::string version_message(std::string_view version) {
+    const std::string shown = version.empty() || version == "1" ? "1.0" : std::string(version);
+    return "glTF " + shown + " is not supported (need 2.0)";
+}
+
+}  // namespace ds::scene::detail

@@ -1,0 +1,157 @@
+#include "renderer/scene/importer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "renderer/scene/gltf_accessor.h"
+#include "renderer/scene/gltf_material.h"
+#include "renderer/scene/gltf_mesh.h"
+#include "renderer/scene/gltf_nodes.h"
+#include "renderer/scene/import_util.h"
+#include "renderer/scene/mesh_ops.h"
+
+namespace ds::scene {
+namespace {
+
+using namespace detail;
+
+void check_header(const tinygltf::Model& model) {
+    if (!is_supported_version(model.asset.version)) fail(version_message(model.asset.version));
+    for (const std::string& extension : model.extensionsRequired)
+        if (!is_ignorable_extension(extension))
+            fail("required extension " + one_line(extension) + " is not supported");
+}
+
+// Instances sharing (mesh, alpha mode, double-sided) form one instanced draw (seed 000). Groups
+// keep first-use order; each group's instances are made contiguous, in traversal order.
+void build_draw_groups(Scene& scene, const std::vector<MeshPlacement>& placements,
+                       const MeshImport& meshes) {
+    struct Key {
+        uint32_t mesh;
+        AlphaMode alpha_mode;
+        bool double_sided;
+        auto operator<=>(const Key&) const = default;
+    };
+    std::map<Key, size_t> group_of;
+    std::vector<std::vector<glm::mat4>> worlds;  // per group
+    for (const MeshPlacement& placement : placements) {
+        for (uint32_t mesh : meshes.by_gltf_mesh[static_cast<size_t>(placement.gltf_mesh)]) {
+            const Material& material = scene.materials[scene.meshes[mesh].material];
+            const Key key{mesh, material.alpha_mode, material.double_sided};
+            const auto [it, added] = group_of.try_emplace(key, scene.draw_groups.size());
+            if (added) {
+                scene.draw_groups.push_back({mesh, key.alpha_mode, key.double_sided, 0, 0});
+                worlds.emplace_back();
+            }
+            worlds[it->second].push_back(placement.world);
+        }
+    }
+    for (size_t g = 0; g < scene.draw_groups.size(); ++g) {
+        DrawGroup& group = scene.draw_groups[g];
+        group.first_instance = static_cast<uint32_t>(scene.instances.size());
+        group.instance_count = static_cast<uint32_t>(worlds[g].size());
+        for (const glm::mat4& world : worlds[g]) scene.instances.push_back({group.mesh, world});
+    }
+}
+
+// A file camera without zfar asks for an infinite projection; the renderer wants a finite
+// range, so reach past the far side of the scene instead.
+void set_camera(Scene& scene, std::optional<Camera> file_camera) {
+    if (!file_camera) {
+        scene.camera = frame_bounds(scene.bounds);
+        return;
+    }
+    if (file_camera->zfar == 0.0f) {
+        const float reach = glm::length(scene.bounds.center() - file_camera->position) +
+                            glm::length(scene.bounds.extent());
+        file_camera->zfar = std::max(2.0f * reach, 1000.0f * file_camera->znear);
+    }
+    scene.file_camera = file_camera;
+    scene.camera = *file_camera;
+}
+
+void add_warnings(const tinygltf::Model& model, Scene& scene, const MeshImport& meshes) {
+    // No extension is implemented: the file still draws (required ones were refused earlier),
+    // but the user should know what is missing from the picture.
+    for (const std::string& extension : model.extensionsUsed)
+        scene.warnings.push_back("extension " + one_line(extension) + " is ignored");
+    for (const auto& [mode, count] : meshes.skipped_modes)
+        scene.warnings.push_back("skipped " + std::to_string(count) + " " + mode +
+                                 " primitive(s): only TRIANGLES are drawn");
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        for (const TextureRef* ref :
+             {&m.base_color, &m.metallic_roughness, &m.normal, &m.occlusion, &m.emissive}) {
+            if (ref->present() && ref->uv_set != 0) {
+                scene.warnings.push_back("material " + std::to_string(i) + " uses TEXCOORD_" +
+                                         std::to_string(ref->uv_set) +
+                                         ": only TEXCOORD_0 is imported");
+                break;
+            }
+        }
+    }
+}
+
+bool bounds_finite(const Bounds& b) {
+    const glm::vec3 e = b.extent();
+    return b.valid() && std::isfinite(b.min.x + b.min.y + b.min.z + b.max.x + b.max.y + b.max.z) &&
+           std::isfinite(glm::length(e));
+}
+
+std::string nothing_to_draw(int scene_index, const MeshImport& meshes) {
+    uint32_t skipped = 0;
+    for (const auto& entry : meshes.skipped_modes) skipped += entry.second;
+    std::string what =
+        "nothing to draw: scene " + std::to_string(scene_index) + " places no triangle mesh";
+    if (skipped > 0) what += " (skipped " + std::to_string(skipped) + " non-triangle primitives)";
+    return what;
+}
+
+Scene import_checked(const tinygltf::Model& model, std::string name, std::string source) {
+    check_header(model);
+    const int scene_index = pick_scene(model);
+    validate_buffer_views(model);
+    validate_accessors(model);
+
+    Scene scene;
+    scene.name = std::move(name);
+    scene.source = std::move(source);
+    scene.gltf_mesh_count = static_cast<uint32_t>(model.meshes.size());
+    scene.images = import_images(model);
+    scene.samplers = import_samplers(model);
+    scene.textures = import_textures(model, static_cast<uint32_t>(scene.samplers.size() - 1));
+    scene.materials = import_materials(model);
+    const auto default_material = static_cast<uint32_t>(scene.materials.size());
+    const MeshImport meshes = import_meshes(model, default_material, scene.meshes);
+    if (meshes.uses_default_material) {
+        Material fallback;
+        fallback.name = "default";
+        scene.materials.push_back(fallback);
+    }
+
+    const SceneWalk walk = walk_scene(model, scene_index);
+    build_draw_groups(scene, walk.placements, meshes);
+    if (scene.instances.empty()) fail(nothing_to_draw(scene_index, meshes));
+    for (const Instance& instance : scene.instances)
+        scene.bounds.extend(transform_bounds(scene.meshes[instance.mesh].bounds, instance.world));
+    if (!bounds_finite(scene.bounds)) fail("scene bounds are not finite");
+
+    mark_srgb_images(scene.materials, scene.textures, scene.images);
+    set_camera(scene, walk.camera);
+    add_warnings(model, scene, meshes);
+    return scene;
+}
+
+}  // namespace
+
+Scene import_model(const tinygltf::Model& model, std::string name, std::string source) {
+    const std::string prefix = source;
+    try {
+        return import_checked(model, std::move(name), std::move(source));
+    } catch (const InputError& e) {
+        throw InputError(prefix + ": " + one_line(e.what()));
+    }
+}
+
+}  // namespace ds::scene

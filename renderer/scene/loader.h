@@ -1,0 +1,15 @@
+#pragma once
+// The one entry point for "a scene by name": a built-in scene or a .gltf / .glb path.
+#include <string_view>
+
+#include "renderer/scene/scene.h"
+#include "renderer/settings/settings.h"
+
+namespace ds::scene {
+
+// A built-in name (builtin::list()) is built with `settings` and imported as
+// "builtin:NAME"; anything else is a file path (load_gltf). A path that does not exist throws
+// InputError "PATH: no such file".
+Scene load_scene(std::string_view name_or_path, const Settings& settings);
+
+}  // namespace ds::scene

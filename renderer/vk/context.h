@@ -1,0 +1,74 @@
+#pragma once
+// Instance, optional validation, device selection, logical device, queue and memory allocator:
+// everything every other vk object needs. Not movable: the debug messenger keeps a pointer to
+// the validation counter inside it.
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/vk/capabilities.h"
+#include "renderer/vk/debug.h"
+#include "renderer/vk/memory.h"
+
+namespace ds::vk {
+
+struct ContextOptions {
+    bool validate = false;        // VK_LAYER_KHRONOS_validation + messenger
+    bool sync_validation = true;  // with validate: also report synchronization hazards
+    std::string device;           // "" = first suitable, "N" = index, else a name substring
+};
+
+class Context {
+  public:
+    explicit Context(const ContextOptions& options);  // throws ds::Error
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    VkInstance instance() const { return instance_; }
+    VkPhysicalDevice physical_device() const { return physical_device_; }
+    VkDevice device() const { return device_; }
+    VkQueue queue() const { return queue_; }
+    uint32_t queue_family() const { return report_.queue_family; }
+    const DeviceReport& report() const { return report_; }
+    const VkPhysicalDeviceLimits& limits() const { return limits_; }
+    const DebugUtils& debug() const { return debug_; }
+    Allocator& allocator() { return *allocator_; }
+    VkFormatProperties format_properties(VkFormat format) const;
+
+    // Warning- and error-severity messages from the validation layer since creation.
+    uint64_t validation_message_count() const { return validation_messages_.load(); }
+
+    template <typename Handle>
+    void set_name(VkObjectType type, Handle handle, const char* name) const {
+        debug_.set_name(device_, type, handle, name);
+    }
+
+    // Records `record` into a one-time command buffer, submits it and waits on its fence
+    // (uploads, layout set-up). Not for per-frame work.
+    void submit_once(const std::function<void(VkCommandBuffer)>& record);
+    void wait_idle() const;
+
+  private:
+    void create_instance(const ContextOptions& options);
+    void pick_physical_device(const std::string& request);
+    void create_device();
+    void destroy();  // explicit teardown order; safe on a partly built context
+
+    std::atomic<uint64_t> validation_messages_{0};
+    VkInstance instance_ = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    VkCommandPool once_pool_ = VK_NULL_HANDLE;
+    DeviceReport report_;
+    VkPhysicalDeviceLimits limits_{};
+    DebugUtils debug_;
+    std::unique_ptr<Allocator> allocator_;
+};
+
+}  // namespace ds::vk

@@ -1,0 +1,124 @@
+#include "renderer/vk/image.h"
+
+#include <algorithm>
+#include <bit>
+#include <utility>
+
+#include "renderer/vk/check.h"
+#include "renderer/vk/context.h"
+
+namespace ds::vk {
+
+uint32_t mip_level_count(uint32_t width, uint32_t height) {
+    return uint32_t(std::bit_width(std::max({width, height, 1u})));
+}
+
+VkImageAspectFlags aspect_flags(VkFormat format) {
+    switch (format) {
+        case VK_FORMAT_D16_UNORM:
+        case VK_FORMAT_X8_D24_UNORM_PACK32:
+        case VK_FORMAT_D32_SFLOAT:
+            return VK_IMAGE_ASPECT_DEPTH_BIT;
+        case VK_FORMAT_S8_UINT:
+            return VK_IMAGE_ASPECT_STENCIL_BIT;
+        case VK_FORMAT_D16_UNORM_S8_UINT:
+        case VK_FORMAT_D24_UNORM_S8_UINT:
+        case VK_FORMAT_D32_SFLOAT_S8_UINT:
+            return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+        default:
+            return VK_IMAGE_ASPECT_COLOR_BIT;
+    }
+}
+
+Image::Image(Context& context, const ImageDesc& desc) : context_(&context), desc_(desc) {
+    auto info = make<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = desc.format;
+    info.extent = {desc.width, desc.height, 1};
+    info.mipLevels = desc.mip_levels;
+    info.arrayLayers = 1;
+    info.samples = desc.samples;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = desc.usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkDevice device = context.device();
+    check(vkCreateImage(device, &info, nullptr, &image_), "vkCreateImage");
+    try {
+        auto dedicated =
+            make<VkMemoryDedicatedRequirements>(VK_STRUCTURE_TYPE_MEMORY_DEDICATED_REQUIREMENTS);
+        auto req = make<VkMemoryRequirements2>(VK_STRUCTURE_TYPE_MEMORY_REQUIREMENTS_2, &dedicated);
+        auto req_info = make<VkImageMemoryRequirementsInfo2>(
+            VK_STRUCTURE_TYPE_IMAGE_MEMORY_REQUIREMENTS_INFO_2);
+        req_info.image = image_;
+        vkGetImageMemoryRequirements2(device, &req_info, &req);
+        AllocationRequest request;
+        request.requirements = req.memoryRequirements;
+        request.usage = MemoryUsage::GpuOnly;
+        request.kind = ResourceKind::Optimal;
+        request.dedicated =
+            dedicated.prefersDedicatedAllocation || dedicated.requiresDedicatedAllocation;
+        request.image = image_;
+        allocation_ = context.allocator().allocate(request);
+        check(vkBindImageMemory(device, image_, allocation_.memory, allocation_.offset),
+              "vkBindImageMemory");
+
+        auto view = make<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+        view.image = image_;
+        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        view.format = desc.format;
+        // A sampled view of a depth/stencil image may name only one aspect.
+        VkImageAspectFlags aspect = aspect_flags(desc.format);
+        if (aspect & VK_IMAGE_ASPECT_DEPTH_BIT) aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
+        view.subresourceRange = {aspect, 0, desc.mip_levels, 0, 1};
+        check(vkCreateImageView(device, &view, nullptr, &view_), "vkCreateImageView");
+    } catch (...) {
+        reset();
+        throw;
+    }
+    context.set_name(VK_OBJECT_TYPE_IMAGE, image_, desc.name);
+    context.set_name(VK_OBJECT_TYPE_IMAGE_VIEW, view_, desc.name);
+}
+
+Image& Image::operator=(Image&& other) noexcept {
+    if (this == &other) return *this;
+    reset();
+    context_ = std::exchange(other.context_, nullptr);
+    image_ = std::exchange(other.image_, VK_NULL_HANDLE);
+    view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+    desc_ = std::exchange(other.desc_, ImageDesc{});
+    allocation_ = std::exchange(other.allocation_, Allocation{});
+    return *this;
+}
+
+void Image::reset() {
+    if (!context_) return;
+    VkDevice device = context_->device();
+    if (view_) vkDestroyImageView(device, view_, nullptr);
+    if (image_) vkDestroyImage(device, image_, nullptr);
+    context_->allocator().free(allocation_);
+    view_ = VK_NULL_HANDLE;
+    image_ = VK_NULL_HANDLE;
+    context_ = nullptr;
+}
+
+Sampler::Sampler(Context& context, const VkSamplerCreateInfo& info, const char* name)
+    : device_(context.device()) {
+    check(vkCreateSampler(device_, &info, nullptr, &sampler_), "vkCreateSampler");
+    context.set_name(VK_OBJECT_TYPE_SAMPLER, sampler_, name);
+}
+
+Sampler& Sampler::operator=(Sampler&& other) noexcept {
+    if (this == &other) return *this;
+    reset();
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    sampler_ = std::exchange(other.sampler_, VK_NULL_HANDLE);
+    return *this;
+}
+
+void Sampler::reset() {
+    if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
+    sampler_ = VK_NULL_HANDLE;
+}
+
+}  // namespace ds::vk

@@ -1,0 +1,90 @@
+#pragma once
+// Pipeline layouts and a graphics pipeline builder for dynamic rendering
+// (VkPipelineRenderingCreateInfo, no VkRenderPass). Cull mode, depth test, depth write and
+// depth compare op are dynamic (extended dynamic state, core in 1.3): one pipeline serves
+// one-sided and double-sided groups, prepass (GREATER, writes) and EQUAL passes.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace ds::vk {
+
+class Context;
+
+class PipelineLayout {
+  public:
+    PipelineLayout() = default;
+    PipelineLayout(Context& context, std::span<const VkDescriptorSetLayout> sets,
+                   std::span<const VkPushConstantRange> push_constants = {},
+                   const char* name = nullptr);
+    ~PipelineLayout() { reset(); }
+    PipelineLayout(PipelineLayout&& other) noexcept { *this = std::move(other); }
+    PipelineLayout& operator=(PipelineLayout&& other) noexcept;
+    PipelineLayout(const PipelineLayout&) = delete;
+    PipelineLayout& operator=(const PipelineLayout&) = delete;
+
+    void reset();
+    VkPipelineLayout handle() const { return layout_; }
+
+  private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+};
+
+class Pipeline {
+  public:
+    Pipeline() = default;
+    Pipeline(VkDevice device, VkPipeline pipeline) : device_(device), pipeline_(pipeline) {}
+    ~Pipeline() { reset(); }
+    Pipeline(Pipeline&& other) noexcept { *this = std::move(other); }
+    Pipeline& operator=(Pipeline&& other) noexcept;
+    Pipeline(const Pipeline&) = delete;
+    Pipeline& operator=(const Pipeline&) = delete;
+
+    void reset();
+    explicit operator bool() const { return pipeline_ != VK_NULL_HANDLE; }
+    VkPipeline handle() const { return pipeline_; }
+
+  private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+enum class Blend : uint8_t { None, Alpha };
+
+class GraphicsPipelineBuilder {
+  public:
+    GraphicsPipelineBuilder& shader(VkShaderStageFlagBits stage, std::span<const uint32_t> spirv);
+    GraphicsPipelineBuilder& vertex_binding(uint32_t binding, uint32_t stride);
+    GraphicsPipelineBuilder& vertex_attribute(uint32_t location, uint32_t binding, VkFormat format,
+                                              uint32_t offset);
+    GraphicsPipelineBuilder& color_attachment(VkFormat format, Blend blend = Blend::None);
+    GraphicsPipelineBuilder& depth_attachment(VkFormat format);
+    GraphicsPipelineBuilder& samples(VkSampleCountFlagBits samples);
+    GraphicsPipelineBuilder& front_face(VkFrontFace face);  // default counter-clockwise (glTF)
+    GraphicsPipelineBuilder& layout(VkPipelineLayout layout);
+
+    Pipeline build(Context& context, const char* name = nullptr) const;  // throws ds::Error
+
+  private:
+    struct Stage {
+        VkShaderStageFlagBits stage;
+        std::vector<uint32_t> spirv;
+    };
+    // Creates one module per stage (appended to `modules`, which the caller destroys).
+    std::vector<VkPipelineShaderStageCreateInfo> create_stages(
+        VkDevice device, std::vector<VkShaderModule>& modules) const;
+    std::vector<Stage> stages_;
+    std::vector<VkVertexInputBindingDescription> bindings_;
+    std::vector<VkVertexInputAttributeDescription> attributes_;
+    std::vector<VkFormat> color_formats_;
+    std::vector<Blend> blends_;
+    VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
+    VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
+    VkFrontFace front_face_ = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+};
+
+}  // namespace ds::vk

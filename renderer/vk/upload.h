@@ -1,0 +1,54 @@
+#pragma once
+// Staging uploads: copies are collected into one command buffer and submitted once, fenced
+// (scene loading). Not for per-frame data: that lives in host-visible buffers.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/vk/buffer.h"
+#include "renderer/vk/image.h"
+
+namespace ds::vk {
+
+class Context;
+
+// How a texture's mip chain was filled.
+//  Blit: vkCmdBlitImage chain, when the format supports linear-filtered blits (optimal tiling).
+//  Cpu:  2x2 box filter on the CPU otherwise. For _SRGB formats it averages the encoded
+//        bytes, a small darkening bias accepted for a fallback path.
+//  None: the image has one level.
+enum class MipFill : uint8_t { None, Blit, Cpu };
+
+bool supports_blit_mips(const Context& context, VkFormat format);
+
+// RGBA8 2x2 box filter of `src` (w x h) into the next level (max(w/2,1) x max(h/2,1)).
+std::vector<uint8_t> downsample_rgba8(const uint8_t* src, uint32_t width, uint32_t height);
+
+class UploadBatch {
+  public:
+    explicit UploadBatch(Context& context) : context_(context) {}
+
+    // `dst` needs TRANSFER_DST usage.
+    void buffer(const Buffer& dst, const void* data, size_t size, VkDeviceSize dst_offset = 0);
+    // `rgba8`: tightly packed level 0 of a 4-byte-per-texel format. `dst` needs TRANSFER_DST
+    // and SAMPLED (+ TRANSFER_SRC for blits). Ends in SHADER_READ_ONLY_OPTIMAL.
+    MipFill texture(const Image& dst, const uint8_t* rgba8);
+    // Records, submits and waits; frees the staging memory. The batch can be reused.
+    void submit();
+
+  private:
+    Buffer& stage(const void* data, size_t size);
+
+    Context& context_;
+    std::vector<Buffer> staging_;
+    std::vector<std::function<void(VkCommandBuffer)>> commands_;
+};
+
+// Records a blit chain from level 0 (in TRANSFER_DST) to every level; ends every level in
+// SHADER_READ_ONLY_OPTIMAL.
+void record_blit_mips(VkCommandBuffer cmd, const Image& image);
+
+}  // namespace ds::vk

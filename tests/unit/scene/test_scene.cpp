@@ -1,0 +1,83 @@
+// The scene model's own logic: names, camera view, triangle counts, framing.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "renderer/scene/scene.h"
+
+namespace ds::scene {
+namespace {
+
+TEST(SceneModel, AlphaModeNames) {
+    EXPECT_STREQ(to_string(AlphaMode::Opaque), "opaque");
+    EXPECT_STREQ(to_string(AlphaMode::Mask), "mask");
+    EXPECT_STREQ(to_string(AlphaMode::Blend), "blend");
+}
+
+TEST(SceneModel, ViewMapsCameraToOriginLookingDownMinusZ) {
+    Camera c;
+    c.position = {1, 2, 3};
+    c.forward = {1, 0, 0};
+    c.up = {0, 1, 0};
+    const glm::mat4 v = c.view();
+    const glm::vec4 eye = v * glm::vec4(c.position, 1.0f);
+    EXPECT_NEAR(glm::length(glm::vec3(eye)), 0.0f, 1e-5f);
+    const glm::vec4 ahead = v * glm::vec4(c.position + c.forward, 1.0f);
+    EXPECT_NEAR(ahead.z, -1.0f, 1e-5f);
+    EXPECT_NEAR(ahead.x, 0.0f, 1e-5f);
+}
+
+TEST(SceneModel, TriangleCountIsOverInstances) {
+    Scene s;
+    s.meshes.resize(2);
+    s.meshes[0].indices.assign(6, 0);  // 2 triangles
+    s.meshes[1].indices.assign(9, 0);  // 3 triangles
+    s.instances = {{0, glm::mat4(1)}, {0, glm::mat4(1)}, {1, glm::mat4(1)}};
+    EXPECT_EQ(s.triangle_count(), 2u + 2u + 3u);
+}
+
+TEST(SceneModel, FrameBoundsKeepsTheWholeBoxInView) {
+    Bounds b;
+    b.extend(glm::vec3(-10, 0, -4));
+    b.extend(glm::vec3(30, 5, 8));
+    const float yfov = 0.8f;
+    const Camera c = frame_bounds(b, yfov);
+    EXPECT_FLOAT_EQ(c.yfov, yfov);
+    EXPECT_NEAR(glm::length(c.forward), 1.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(c.up), 1.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(c.forward, c.up), 0.0f, 1e-5f);
+    // Looks at the centre, from above and in front (a 3/4 view, not axis-aligned).
+    const glm::vec3 to_center = glm::normalize(b.center() - c.position);
+    EXPECT_GT(glm::dot(to_center, c.forward), 0.9999f);
+    EXPECT_LT(c.forward.y, -0.1f);
+    EXPECT_GT(std::abs(c.forward.x), 0.1f);
+    // Every corner lies inside the vertical field of view (square aspect) and the depth range.
+    const glm::mat4 view = c.view();
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 p{(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                          (i & 4) ? b.max.z : b.min.z};
+        const glm::vec3 q = glm::vec3(view * glm::vec4(p, 1.0f));
+        const float depth = -q.z;
+        EXPECT_GT(depth, c.znear);
+        EXPECT_LT(depth, c.zfar);
+        EXPECT_LE(std::abs(q.y) / depth, std::tan(yfov * 0.5f));
+        EXPECT_LE(std::abs(q.x) / depth, std::tan(yfov * 0.5f));
+    }
+}
+
+TEST(SceneModel, FrameBoundsOfNothingIsTheDefaultCamera) {
+    const Camera c = frame_bounds(Bounds{});
+    EXPECT_EQ(c.position, Camera{}.position);
+    EXPECT_EQ(c.forward, Camera{}.forward);
+}
+
+TEST(SceneModel, FrameBoundsOfAPointStaysFinite) {
+    Bounds b;
+    b.extend(glm::vec3(1, 2, 3));
+    const Camera c = frame_bounds(b);
+    EXPECT_TRUE(std::isfinite(c.position.x) && std::isfinite(c.zfar));
+    EXPECT_GT(c.zfar, c.znear);
+}
+
+}  // namespace
+}  // namespace ds::scene
