@@ -1,4 +1,5 @@
 #include "renderer/passes/forward.h"
+#include "renderer/vk/functions.h"
 
 #include <algorithm>
 #include <numeric>
@@ -99,15 +100,15 @@ ForwardStats ForwardPass::record(const ForwardInputs& in) const {
     rendering.colorAttachmentCount = 1;
     rendering.pColorAttachments = &color;
     rendering.pDepthAttachment = &depth;
-    vkCmdBeginRendering(cmd, &rendering);
+    vk::fn().cmd_begin_rendering(cmd, &rendering);
 
     const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
     const VkRect2D scissor{{0, 0}, extent};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
-    vkCmdSetDepthTestEnable(cmd, VK_TRUE);
-    vkCmdSetDepthWriteEnable(cmd, VK_TRUE);
-    vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_GREATER);
+    vk::fn().cmd_set_depth_test_enable(cmd, VK_TRUE);
+    vk::fn().cmd_set_depth_write_enable(cmd, VK_TRUE);
+    vk::fn().cmd_set_depth_compare_op(cmd, VK_COMPARE_OP_GREATER);
 
     const VkDeviceSize zero = 0;
     const VkBuffer vertices = in.scene->vertex_buffer();
@@ -119,7 +120,7 @@ ForwardStats ForwardPass::record(const ForwardInputs& in) const {
     draw_groups(in, opaque_.handle(), AlphaMode::Opaque, stats);
     draw_groups(in, mask_.handle(), AlphaMode::Mask, stats);
     draw_blended(in, stats);
-    vkCmdEndRendering(cmd);
+    vk::fn().cmd_end_rendering(cmd);
     return stats;
 }
 
@@ -144,7 +145,7 @@ void ForwardPass::draw_groups(const ForwardInputs& in, VkPipeline pipeline,
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 1, 1, &set, 0,
                                     nullptr);
         }
-        vkCmdSetCullMode(cmd, cull_mode(g.double_sided));
+        vk::fn().cmd_set_cull_mode(cmd, cull_mode(g.double_sided));
         // gl_InstanceIndex = first_instance + i indexes the instance buffer directly.
         vkCmdDrawIndexed(cmd, mesh.index_count, g.instance_count, mesh.first_index,
                          mesh.vertex_offset, g.first_instance);
@@ -178,7 +179,8 @@ void ForwardPass::draw_blended(const ForwardInputs& in, ForwardStats& stats) con
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, blend_.handle());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &in.frame_set, 0,
                             nullptr);
-    vkCmdSetDepthWriteEnable(cmd, VK_FALSE);  // test against opaque, never occlude each other
+    vk::fn().cmd_set_depth_write_enable(cmd,
+                                        VK_FALSE);  // test against opaque, never occlude each other
     uint32_t material = UINT32_MAX;
     for (const Item& item : items) {
         const GpuMesh& mesh = in.scene->meshes()[item.group->mesh];
@@ -188,7 +190,7 @@ void ForwardPass::draw_blended(const ForwardInputs& in, ForwardStats& stats) con
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 1, 1, &set, 0,
                                     nullptr);
         }
-        vkCmdSetCullMode(cmd, cull_mode(item.group->double_sided));
+        vk::fn().cmd_set_cull_mode(cmd, cull_mode(item.group->double_sided));
         vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, mesh.vertex_offset,
                          item.instance);
         ++stats.draw_calls;

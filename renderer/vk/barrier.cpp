@@ -1,4 +1,5 @@
 #include "renderer/vk/barrier.h"
+#include "renderer/vk/functions.h"
 
 #include "renderer/vk/check.h"
 
@@ -26,7 +27,7 @@ void image_barriers(VkCommandBuffer cmd, std::span<const ImageBarrier> barriers)
     auto dep = make<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
     dep.imageMemoryBarrierCount = uint32_t(vk_barriers.size());
     dep.pImageMemoryBarriers = vk_barriers.data();
-    vkCmdPipelineBarrier2(cmd, &dep);
+    fn().cmd_pipeline_barrier2(cmd, &dep);
 }
 
 void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
@@ -39,7 +40,7 @@ void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAcce
     auto dep = make<VkDependencyInfo>(VK_STRUCTURE_TYPE_DEPENDENCY_INFO);
     dep.memoryBarrierCount = 1;
     dep.pMemoryBarriers = &barrier;
-    vkCmdPipelineBarrier2(cmd, &dep);
+    fn().cmd_pipeline_barrier2(cmd, &dep);
 }
 
 }  // namespace ds::vk

@@ -1,4 +1,5 @@
 #include "renderer/vk/capabilities.h"
+#include "renderer/vk/features.h"
 
 #include <sstream>
 
@@ -111,27 +112,34 @@ void probe_queues(VkPhysicalDevice device, DeviceReport& r) {
 }
 
 void probe_features(VkPhysicalDevice device, DeviceReport& r) {
-    // Chaining 1.2/1.3 feature structs is only valid on devices of that version.
-    if (r.candidate.api_version < VK_API_VERSION_1_3) {
+    // Feature structs of 1.2 and later are only valid on devices of that version.
+    if (r.candidate.api_version < VK_API_VERSION_1_2) {
         VkPhysicalDeviceFeatures f{};
         vkGetPhysicalDeviceFeatures(device, &f);
         r.pipeline_statistics = f.pipelineStatisticsQuery;
         r.occlusion_query_precise = f.occlusionQueryPrecise;
         return;
     }
-    auto f13 = make<VkPhysicalDeviceVulkan13Features>(
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
-    auto f12 = make<VkPhysicalDeviceVulkan12Features>(
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
-    f12.pNext = &f13;
-    auto f2 = make<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12);
-    vkGetPhysicalDeviceFeatures2(device, &f2);
-    r.candidate.dynamic_rendering = f13.dynamicRendering;
-    r.candidate.synchronization2 = f13.synchronization2;
-    r.candidate.extended_dynamic_state = true;  // VK_EXT_extended_dynamic_state is core in 1.3
-    r.pipeline_statistics = f2.features.pipelineStatisticsQuery;
-    r.occlusion_query_precise = f2.features.occlusionQueryPrecise;
-    r.descriptor_indexing = f12.runtimeDescriptorArray;
+    r.candidate.via_extensions =
+        r.candidate.api_version < VK_API_VERSION_1_3 && has_promoted_extensions(device);
+    if (r.candidate.api_version < VK_API_VERSION_1_3 && !r.candidate.via_extensions) {
+        // Without the extensions their feature structs must not be chained.
+        FeatureChain chain;
+        chain.v12.pNext = nullptr;
+        vkGetPhysicalDeviceFeatures2(device, &chain.base);
+        r.pipeline_statistics = chain.base.features.pipelineStatisticsQuery;
+        r.occlusion_query_precise = chain.base.features.occlusionQueryPrecise;
+        r.descriptor_indexing = chain.v12.runtimeDescriptorArray;
+        return;
+    }
+    FeatureChain chain;
+    vkGetPhysicalDeviceFeatures2(device, &chain.base);
+    r.candidate.dynamic_rendering = chain.dynamic_rendering.dynamicRendering;
+    r.candidate.synchronization2 = chain.synchronization2.synchronization2;
+    r.candidate.extended_dynamic_state = chain.extended_dynamic_state.extendedDynamicState;
+    r.pipeline_statistics = chain.base.features.pipelineStatisticsQuery;
+    r.occlusion_query_precise = chain.base.features.occlusionQueryPrecise;
+    r.descriptor_indexing = chain.v12.runtimeDescriptorArray;
 }
 
 void probe_properties(VkPhysicalDevice device, DeviceReport& r) {
@@ -219,7 +227,8 @@ std::string format_report(const DeviceReport& r) {
     auto yes = [](bool b) { return b ? "yes" : "no"; };
     out << "device " << r.candidate.index << ": " << r.candidate.name << "\n";
     out << "  type:                 " << r.candidate.type << "\n";
-    out << "  api version:          " << version_string(r.candidate.api_version) << "\n";
+    out << "  api version:          " << version_string(r.candidate.api_version)
+        << (r.candidate.via_extensions ? " (1.3 features through KHR/EXT extensions)" : "") << "\n";
     out << "  driver:               " << r.driver_name << " (" << r.driver_info << ")\n";
     std::string unmet;
     for (const std::string& u : r.unmet) unmet += (unmet.empty() ? "" : ", ") + u;

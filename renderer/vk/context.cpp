@@ -8,6 +8,8 @@
 
 #include "renderer/common/error.h"
 #include "renderer/vk/check.h"
+#include "renderer/vk/features.h"
+#include "renderer/vk/functions.h"
 
 namespace ds::vk {
 namespace {
@@ -195,19 +197,23 @@ void Context::create_device() {
     queue.queueCount = 1;
     queue.pQueuePriorities = &priority;
 
-    auto f13 = make<VkPhysicalDeviceVulkan13Features>(
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES);
-    f13.dynamicRendering = VK_TRUE;
-    f13.synchronization2 = VK_TRUE;
-    auto f2 = make<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f13);
+    FeatureChain features;
+    features.dynamic_rendering.dynamicRendering = VK_TRUE;
+    features.synchronization2.synchronization2 = VK_TRUE;
+    features.extended_dynamic_state.extendedDynamicState = VK_TRUE;
     // Optional features: on when present, so the graph can measure with them later.
-    f2.features.pipelineStatisticsQuery = report_.pipeline_statistics;
-    f2.features.occlusionQueryPrecise = report_.occlusion_query_precise;
+    features.base.features.pipelineStatisticsQuery = report_.pipeline_statistics;
+    features.base.features.occlusionQueryPrecise = report_.occlusion_query_precise;
 
-    auto info = make<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &f2);
+    auto info = make<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features.base);
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue;
+    if (report_.candidate.via_extensions) {
+        info.enabledExtensionCount = uint32_t(kPromotedExtensions.size());
+        info.ppEnabledExtensionNames = kPromotedExtensions.data();
+    }
     check(vkCreateDevice(physical_device_, &info, nullptr, &device_), "vkCreateDevice");
+    load_device_functions(device_, report_.candidate.via_extensions);
     vkGetDeviceQueue(device_, report_.queue_family, 0, &queue_);
 
     auto pool = make<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
@@ -254,7 +260,7 @@ void Context::submit_once(const std::function<void(VkCommandBuffer)>& record) {
     auto submit = make<VkSubmitInfo2>(VK_STRUCTURE_TYPE_SUBMIT_INFO_2);
     submit.commandBufferInfoCount = 1;
     submit.pCommandBufferInfos = &cmd_info;
-    check(vkQueueSubmit2(queue_, 1, &submit, fence), "vkQueueSubmit2");
+    check(fn().queue_submit2(queue_, 1, &submit, fence), "vkQueueSubmit2");
     check(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
 }
 

@@ -45,8 +45,11 @@ bool is_index(std::string_view s) {
 
 std::vector<std::string> unmet_requirements(const DeviceCandidate& c) {
     std::vector<std::string> out;
-    if (c.api_version < VK_API_VERSION_1_3)
-        out.push_back("Vulkan " + version_text(c.api_version) + " < 1.3");
+    if (c.api_version < VK_API_VERSION_1_2 ||
+        (c.api_version < VK_API_VERSION_1_3 && !c.via_extensions))
+        out.push_back("Vulkan " + version_text(c.api_version) +
+                      " < 1.3 (or 1.2 with the dynamic rendering, synchronization2 and extended "
+                      "dynamic state extensions)");
     if (!c.dynamic_rendering) out.push_back("no dynamicRendering");
     if (!c.synchronization2) out.push_back("no synchronization2");
     if (!c.extended_dynamic_state) out.push_back("no extendedDynamicState");

@@ -14,6 +14,11 @@ struct DeviceCandidate {
     std::string name;
     std::string type;          // "cpu", "discrete-gpu", ...
     uint32_t api_version = 0;  // VK_MAKE_API_VERSION
+    // A Vulkan 1.2 device that offers the 1.3 features we need as extensions
+    // (VK_KHR_dynamic_rendering, VK_KHR_synchronization2, VK_EXT_extended_dynamic_state). This is
+    // what lavapipe looks like under RenderDoc, which hides 1.3 when the device lacks
+    // bufferDeviceAddressCaptureReplay.
+    bool via_extensions = false;
     bool dynamic_rendering = false;
     bool synchronization2 = false;
     bool extended_dynamic_state = false;  // core in 1.3 but a feature query costs nothing

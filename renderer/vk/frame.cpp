@@ -1,4 +1,5 @@
 #include "renderer/vk/frame.h"
+#include "renderer/vk/functions.h"
 
 #include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
@@ -55,7 +56,7 @@ void FrameRing::submit(Frame& f) {
     auto submit = make<VkSubmitInfo2>(VK_STRUCTURE_TYPE_SUBMIT_INFO_2);
     submit.commandBufferInfoCount = 1;
     submit.pCommandBufferInfos = &cmd;
-    check(vkQueueSubmit2(context_.queue(), 1, &submit, f.fence), "vkQueueSubmit2");
+    check(fn().queue_submit2(context_.queue(), 1, &submit, f.fence), "vkQueueSubmit2");
     f.submitted = true;
 }
 

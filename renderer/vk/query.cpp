@@ -1,4 +1,5 @@
 #include "renderer/vk/query.h"
+#include "renderer/vk/functions.h"
 
 #include <utility>
 
@@ -42,7 +43,7 @@ void TimestampPool::reset(VkCommandBuffer cmd) {
 }
 
 void TimestampPool::write(VkCommandBuffer cmd, VkPipelineStageFlags2 stage, uint32_t slot) {
-    vkCmdWriteTimestamp2(cmd, stage, pool_, slot);
+    fn().cmd_write_timestamp2(cmd, stage, pool_, slot);
 }
 
 std::optional<std::vector<uint64_t>> TimestampPool::results() const {

@@ -100,3 +100,26 @@ TEST(DeviceSelect, UnmetRequirementsAreAllListed) {
 }
 
 }  // namespace
+
+namespace {
+
+// lavapipe under RenderDoc: Vulkan 1.2, the 1.3 features offered as extensions.
+TEST(DeviceSelect, Vulkan12WithTheExtensionsIsAccepted) {
+    DeviceCandidate c = good(0, "llvmpipe under RenderDoc");
+    c.api_version = VK_MAKE_API_VERSION(0, 1, 2, 0);
+    EXPECT_FALSE(ds::vk::unmet_requirements(c).empty()) << "1.2 without the extensions";
+    c.via_extensions = true;
+    EXPECT_TRUE(ds::vk::unmet_requirements(c).empty());
+    EXPECT_EQ(select_device({c}, ""), 0u);
+    c.dynamic_rendering = false;  // the extension is there but its feature is off
+    EXPECT_FALSE(ds::vk::unmet_requirements(c).empty());
+}
+
+TEST(DeviceSelect, Vulkan11IsRefusedEvenWithExtensions) {
+    DeviceCandidate c = good(0, "ancient");
+    c.api_version = VK_MAKE_API_VERSION(0, 1, 1, 0);
+    c.via_extensions = true;
+    EXPECT_FALSE(ds::vk::unmet_requirements(c).empty());
+}
+
+}  // namespace
