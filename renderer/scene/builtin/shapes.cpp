@@ -113,7 +113,9 @@ std::vector<glm::vec4> compute_tangents(const MeshData& mesh) {
                                      : glm::cross(n, glm::vec3(0, 1, 0));
         }
         t = glm::normalize(t);
-        const float w = glm::dot(glm::cross(n, t), bitan[i]) < 0.0f ? -1.0f : 1.0f;
+        // glTF: the bitangent cross(n, t) * w is tangent-space +Y, "up" in the normal map, i.e.
+        // towards decreasing v; bitan points towards increasing v (as in the importer).
+        const float w = glm::dot(glm::cross(n, t), bitan[i]) > 0.0f ? -1.0f : 1.0f;
         out[i] = glm::vec4(t, w);
     }
     return out;
