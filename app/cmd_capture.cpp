@@ -47,6 +47,9 @@ int run_capture(const Options& o) {
     const Settings settings = settings_from(o);
     // Input first: a bad file fails before any Vulkan work, and before output exists.
     const scene::Scene scene = scene::load_scene(o.scene, settings);
+    for (const auto& w : scene.warnings) {
+        std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
+    }
     std::unique_ptr<capture::RenderDoc> renderdoc;
     if (o.renderdoc && !(renderdoc = capture::RenderDoc::attach())) {
         throw UsageError(

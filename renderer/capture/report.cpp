@@ -23,6 +23,7 @@ nlohmann::json scene_summary(const scene::Scene& s) {
         {"instances", s.instances.size()},
         {"draw_groups", s.draw_groups.size()},
         {"triangles", s.triangle_count()},
+        {"warnings", s.warnings},
     };
 }
 

@@ -52,3 +52,18 @@ TEST(Capture, DefaultFolderIsUnderCaptures) {
     EXPECT_TRUE(fs::exists(dir / "final.png"));
     fs::remove_all(dir);
 }
+
+TEST(Capture, ImporterWarningsReachTheReportAndTheLog) {
+    const std::string model =
+        DS_ASSIMP_MODELS "/glTF2/BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf";
+    auto dir = fresh_dir("warnings") / "cap";
+    auto r = run_depthscope("capture --validate --size 64x64 --scene " + model + " --out " +
+                            dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("depthscope: warning: " + model), std::string::npos) << r.err;
+    auto report = nlohmann::json::parse(read_file(dir / "report.json"));
+    ASSERT_EQ(report["scene"]["warnings"].size(), 1u);
+    EXPECT_NE(report["scene"]["warnings"][0].get<std::string>().find(
+                  "KHR_materials_pbrSpecularGlossiness"),
+              std::string::npos);
+}
