@@ -31,8 +31,11 @@ std::string join(const std::vector<std::string>& parts, const char* sep) {
 
 std::string device_list(const std::vector<DeviceCandidate>& candidates) {
     if (candidates.empty()) return " (no Vulkan devices were found)";
+    // One line: errors are printed as a single `depthscope: error: ...` line.
     std::string out;
-    for (const DeviceCandidate& c : candidates) out += "\n  " + describe_candidate(c);
+    for (const DeviceCandidate& c : candidates) {
+        out += (out.empty() ? " " : " | ") + describe_candidate(c);
+    }
     return out;
 }
 

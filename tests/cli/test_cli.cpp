@@ -68,3 +68,22 @@ TEST(Cli, RenderDocWithoutRenderDocIsAClearError) {
     EXPECT_NE(r.err.find("RenderDoc is not loaded"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "cap"));
 }
+
+TEST(Cli, DeviceByIndexAndNameAndAClearErrorOtherwise) {
+    auto dir = ds::test::fresh_dir("device-choice");
+    EXPECT_EQ(run_depthscope("capture --device 0 --scene overdraw --size 16x16 --out " +
+                             (dir / "a").string())
+                  .exit_code,
+              0);
+    EXPECT_EQ(run_depthscope("capture --device llvmpipe --scene overdraw --size 16x16 --out " +
+                             (dir / "b").string())
+                  .exit_code,
+              0);
+    auto r = run_depthscope("capture --device no-such-gpu --scene overdraw --size 16x16 --out " +
+                            (dir / "c").string());
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find("no device name contains 'no-such-gpu'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("llvmpipe"), std::string::npos) << "lists the devices: " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "c"));
+}
