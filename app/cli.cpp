@@ -62,6 +62,20 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
     export_cmd->add_option("out", o.out, "output .gltf path")->required();
     export_cmd->add_option("--set", o.sets, "scene setting as name=value, repeatable");
 
+    auto* bench = app.add_subcommand(
+        "bench", "render frames headless for each settings combination; per-pass GPU medians");
+    add_render_options(*bench, o, /*with_scene=*/true);
+    bench->add_option("--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)");
+    bench->add_option("--frames", o.bench_frames, "measured frames per combination (default 20)")
+        ->check(CLI::Range(1, 100000));
+    bench->add_option("--warmup", o.bench_warmup, "unmeasured frames first (default 5)")
+        ->check(CLI::Range(0, 100000));
+    bench
+        ->add_option("--matrix", o.matrix,
+                     "setting=value1,value2,...: one run per combination, repeatable")
+        ->type_name("NAME=V1,V2");
+    bench->add_option("--json", o.out, "also write the results as JSON to FILE");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -77,6 +91,7 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
     if (app.got_subcommand("settings")) o.command = Command::Settings;
     if (capture->parsed()) o.command = Command::Capture;
     if (export_cmd->parsed()) o.command = Command::ExportScene;
+    if (bench->parsed()) o.command = Command::Bench;
     if (!size_text.empty()) o.size = parse_size(size_text);
     return std::nullopt;
 }

@@ -7,7 +7,7 @@
 
 namespace ds::app {
 
-enum class Command { Default, Info, Scenes, Settings, Capture, ExportScene };
+enum class Command { Default, Info, Scenes, Settings, Capture, ExportScene, Bench };
 
 struct Size {
     uint32_t width = 1280;
@@ -23,6 +23,10 @@ struct Options {
     std::string out;                // capture folder / export file
     std::vector<std::string> sets;  // "name=value"
     bool renderdoc = false;
+    // bench
+    int bench_frames = 20;
+    int bench_warmup = 5;
+    std::vector<std::string> matrix;  // "name=v1,v2"
 };
 
 // Parses argv. Returns the exit code to use right away (help printed: 0), or nullopt to run.

@@ -9,5 +9,6 @@ int run_scenes();
 int run_settings();
 int run_capture(const Options& options);
 int run_export_scene(const Options& options);
+int run_bench(const Options& options);
 
 }  // namespace ds::app

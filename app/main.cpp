@@ -22,6 +22,8 @@ int dispatch(const ds::app::Options& o) {
             return ds::app::run_export_scene(o);
         case Command::Capture:
             return ds::app::run_capture(o);
+        case Command::Bench:
+            return ds::app::run_bench(o);
         case Command::Default:
             // No inspector yet: the default is a headless capture of the default scene.
             std::fprintf(stderr, "depthscope: rendering a headless capture of '%s'\n",

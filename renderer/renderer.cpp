@@ -109,8 +109,8 @@ struct Renderer::Impl {
     explicit Impl(const RendererOptions& options);
     ~Impl();
     void ensure_targets(uint32_t width, uint32_t height, vk::DestroyList& retired);
-    void record(vk::Frame& frame, Slot& slot, const FrameUniforms& uniforms);
-    void read_back(Slot& slot, FrameResult& result);
+    void record(vk::Frame& frame, Slot& slot, const FrameUniforms& uniforms, ReadBack read_back);
+    void read_back(Slot& slot, FrameResult& result, ReadBack read_back);
 
     // Declared in creation order; ~Impl tears down explicitly in reverse.
     std::unique_ptr<vk::Context> context;
@@ -194,7 +194,8 @@ void Renderer::Impl::ensure_targets(uint32_t width, uint32_t height, vk::Destroy
                               vk::MemoryUsage::Readback, "colour readback"});
 }
 
-void Renderer::Impl::record(vk::Frame& frame, Slot& slot, const FrameUniforms& uniforms) {
+void Renderer::Impl::record(vk::Frame& frame, Slot& slot, const FrameUniforms& uniforms,
+                            ReadBack read_back) {
     VkCommandBuffer cmd = frame.cmd;
     const VkImage color = targets.color.handle();
     const VkImage depth = targets.depth.handle();
@@ -235,6 +236,7 @@ void Renderer::Impl::record(vk::Frame& frame, Slot& slot, const FrameUniforms& u
     }
     if (slot.timestamps.count())
         slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 1);
+    if (read_back == ReadBack::No) return;
 
     vk::image_barrier(cmd, {.image = color,
                             .old_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -252,11 +254,14 @@ void Renderer::Impl::record(vk::Frame& frame, Slot& slot, const FrameUniforms& u
                        VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
-void Renderer::Impl::read_back(Slot& slot, FrameResult& result) {
+void Renderer::Impl::read_back(Slot& slot, FrameResult& result, ReadBack read_back) {
     if (slot.timestamps.count()) {
-        if (auto ticks = slot.timestamps.results())
+        if (auto ticks = slot.timestamps.results()) {
             result.gpu_ms = slot.timestamps.ticks_to_ms((*ticks)[0], (*ticks)[1]);
+            result.passes.push_back({"forward", result.gpu_ms});
+        }
     }
+    if (read_back == ReadBack::No) return;
     targets.readback.invalidate();
     const size_t bytes = size_t(result.width) * result.height * 4;
     result.rgba8.resize(bytes);
@@ -295,7 +300,7 @@ void Renderer::set_scene(const scene::Scene& scene) {
 }
 
 FrameResult Renderer::render(const scene::Camera& camera, const Settings& settings, uint32_t width,
-                             uint32_t height) {
+                             uint32_t height, ReadBack read_back) {
     Impl& r = *impl_;
     if (!r.scene) throw Error("render: no scene (call set_scene first)");
     if (width == 0 || height == 0)
@@ -309,7 +314,7 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     const FrameUniforms uniforms =
         frame_uniforms(camera, settings, r.sun, float(width) / float(height));
     slot.uniforms.write(&uniforms, sizeof uniforms);
-    r.record(frame, slot, uniforms);
+    r.record(frame, slot, uniforms, read_back);
     r.frames->submit(frame);
 
     FrameResult result;
@@ -318,7 +323,7 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     result.cpu_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     r.frames->wait(frame);
-    r.read_back(slot, result);
+    r.read_back(slot, result, read_back);
     return result;
 }
 

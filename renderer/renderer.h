@@ -19,12 +19,22 @@ struct RendererOptions {
     std::string device;     // "" = first suitable, "N" = index, else a name substring
 };
 
+// One pass of a frame, as measured by the GPU.
+struct PassResult {
+    std::string name;
+    double gpu_ms = 0;  // from two timestamps around the pass
+};
+
 struct FrameResult {
     uint32_t width = 0, height = 0;
-    std::vector<uint8_t> rgba8;  // final image, sRGB-encoded, tightly packed, top row first
-    double gpu_ms = 0;           // forward pass, from timestamps
-    double cpu_ms = 0;           // host time to record and submit the frame (not the wait)
+    std::vector<uint8_t> rgba8;      // final image, sRGB-encoded, tightly packed, top row first;
+                                     // empty when the frame was rendered without read-back
+    std::vector<PassResult> passes;  // in execution order
+    double gpu_ms = 0;               // first pass start to last pass end, from timestamps
+    double cpu_ms = 0;               // host time to record and submit the frame (not the wait)
 };
+
+enum class ReadBack { Yes, No };  // benchmarks skip the copy to host memory
 
 class Renderer {
   public:
@@ -39,7 +49,7 @@ class Renderer {
     // Draws one frame at width x height and reads it back (blocks until it is done).
     // Throws ds::Error before set_scene() or for a zero size.
     FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
-                       uint32_t height);
+                       uint32_t height, ReadBack read_back = ReadBack::Yes);
     uint64_t validation_message_count() const;
     VkInstance instance() const;  // for RenderDoc's device pointer
 

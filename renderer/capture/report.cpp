@@ -1,5 +1,7 @@
 #include "renderer/capture/report.h"
 
+#include <unistd.h>
+
 #include <fstream>
 
 #include "renderer/common/error.h"
@@ -46,6 +48,23 @@ void write_json(const std::filesystem::path& path, const nlohmann::json& json) {
     out << json.dump(2) << '\n';
     out.close();
     if (!out) throw Error(path.string() + ": cannot write");
+}
+
+void write_json_atomically(const std::filesystem::path& path, const nlohmann::json& json) {
+    const std::filesystem::path temp = path.string() + ".tmp-" + std::to_string(::getpid());
+    try {
+        write_json(temp, json);
+    } catch (...) {
+        std::error_code ignored;
+        std::filesystem::remove(temp, ignored);
+        throw Error(path.string() + ": cannot write");
+    }
+    std::error_code ec;
+    std::filesystem::rename(temp, path, ec);
+    if (ec) {
+        std::filesystem::remove(temp, ec);
+        throw Error(path.string() + ": cannot write: " + ec.message());
+    }
 }
 
 }  // namespace ds::capture

@@ -29,5 +29,7 @@ nlohmann::json scene_summary(const scene::Scene& scene);
 
 // Writes pretty JSON; throws ds::Error when the file cannot be written.
 void write_json(const std::filesystem::path& path, const nlohmann::json& json);
+// The same, through a temporary file renamed into place: PATH is complete or absent.
+void write_json_atomically(const std::filesystem::path& path, const nlohmann::json& json);
 
 }  // namespace ds::capture

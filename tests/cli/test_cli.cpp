@@ -9,7 +9,7 @@ using ds::test::run_depthscope;
 TEST(Cli, HelpDescribesEveryCommand) {
     auto r = run_depthscope("--help");
     EXPECT_EQ(r.exit_code, 0);
-    for (const char* cmd : {"info", "scenes", "settings", "capture", "export-scene"}) {
+    for (const char* cmd : {"info", "scenes", "settings", "capture", "export-scene", "bench"}) {
         EXPECT_NE(r.out.find(cmd), std::string::npos) << cmd;
     }
     EXPECT_NE(r.out.find("Exit codes"), std::string::npos);
