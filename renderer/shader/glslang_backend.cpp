@@ -123,7 +123,7 @@ std::vector<uint32_t> emit_spirv(glslang::TProgram& program, EShLanguage lang) {
 std::string glslang_version_tag() {
     return "ds-spirv-2/glslang-" + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
            std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH) +
-           GLSLANG_VERSION_FLAVOR + "/vulkan1.3/spirv1.6/noopt";
+           GLSLANG_VERSION_FLAVOR + "/vulkan1.2/spirv1.5/noopt";
 }
 
 GlslangOutput run_glslang(SourceTree& tree, const fs::path& main_file, Stage stage,
@@ -141,8 +141,11 @@ GlslangOutput run_glslang(SourceTree& tree, const fs::path& main_file, Stage sta
     shader.setStringsWithLengthsAndNames(strings, lengths, names, 1);
     shader.setPreamble(preamble.c_str());
     shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);
+    // SPIR-V 1.5: valid on the Vulkan 1.2 devices we accept (lavapipe under RenderDoc), and
+    // it states compute workgroup sizes as literals (1.6 uses LocalSizeId, which needs
+    // maintenance4).
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
 
     Includer includer(tree, main_name);
     GlslangOutput out;

@@ -1,0 +1,18 @@
+#pragma once
+// The compiled graph as text (DESIGN decision 5): passes in order with the barriers recorded
+// before each and what each reads and writes; every resource with its format, size, samples,
+// semantic and lifetime. `depthscope capture --dump-graph` prints it; tests read it.
+#include <span>
+#include <string>
+
+#include "renderer/graph/plan.h"
+
+namespace ds::graph {
+
+std::string dump_graph(VkExtent2D output, std::span<const ResourceInfo> resources,
+                       std::span<const PassInfo> passes, const BarrierPlan& plan);
+
+// One barrier on one line: "colour: UNDEFINED -> COLOR_ATTACHMENT_OPTIMAL, NONE/NONE -> ...".
+std::string describe_barrier(const Barrier& barrier, std::span<const ResourceInfo> resources);
+
+}  // namespace ds::graph

@@ -1,0 +1,161 @@
+// PassBuilder (setup: declarations) and PassContext (record: resolved handles).
+#include <algorithm>
+
+#include "renderer/common/error.h"
+#include "renderer/graph/graph.h"
+#include "renderer/graph/names.h"
+
+namespace ds::graph {
+namespace {
+
+bool uses_shader_stage(Access access) {
+    return access == Access::Sampled || access == Access::StorageRead ||
+           access == Access::StorageWrite || access == Access::StorageReadWrite ||
+           access == Access::UniformRead;
+}
+
+bool is_depth_kind(Access access) {
+    return access == Access::DepthAttachment || access == Access::DepthReadOnly;
+}
+
+}  // namespace
+
+ImageHandle PassBuilder::create_image(const std::string& name, const ImageDesc& desc) {
+    if (desc.format == VK_FORMAT_UNDEFINED)
+        throw Error("render graph: image '" + name + "' has no format");
+    if (desc.mip_levels == 0 || (desc.samples != VK_SAMPLE_COUNT_1_BIT && desc.mip_levels != 1))
+        throw Error("render graph: image '" + name + "': multisampled images have one mip level");
+    ResourceInfo info;
+    info.name = name;
+    info.image = desc;
+    info.extent = desc.size.resolve(graph_.output_);
+    return {graph_.add_resource(std::move(info))};
+}
+
+HistoryImage PassBuilder::create_history(const std::string& name, const ImageDesc& desc) {
+    const ImageHandle previous = create_image(name + ".previous", desc);
+    const ImageHandle current = create_image(name + ".current", desc);
+    for (auto [handle, role] :
+         {std::pair{previous, HistoryRole::Previous}, std::pair{current, HistoryRole::Current}}) {
+        graph_.resources_[handle.index].lifetime = Lifetime::History;
+        graph_.resources_[handle.index].history = role;
+    }
+    graph_.histories_.push_back({name, previous.index, current.index, nullptr});
+    return {previous, current};
+}
+
+BufferHandle PassBuilder::create_buffer(const std::string& name, const BufferDesc& desc) {
+    if (desc.size == 0) throw Error("render graph: buffer '" + name + "' is empty");
+    ResourceInfo info;
+    info.name = name;
+    info.is_image = false;
+    info.size = desc.size;
+    info.memory = desc.memory;
+    return {graph_.add_resource(std::move(info))};
+}
+
+void PassBuilder::declare(uint32_t resource, bool image, Access access, Shader shader, bool write) {
+    PassInfo& pass = graph_.passes_[pass_];
+    const ResourceInfo& r = graph_.resource(resource, image, write ? "write()" : "read()");
+    const std::string where = "render graph: pass '" + pass.name + "', '" + r.name + "': ";
+    if (is_write(access) != write)
+        throw Error(where + access_name(access) + " is " + (write ? "not a write" : "a write") +
+                    ": declare it with " + (write ? "read()" : "write()"));
+    if (image ? is_buffer_only(access) : is_image_only(access))
+        throw Error(where + access_name(access) + " does not apply to " +
+                    (image ? "an image" : "a buffer"));
+    if (image && access != Access::ResolveDst && is_depth_kind(access) != r.depth() &&
+        (is_depth_kind(access) || access == Access::ColorAttachment))
+        throw Error(where + access_name(access) + " does not fit format " +
+                    format_name(r.image.format));
+    const bool attachment =
+        access == Access::ColorAttachment || is_depth_kind(access) || access == Access::ResolveDst;
+    if (pass.kind == PassKind::Compute && attachment)
+        throw Error(where + "a compute pass has no attachments");
+    if (uses_shader_stage(access) && shader == Shader::Default)
+        shader = pass.kind == PassKind::Compute ? Shader::Compute : Shader::Fragment;
+    pass.accesses.push_back({resource, access, shader});
+}
+
+ImageHandle PassBuilder::read(ImageHandle image, Access access, Shader shader) {
+    declare(image.index, true, access, shader, false);
+    return image;
+}
+
+ImageHandle PassBuilder::write(ImageHandle image, Access access, Shader shader) {
+    declare(image.index, true, access, shader, true);
+    return image;
+}
+
+BufferHandle PassBuilder::read(BufferHandle buffer, Access access, Shader shader) {
+    declare(buffer.index, false, access, shader, false);
+    return buffer;
+}
+
+BufferHandle PassBuilder::write(BufferHandle buffer, Access access, Shader shader) {
+    declare(buffer.index, false, access, shader, true);
+    return buffer;
+}
+
+VkExtent2D PassBuilder::output_extent() const {
+    return graph_.output_;
+}
+
+VkExtent2D PassBuilder::extent(ImageHandle image) const {
+    return graph_.resource(image.index, true, "extent()").extent;
+}
+
+const std::string& PassContext::pass_name() const {
+    return graph_.passes_[pass_].name;
+}
+
+const PassUse& PassContext::use(uint32_t resource) const {
+    const auto& uses = graph_.plan_.passes[pass_].uses;
+    auto it = std::find_if(uses.begin(), uses.end(),
+                           [&](const PassUse& u) { return u.resource == resource; });
+    if (it == uses.end())
+        throw Error("render graph: pass '" + pass_name() + "' did not declare '" +
+                    graph_.resources_[resource].name + "'");
+    return *it;
+}
+
+VkImage PassContext::image(ImageHandle h) const {
+    graph_.resource(h.index, true, "image()");
+    use(h.index);
+    return graph_.bindings_[h.index].image;
+}
+
+VkImageView PassContext::view(ImageHandle h) const {
+    graph_.resource(h.index, true, "view()");
+    use(h.index);
+    return graph_.bindings_[h.index].view;
+}
+
+VkImageLayout PassContext::layout(ImageHandle h) const {
+    graph_.resource(h.index, true, "layout()");
+    return use(h.index).use.layout;
+}
+
+VkBuffer PassContext::buffer(BufferHandle h) const {
+    graph_.resource(h.index, false, "buffer()");
+    use(h.index);
+    return graph_.bindings_[h.index].buffer;
+}
+
+VkExtent2D PassContext::extent(ImageHandle h) const {
+    return graph_.resource(h.index, true, "extent()").extent;
+}
+
+VkFormat PassContext::format(ImageHandle h) const {
+    return graph_.resource(h.index, true, "format()").image.format;
+}
+
+VkDeviceSize PassContext::size(BufferHandle h) const {
+    return graph_.resource(h.index, false, "size()").size;
+}
+
+bool PassContext::history_valid(const HistoryImage& history) const {
+    return graph_.resource(history.previous.index, true, "history_valid()").history_valid;
+}
+
+}  // namespace ds::graph

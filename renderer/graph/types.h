@@ -1,0 +1,110 @@
+#pragma once
+// Render graph vocabulary: typed handles, resource descriptions and the semantic every image
+// carries (DESIGN decision 7). No Vulkan calls: only Vulkan's enums and flag types.
+#include <cstdint>
+#include <optional>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/vk/memory.h"
+
+namespace ds::graph {
+
+inline constexpr uint32_t kNoResource = UINT32_MAX;
+
+// Indices into the frame's resource table; the two types keep images and buffers apart.
+struct ImageHandle {
+    uint32_t index = kNoResource;
+    bool valid() const { return index != kNoResource; }
+    bool operator==(const ImageHandle&) const = default;
+};
+struct BufferHandle {
+    uint32_t index = kNoResource;
+    bool valid() const { return index != kNoResource; }
+    bool operator==(const BufferHandle&) const = default;
+};
+
+// How the viewer and the capture writer decode and show an image.
+enum class Semantic : uint8_t {
+    ReverseZDepth,  // near 1, far 0
+    ForwardZDepth,  // near 0, far 1
+    ShadowDepth,
+    EncodedNormal,  // n * 0.5 + 0.5 (A2B10G10R10)
+    UnormScalar,    // roughness and other [0, 1] scalars
+    AO,
+    HdrColor,
+    LdrColor,
+    Count,  // u32 counters (exact per-pixel invocation counts)
+    Other,
+};
+
+// Either relative to the graph's output size (recreated when that changes) or absolute.
+struct ImageSize {
+    float scale = 1.0f;
+    VkExtent2D absolute{0, 0};
+
+    static ImageSize relative(float scale) { return {scale, {0, 0}}; }
+    static ImageSize fixed(uint32_t width, uint32_t height) { return {1.0f, {width, height}}; }
+    bool is_relative() const { return absolute.width == 0 || absolute.height == 0; }
+    VkExtent2D resolve(VkExtent2D output) const;  // never smaller than 1x1
+};
+
+// Name `.size` in designated initializers: GCC 12 warns (-Wmissing-field-initializers) when a
+// member of class type is left out.
+struct ImageDesc {
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    ImageSize size;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    uint32_t mip_levels = 1;
+    Semantic semantic = Semantic::Other;
+};
+
+struct BufferDesc {
+    VkDeviceSize size = 0;
+    vk::MemoryUsage memory = vk::MemoryUsage::GpuOnly;
+};
+
+// What a user outside the graph did last (initial) or does next (final) with an imported
+// resource: the other half of the barrier the graph records.
+struct ExternalState {
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // images; UNDEFINED as final: keep
+    VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_NONE;
+    VkAccessFlags2 access = VK_ACCESS_2_NONE;
+
+    // A swapchain image: presentation waits on a semaphore, so no stage is needed.
+    static ExternalState present() { return {VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, 0, 0}; }
+    // An image the caller copies out after the graph (readback, capture).
+    static ExternalState transfer_src() {
+        return {VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                VK_ACCESS_2_TRANSFER_READ_BIT};
+    }
+    // A host-visible buffer the CPU reads after the frame's fence.
+    static ExternalState host_read() {
+        return {VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT};
+    }
+};
+
+struct ExternalImage {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    ImageDesc desc;  // desc.size must be fixed(): the graph does not own (or resize) it
+    ExternalState initial;
+    std::optional<ExternalState> final;  // none: left as the last pass used it
+};
+
+struct ExternalBuffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceSize size = 0;
+    ExternalState initial;
+    std::optional<ExternalState> final;
+};
+
+enum class Lifetime : uint8_t {
+    Transient,  // graph-owned, contents discarded at the start of every frame
+    History,    // graph-owned pair, contents kept for the next frame (temporal passes)
+    External,   // imported by the caller, with initial and final states
+};
+
+enum class PassKind : uint8_t { Graphics, Compute };
+
+}  // namespace ds::graph

@@ -1,0 +1,87 @@
+#pragma once
+// A validated context (synchronization validation included), a frame ring and a graph; frame()
+// declares, compiles, executes, submits and waits for one frame.
+#include <functional>
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "renderer/graph/graph.h"
+#include "renderer/vk/check.h"
+#include "renderer/vk/context.h"
+#include "renderer/vk/frame.h"
+#include "renderer/vk/functions.h"
+
+namespace ds::graph::test {
+
+class GraphVk : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        vk::ContextOptions options;
+        options.validate = true;
+        context_ = std::make_unique<vk::Context>(options);
+        frames_ = std::make_unique<vk::FrameRing>(*context_);
+        graph_ = std::make_unique<RenderGraph>(*context_);
+    }
+    void TearDown() override {
+        context_->wait_idle();
+        graph_.reset();
+        frames_.reset();
+        EXPECT_EQ(context_->validation_message_count(), 0u);
+    }
+
+    // Runs one frame at `size` with the passes `declare` adds; returns the id for collect().
+    uint64_t frame(VkExtent2D size, const std::function<void(RenderGraph&)>& declare) {
+        vk::Frame& f = frames_->begin();
+        graph_->begin_frame(size, f.retired);
+        declare(*graph_);
+        graph_->compile();
+        const uint64_t id = graph_->execute(f.cmd);
+        frames_->submit(f);
+        frames_->wait(f);
+        return id;
+    }
+
+    std::unique_ptr<vk::Context> context_;
+    std::unique_ptr<vk::FrameRing> frames_;
+    std::unique_ptr<RenderGraph> graph_;
+};
+
+// Dynamic rendering into one attachment, cleared; the caller records inside, then ends it.
+inline void begin_clear(const PassContext& ctx, ImageHandle target, VkClearValue clear) {
+    const bool depth = ctx.layout(target) == VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    auto attachment =
+        vk::make<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    attachment.imageView = ctx.view(target);
+    attachment.imageLayout = ctx.layout(target);
+    attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    attachment.clearValue = clear;
+    auto rendering = vk::make<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    rendering.renderArea = {{0, 0}, ctx.extent(target)};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = depth ? 0 : 1;
+    rendering.pColorAttachments = depth ? nullptr : &attachment;
+    rendering.pDepthAttachment = depth ? &attachment : nullptr;
+    vk::fn().cmd_begin_rendering(ctx.cmd(), &rendering);
+}
+
+// The whole of a colour image into a tightly packed buffer.
+inline void copy_to_buffer(const PassContext& ctx, ImageHandle image, BufferHandle buffer) {
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {ctx.extent(image).width, ctx.extent(image).height, 1};
+    vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(image), ctx.layout(image), ctx.buffer(buffer), 1,
+                           &region);
+}
+
+inline VkClearValue colour(float r, float g, float b, float a = 1.0f) {
+    VkClearValue v{};
+    v.color.float32[0] = r;
+    v.color.float32[1] = g;
+    v.color.float32[2] = b;
+    v.color.float32[3] = a;
+    return v;
+}
+
+}  // namespace ds::graph::test
