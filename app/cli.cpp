@@ -56,6 +56,9 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
                       "bracket the frame with RenderDoc's StartFrameCapture/EndFrameCapture and "
                       "store the .rdc in the output folder (needs RenderDoc loaded)");
 
+    capture->add_flag("--dump-graph", o.dump_graph,
+                      "print the compiled render graph: passes, resources, barriers");
+
     auto* export_cmd = app.add_subcommand(
         "export-scene", "write a built-in scene as OUT.gltf + OUT.bin + PNG textures");
     export_cmd->add_option("name", o.scene, "built-in scene name")->required();

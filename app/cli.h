@@ -23,6 +23,7 @@ struct Options {
     std::string out;                // capture folder / export file
     std::vector<std::string> sets;  // "name=value"
     bool renderdoc = false;
+    bool dump_graph = false;
     // bench
     int bench_frames = 20;
     int bench_warmup = 5;

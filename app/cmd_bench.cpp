@@ -17,6 +17,7 @@ struct RunResult {
     std::vector<Assignment> assignments;
     Summary frame;
     std::vector<std::pair<std::string, Summary>> passes;  // execution order
+    std::vector<std::string> skipped;
 };
 
 RunResult measure(Renderer& renderer, const scene::Scene& scene, const Settings& settings,
@@ -27,16 +28,19 @@ RunResult measure(Renderer& renderer, const scene::Scene& scene, const Settings&
     std::vector<double> frame_ms;
     std::vector<std::string> order;
     std::map<std::string, std::vector<double>> pass_ms;
+    std::vector<std::string> last_skipped;
     for (int i = 0; i < o.bench_frames; ++i) {
         const FrameResult f =
             renderer.render(scene.camera, settings, o.size.width, o.size.height, ReadBack::No);
         frame_ms.push_back(f.gpu_ms);
+        last_skipped = f.skipped;
         for (const PassResult& p : f.passes) {
             if (!pass_ms.count(p.name)) order.push_back(p.name);
             pass_ms[p.name].push_back(p.gpu_ms);
         }
     }
     RunResult run;
+    run.skipped = last_skipped;
     run.frame = summarize(frame_ms);
     for (const auto& name : order) run.passes.emplace_back(name, summarize(pass_ms[name]));
     return run;
@@ -52,6 +56,7 @@ void print_run(const RunResult& run, size_t index) {
     }
     std::printf("  %-18s %9.3f %9.3f %9.3f\n", "frame", run.frame.median, run.frame.min,
                 run.frame.max);
+    for (const auto& note : run.skipped) std::printf("  (%s)\n", note.c_str());
 }
 
 nlohmann::json summary_json(const Summary& s) {
@@ -69,7 +74,8 @@ nlohmann::json runs_json(const std::vector<RunResult>& runs, const Settings& bas
         }
         out.push_back({{"settings", settings.values()},
                        {"frame_ms", summary_json(run.frame)},
-                       {"passes", passes}});
+                       {"passes", passes},
+                       {"skipped", run.skipped}});
     }
     return out;
 }

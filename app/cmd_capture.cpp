@@ -4,6 +4,7 @@
 #include <renderdoc_app.h>
 
 #include "app/commands.h"
+#include "app/frame_json.h"
 #include "renderer/capture/image_writer.h"
 #include "renderer/capture/output_dir.h"
 #include "renderer/capture/renderdoc.h"
@@ -77,7 +78,13 @@ int run_capture(const Options& o) {
                                 .gpu_ms = frame.gpu_ms,
                                 .cpu_ms = frame.cpu_ms,
                                 .validation_messages = renderer.validation_message_count()};
-    capture::write_json(out.staging_path("report.json"), capture::make_report(report));
+    nlohmann::json json = capture::make_report(report);
+    json["passes"] = passes_json(frame);
+    json["counters"] = counters_note();
+    json["skipped"] = frame.skipped;
+    if (frame.covered_pixels) json["coverage"] = {{"covered_pixels", *frame.covered_pixels}};
+    capture::write_json(out.staging_path("report.json"), json);
+    if (o.dump_graph) std::printf("%s\n", frame.graph_dump.c_str());
     out.commit();
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());
     return exit_code_for(renderer);

@@ -59,7 +59,8 @@ GpuMaterial gpu_material(const scene::Material& m, bool has_normal_map) {
     g.normal_scale = m.normal_scale;
     g.occlusion_strength = m.occlusion_strength;
     g.alpha_cutoff = m.alpha_cutoff;
-    g.flags = has_normal_map ? kMaterialHasNormalMap : 0u;
+    g.flags = (has_normal_map ? kMaterialHasNormalMap : 0u) |
+              (m.alpha_mode == scene::AlphaMode::Mask ? kMaterialAlphaMask : 0u);
     return g;
 }
 

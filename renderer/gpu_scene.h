@@ -22,7 +22,7 @@ namespace vk {
 class Context;
 }
 
-// std140 twin of MaterialUniforms in shaders/common/bindings.glsl.
+// std140 twin of MaterialUniforms in shaders/common/bindings.glsl (flags: kMaterial* bits).
 struct GpuMaterial {
     glm::vec4 base_color_factor{1.0f};
     glm::vec4 emissive_factor{0.0f};
@@ -36,6 +36,7 @@ struct GpuMaterial {
 };
 static_assert(sizeof(GpuMaterial) == 64);
 inline constexpr uint32_t kMaterialHasNormalMap = 1u;
+inline constexpr uint32_t kMaterialAlphaMask = 2u;  // alphaMode MASK (one-pipeline prepass)
 
 // std430 twin of InstanceData.
 struct GpuInstance {

@@ -2,94 +2,93 @@
 
 #include <array>
 #include <chrono>
-#include <cmath>
-#include <cstring>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/common/error.h"
+#include "renderer/frame_targets.h"
+#include "renderer/frame_uniforms.h"
 #include "renderer/gpu_scene.h"
+#include "renderer/graph/graph.h"
+#include "renderer/passes/ao_spatial.h"
+#include "renderer/passes/ao_temporal.h"
+#include "renderer/passes/contact_shadows.h"
+#include "renderer/passes/depth_prepass.h"
 #include "renderer/passes/forward.h"
+#include "renderer/passes/frame.h"
+#include "renderer/passes/gtao.h"
+#include "renderer/passes/shadow.h"
+#include "renderer/passes/skybox.h"
+#include "renderer/passes/tonemap.h"
+#include "renderer/passes/transparent.h"
 #include "renderer/shader/compiler.h"
-#include "renderer/vk/barrier.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/context.h"
-#include "renderer/vk/debug.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/frame.h"
-#include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
 #include "renderer/vk/query.h"
 
 namespace ds {
 namespace {
 
-constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
-// Sky radiance behind everything, and the hemispherical ambient (scaled by `ambient`).
-constexpr glm::vec3 kSkyRadiance{0.25f, 0.42f, 0.85f};
-constexpr glm::vec3 kSkyAmbient{0.55f, 0.70f, 1.00f};
-constexpr glm::vec3 kGroundAmbient{0.35f, 0.30f, 0.25f};
-
-// std140 twin of FrameUniforms in shaders/common/bindings.glsl.
-struct FrameUniforms {
-    glm::mat4 view_projection{1.0f};
-    glm::vec4 camera_position{0.0f};
-    glm::vec4 sun_direction{0.0f, 1.0f, 0.0f, 0.0f};
-    glm::vec4 sun_radiance{0.0f};
-    glm::vec4 sky_ambient{0.0f};
-    glm::vec4 ground_ambient{0.0f};
-    glm::vec4 exposure{1.0f};
-};
-static_assert(sizeof(FrameUniforms) == 160);
-
 enum FrameBinding : uint32_t { kFrameUniforms = 0, kInstances = 1 };
 
-// Reverse-Z (near -> 1, far -> 0) right-handed perspective for Vulkan clip space; y is flipped
-// so row 0 of the image is the top and counter-clockwise triangles stay front-facing.
-glm::mat4 reverse_z_projection(float yfov, float aspect, float znear, float zfar) {
-    const float f = 1.0f / std::tan(yfov * 0.5f);
-    glm::mat4 p(0.0f);
-    p[0][0] = f / aspect;
-    p[1][1] = -f;
-    p[2][2] = znear / (zfar - znear);
-    p[2][3] = -1.0f;
-    p[3][2] = znear * zfar / (zfar - znear);
-    return p;
-}
+// The passes of the seed frame, in execution order (seed 000's, with transparent added).
+struct Passes {
+    passes::ShadowPass shadow;
+    passes::DepthPrepass prepass;
+    passes::GtaoPass gtao;
+    passes::AoSpatialPass ao_spatial;
+    passes::AoTemporalPass ao_temporal;
+    passes::ContactShadowsPass contact_shadows;
+    passes::ForwardPass forward;
+    passes::SkyboxPass skybox;
+    passes::TransparentPass transparent;
+    passes::TonemapPass tonemap;
 
-// A knob's value, or `fallback` while the registry does not have it.
-float setting_or(const Settings& settings, std::string_view name, float fallback) {
-    return SettingsRegistry::instance().find(name) ? settings.get_float(name) : fallback;
-}
+    explicit Passes(const passes::PassServices& s)
+        : shadow(s),
+          prepass(s),
+          gtao(s),
+          ao_spatial(s),
+          ao_temporal(s),
+          contact_shadows(s),
+          forward(s),
+          skybox(s),
+          transparent(s),
+          tonemap(s) {}
 
-// Must match tonemap() in shaders/common/tonemap.glsl: the clear colour is the tonemapped sky.
-glm::vec3 aces_fitted(glm::vec3 x) {
-    const float a = 2.51f, b = 0.03f, c = 2.43f, d = 0.59f, e = 0.14f;
-    return glm::clamp((x * (a * x + b)) / (x * (c * x + d) + e), 0.0f, 1.0f);
-}
-
-FrameUniforms frame_uniforms(const scene::Camera& camera, const Settings& settings,
-                             const scene::DirectionalLight& sun, float aspect) {
-    FrameUniforms u;
-    u.view_projection =
-        reverse_z_projection(camera.yfov, aspect, camera.znear, camera.zfar) * camera.view();
-    u.camera_position = glm::vec4(camera.position, 1.0f);
-    // Azimuth 0 puts the sun towards +Z, 90 towards +X; elevation is above the horizon.
-    glm::vec3 to_sun = -glm::normalize(sun.direction);
-    if (SettingsRegistry::instance().find("sun_azimuth") &&
-        SettingsRegistry::instance().find("sun_elevation")) {
-        const float az = glm::radians(settings.get_float("sun_azimuth"));
-        const float el = glm::radians(settings.get_float("sun_elevation"));
-        to_sun = {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+    // Fail-safe per pass: a shader error stops here and leaves the later passes as they were.
+    void rebuild(vk::DestroyList& retired) {
+        shadow.rebuild_pipelines(retired);
+        prepass.rebuild_pipelines(retired);
+        gtao.rebuild_pipelines(retired);
+        ao_spatial.rebuild_pipelines(retired);
+        ao_temporal.rebuild_pipelines(retired);
+        contact_shadows.rebuild_pipelines(retired);
+        forward.rebuild_pipelines(retired);
+        skybox.rebuild_pipelines(retired);
+        transparent.rebuild_pipelines(retired);
+        tonemap.rebuild_pipelines(retired);
     }
-    u.sun_direction = glm::vec4(to_sun, 0.0f);
-    u.sun_radiance =
-        glm::vec4(sun.color * setting_or(settings, "sun_intensity", sun.intensity), 0.0f);
-    const float ambient = setting_or(settings, "ambient", 0.35f);
-    u.sky_ambient = glm::vec4(kSkyAmbient * ambient, 0.0f);
-    u.ground_ambient = glm::vec4(kGroundAmbient * ambient, 0.0f);
-    u.exposure = glm::vec4(setting_or(settings, "exposure", 1.0f));
-    return u;
+};
+
+// Why a pass is not in this frame's graph (the report lists it).
+std::vector<std::string> skipped_passes(const passes::FrameOptions& o, const Settings& s) {
+    std::vector<std::string> out;
+    auto skip = [&](const char* pass, const std::string& why) {
+        out.push_back(std::string(pass) + ": skipped (" + why + ")");
+    };
+    if (!o.shadows) skip("shadow", "shadows=off");
+    if (!o.prepass) skip("depth_prepass", "prepass=off");
+    // Switched off, or without the prepass depth and normals they read.
+    auto why = [&](const char* knob) {
+        return s.get_bool(knob) ? std::string("prepass off") : std::string(knob) + "=off";
+    };
+    if (!o.gtao)
+        for (const char* p : {"gtao", "ao_spatial", "ao_temporal"}) skip(p, why("gtao"));
+    if (!o.contact_shadows) skip("contact_shadows", why("contact_shadows"));
+    if (!o.sky) skip("skybox", "sky=off");
+    return out;
 }
 
 }  // namespace
@@ -98,48 +97,50 @@ struct Renderer::Impl {
     struct Slot {  // per frame in flight
         vk::Buffer uniforms;
         VkDescriptorSet set = VK_NULL_HANDLE;
-        vk::TimestampPool timestamps;
-    };
-    struct Targets {  // size-dependent; render() waits, so one set serves every slot
-        vk::Image color;
-        vk::Image depth;
-        vk::Buffer readback;
+        vk::TimestampPool timestamps;  // around the whole graph
     };
 
     explicit Impl(const RendererOptions& options);
     ~Impl();
-    void ensure_targets(uint32_t width, uint32_t height, vk::DestroyList& retired);
-    void record(vk::Frame& frame, Slot& slot, const FrameUniforms& uniforms, ReadBack read_back);
-    void read_back(Slot& slot, FrameResult& result, ReadBack read_back);
+    passes::FrameResources build_graph(const passes::FrameInputs& in, Slot& slot);
+    void write_uniforms(Slot& slot, const scene::Camera& camera, const Settings& settings,
+                        const passes::FrameInputs& in, const passes::FrameResources& res);
+    void collect(Slot& slot, uint64_t graph_frame, const passes::FrameOptions& options,
+                 ReadBack read_back, FrameResult& result);
 
     // Declared in creation order; ~Impl tears down explicitly in reverse.
     std::unique_ptr<vk::Context> context;
     std::unique_ptr<shader::Compiler> compiler;
     vk::DescriptorSetLayout frame_layout;
     vk::DescriptorSetLayout material_layout;
-    vk::PipelineLayout pipeline_layout;
     vk::DescriptorPool frame_pool;
     std::array<Slot, vk::FrameRing::kFramesInFlight> slots;
     std::unique_ptr<vk::FrameRing> frames;
-    std::unique_ptr<passes::ForwardPass> forward;
+    std::unique_ptr<graph::RenderGraph> graph;
+    std::unique_ptr<Passes> passes;
+    std::unique_ptr<FrameTargets> targets;
     std::unique_ptr<GpuScene> scene;
     scene::DirectionalLight sun;
-    Targets targets;
+    scene::Bounds scene_bounds;
+    // Temporal state: last frame's view-projection, unless the next frame is a cut.
+    glm::mat4 previous_view_projection{1.0f};
+    bool cut = true;
+    VkExtent2D last_size{0, 0};  // a new size is a cut: last frame's pixels do not map
 };
 
 Renderer::Impl::Impl(const RendererOptions& options) {
     context = std::make_unique<vk::Context>(
         vk::ContextOptions{.validate = options.validate, .device = options.device});
     compiler = std::make_unique<shader::Compiler>();
-    const VkShaderStageFlags graphics = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    // The frame uniforms are read by every stage (the screen-space passes are compute).
     const VkDescriptorSetLayoutBinding frame_bindings[] = {
-        vk::layout_binding(kFrameUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics),
+        vk::layout_binding(kFrameUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                           VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT |
+                               VK_SHADER_STAGE_COMPUTE_BIT),
         vk::layout_binding(kInstances, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                            VK_SHADER_STAGE_VERTEX_BIT)};
     frame_layout = vk::DescriptorSetLayout(*context, frame_bindings, "frame set layout");
     material_layout = create_material_set_layout(*context);
-    const VkDescriptorSetLayout sets[] = {frame_layout.handle(), material_layout.handle()};
-    pipeline_layout = vk::PipelineLayout(*context, sets, {}, "scene pipeline layout");
 
     const uint32_t n = vk::FrameRing::kFramesInFlight;
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, n},
@@ -148,124 +149,110 @@ Renderer::Impl::Impl(const RendererOptions& options) {
     const bool timestamps = context->report().timestamps && context->report().timestamp_valid_bits;
     for (Slot& slot : slots) {
         slot.uniforms =
-            vk::Buffer(*context, {sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+            vk::Buffer(*context, {sizeof(passes::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                   vk::MemoryUsage::Upload, "frame uniforms"});
         slot.set = frame_pool.allocate(frame_layout.handle());
         if (timestamps) slot.timestamps = vk::TimestampPool(*context, 2);
     }
     frames = std::make_unique<vk::FrameRing>(*context);
-    forward = std::make_unique<passes::ForwardPass>(*context, *compiler, pipeline_layout.handle(),
-                                                    kColorFormat, context->report().depth_format);
+    graph = std::make_unique<graph::RenderGraph>(*context);
+    const VkFormat depth_format = context->report().depth_format;
+    passes = std::make_unique<Passes>(passes::PassServices{
+        *context, *compiler, frame_layout.handle(), material_layout.handle(), depth_format});
+    targets =
+        std::make_unique<FrameTargets>(*context, passes::TonemapPass::kFinalFormat, depth_format);
 }
 
 Renderer::Impl::~Impl() {
     if (!context) return;
     vkDeviceWaitIdle(context->device());  // teardown: an error here has nowhere to go
-    targets = Targets{};
+    if (targets) targets->reset();
     scene.reset();
-    forward.reset();
     frames.reset();  // flushes every destroy list
+    passes.reset();
+    graph.reset();
+    targets.reset();
     for (Slot& slot : slots) slot = Slot{};
     frame_pool = vk::DescriptorPool{};
-    pipeline_layout.reset();
     material_layout.reset();
     frame_layout.reset();
     compiler.reset();
     context.reset();  // device, messenger, instance last
 }
 
-void Renderer::Impl::ensure_targets(uint32_t width, uint32_t height, vk::DestroyList& retired) {
-    if (targets.color && targets.color.width() == width && targets.color.height() == height) return;
-    // An earlier frame may still read the old images: they die after this frame's fence.
-    if (targets.color) retired.defer(std::move(targets));
-    targets = Targets{};
-    targets.color =
-        vk::Image(*context, {width, height, 1, kColorFormat,
-                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                 VK_IMAGE_USAGE_SAMPLED_BIT,
-                             VK_SAMPLE_COUNT_1_BIT, "forward colour"});
-    targets.depth =
-        vk::Image(*context, {width, height, 1, context->report().depth_format,
-                             VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
-                                 VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                             VK_SAMPLE_COUNT_1_BIT, "depth (reverse-Z)"});
-    targets.readback =
-        vk::Buffer(*context, {VkDeviceSize(width) * height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                              vk::MemoryUsage::Readback, "colour readback"});
+passes::FrameResources Renderer::Impl::build_graph(const passes::FrameInputs& in, Slot& slot) {
+    passes::FrameResources res;
+    graph::ExternalBuffer uniforms;
+    uniforms.buffer = slot.uniforms.handle();
+    uniforms.size = slot.uniforms.size();
+    uniforms.initial = {VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_HOST_BIT,
+                        VK_ACCESS_2_HOST_WRITE_BIT};  // written before the submit
+    res.frame_uniforms = graph->import_buffer("frame_uniforms", uniforms);
+    targets->import(*graph, in.options, res);
+
+    Passes& p = *passes;
+    if (in.options.shadows) p.shadow.add(*graph, in, res);
+    if (in.options.prepass) p.prepass.add(*graph, in, res);
+    // The screen-space passes decide themselves from the options and what exists: gtao and
+    // contact shadows need the prepass (FrameOptions folds that in); the AO filters need gtao.
+    p.gtao.add(*graph, in, res);
+    p.ao_spatial.add(*graph, in, res);
+    p.ao_temporal.add(*graph, in, res);
+    p.contact_shadows.add(*graph, in, res);
+    p.forward.add(*graph, in, res);
+    if (in.options.sky) p.skybox.add(*graph, in, res);
+    p.transparent.add(*graph, in, res);
+    p.tonemap.add(*graph, in, res);
+    return res;
 }
 
-void Renderer::Impl::record(vk::Frame& frame, Slot& slot, const FrameUniforms& uniforms,
-                            ReadBack read_back) {
-    VkCommandBuffer cmd = frame.cmd;
-    const VkImage color = targets.color.handle();
-    const VkImage depth = targets.depth.handle();
-    if (slot.timestamps.count()) slot.timestamps.reset(cmd);
+void Renderer::Impl::write_uniforms(Slot& slot, const scene::Camera& camera,
+                                    const Settings& settings, const passes::FrameInputs& in,
+                                    const passes::FrameResources& res) {
+    uint32_t flags = 0;
+    if (res.shadow_map.valid()) flags |= passes::kFrameShadows;
+    if (res.ao.valid()) flags |= passes::kFrameAO;
+    if (res.contact_shadows.valid()) flags |= passes::kFrameContactShadows;
+    const VkExtent2D size = graph->output_extent();
+    const passes::FrameUniforms u =
+        frame_uniforms({.camera = camera,
+                        .settings = settings,
+                        .options = in.options,
+                        .sun = sun,
+                        .scene_bounds = scene_bounds,
+                        .size = size,
+                        .previous_view_projection = cut ? nullptr : &previous_view_projection,
+                        .flags = flags,
+                        .frame_number = in.frame_number});
+    slot.uniforms.write(&u, sizeof u);
+    previous_view_projection = u.view_projection;
+    cut = false;
+}
 
-    // Contents are discarded (UNDEFINED); the previous frame's copy-out read and depth writes
-    // must still finish before the clears overwrite them.
-    const vk::ImageBarrier to_attachment[] = {
-        {.image = color,
-         .old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
-         .new_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-         .src_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
-         .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-         .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT},
-        {.image = depth,
-         .aspect = targets.depth.aspect(),
-         .old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
-         .new_layout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-         .src_stage = VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-         .src_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-         .dst_stage = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
-                      VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-         .dst_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT}};
-    vk::image_barriers(cmd, to_attachment);
-
-    if (slot.timestamps.count()) slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, 0);
-    {
-        vk::ScopedLabel label(context->debug(), cmd, "forward");
-        const glm::vec3 sky = aces_fitted(kSkyRadiance * uniforms.exposure.x);
-        forward->record({.cmd = cmd,
-                         .scene = scene.get(),
-                         .frame_set = slot.set,
-                         .color = &targets.color,
-                         .depth = &targets.depth,
-                         .clear_color = {sky.r, sky.g, sky.b, 1.0f},
-                         .camera_position = glm::vec3(uniforms.camera_position)});
+void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::FrameOptions& options,
+                             ReadBack read_back, FrameResult& result) {
+    for (const graph::PassResult& g : graph->collect(graph_frame)) {
+        PassResult p{.name = g.name,
+                     .gpu_ms = g.gpu_ms,
+                     .vertex_shader_invocations = g.vertex_invocations,
+                     .fragment_shader_invocations = g.fragment_invocations,
+                     .clipping_primitives = g.clipping_primitives,
+                     .shaded_fragments = std::nullopt};
+        if (p.name == passes::DepthPrepass::kName)
+            p.shaded_fragments = targets->count_sum(CountImage::Prepass);
+        else if (p.name == passes::ForwardPass::kName)
+            p.shaded_fragments = targets->count_sum(CountImage::Forward);
+        else if (p.name == passes::TransparentPass::kName)
+            p.shaded_fragments = targets->count_sum(CountImage::Transparent);
+        result.passes.push_back(std::move(p));
     }
-    if (slot.timestamps.count())
-        slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 1);
-    if (read_back == ReadBack::No) return;
-
-    vk::image_barrier(cmd, {.image = color,
-                            .old_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                            .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                            .src_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                            .src_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                            .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
-                            .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
-    VkBufferImageCopy region{};  // bufferRowLength 0: tightly packed, row 0 = top
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {targets.color.width(), targets.color.height(), 1};
-    vkCmdCopyImageToBuffer(cmd, color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           targets.readback.handle(), 1, &region);
-    vk::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-}
-
-void Renderer::Impl::read_back(Slot& slot, FrameResult& result, ReadBack read_back) {
     if (slot.timestamps.count()) {
-        if (auto ticks = slot.timestamps.results()) {
+        if (auto ticks = slot.timestamps.results())
             result.gpu_ms = slot.timestamps.ticks_to_ms((*ticks)[0], (*ticks)[1]);
-            result.passes.push_back({"forward", result.gpu_ms});
-        }
     }
-    if (read_back == ReadBack::No) return;
-    targets.readback.invalidate();
-    const size_t bytes = size_t(result.width) * result.height * 4;
-    result.rgba8.resize(bytes);
-    std::memcpy(result.rgba8.data(), targets.readback.mapped(), bytes);
+    if (read_back == ReadBack::Yes || options.count_fragments)
+        result.covered_pixels = targets->covered_pixels(options.far_depth());
+    if (read_back == ReadBack::Yes) result.rgba8 = targets->rgba8();
 }
 
 Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl>(options)) {}
@@ -284,6 +271,14 @@ VkInstance Renderer::instance() const {
     return impl_->context->instance();
 }
 
+void Renderer::camera_cut() {
+    impl_->cut = true;
+}
+
+void Renderer::rebuild_pipelines() {
+    impl_->passes->rebuild(impl_->frames->retire_list());
+}
+
 void Renderer::set_scene(const scene::Scene& scene) {
     Impl& r = *impl_;
     // Descriptor sets that in-flight frames use are rewritten below: let them finish first.
@@ -291,6 +286,8 @@ void Renderer::set_scene(const scene::Scene& scene) {
     r.scene.reset();
     r.scene = std::make_unique<GpuScene>(*r.context, scene, r.material_layout.handle());
     r.sun = scene.sun;
+    r.scene_bounds = scene.bounds;
+    r.cut = true;
     for (Impl::Slot& slot : r.slots) {
         vk::DescriptorWriter writer;
         writer.buffer(kFrameUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, slot.uniforms.handle())
@@ -306,15 +303,39 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     if (width == 0 || height == 0)
         throw Error("render: size " + std::to_string(width) + "x" + std::to_string(height) +
                     " is empty");
+    const passes::FrameOptions options = passes::FrameOptions::from(settings);
+    if (options.count_fragments && !r.context->report().fragment_stores_and_atomics)
+        throw Error("count_fragments=on needs fragmentStoresAndAtomics, which " +
+                    r.context->report().candidate.name + " does not offer");
     const auto start = std::chrono::steady_clock::now();
     vk::Frame& frame = r.frames->begin();
     Impl::Slot& slot = r.slots[frame.number % vk::FrameRing::kFramesInFlight];
-    r.ensure_targets(width, height, frame.retired);
+    const VkExtent2D size{width, height};
+    if (size.width != r.last_size.width || size.height != r.last_size.height) r.cut = true;
+    r.last_size = size;
+    r.targets->ensure(size, options.count_fragments, frame.retired);
+    if (r.cut) r.graph->invalidate_history();
+    r.graph->begin_frame(size, frame.retired);  // a new size invalidates history too
 
-    const FrameUniforms uniforms =
-        frame_uniforms(camera, settings, r.sun, float(width) / float(height));
-    slot.uniforms.write(&uniforms, sizeof uniforms);
-    r.record(frame, slot, uniforms, read_back);
+    const passes::FrameInputs in{.scene = r.scene.get(),
+                                 .frame_set = slot.set,
+                                 .options = options,
+                                 .camera_position = camera.position,
+                                 .frame_number = frame.number};
+    const passes::FrameResources res = r.build_graph(in, slot);
+    r.write_uniforms(slot, camera, settings, in, res);
+    r.graph->compile();
+
+    VkCommandBuffer cmd = frame.cmd;
+    if (slot.timestamps.count()) {
+        slot.timestamps.reset(cmd);
+        slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, 0);
+    }
+    const uint64_t graph_frame = r.graph->execute(cmd);
+    if (slot.timestamps.count())
+        slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 1);
+    const bool depth = read_back == ReadBack::Yes || options.count_fragments;
+    r.targets->record_read_back(cmd, read_back == ReadBack::Yes, depth);
     r.frames->submit(frame);
 
     FrameResult result;
@@ -322,8 +343,10 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     result.height = height;
     result.cpu_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    result.skipped = skipped_passes(options, settings);
+    result.graph_dump = r.graph->dump();
     r.frames->wait(frame);
-    r.read_back(slot, result, read_back);
+    r.collect(slot, graph_frame, options, read_back, result);
     return result;
 }
 

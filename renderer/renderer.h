@@ -1,8 +1,11 @@
 #pragma once
-// The renderer facade: Settings + Scene + Camera in, pixels and timings out. The next issue
-// replaces the frame inside with a render graph; this interface stays.
+// The renderer facade: Settings + Scene + Camera in, pixels and timings out. Inside, every
+// frame is a render graph: shadow -> depth_prepass -> gtao -> ao_spatial -> ao_temporal ->
+// contact_shadows -> forward -> skybox -> transparent -> tonemap, passes switched off by the
+// settings left out.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +26,16 @@ struct RendererOptions {
 struct PassResult {
     std::string name;
     double gpu_ms = 0;  // from two timestamps around the pass
+    // Pipeline statistics (0 without the device feature). Lavapipe counts fragment shader
+    // invocations per rasterized 4x4 block before the depth test: not what a prepass saves.
+    uint64_t vertex_shader_invocations = 0;
+    uint64_t fragment_shader_invocations = 0;
+    uint64_t clipping_primitives = 0;
+    // count_fragments=on (depth_prepass, forward, transparent): fragments that really ran
+    // the fragment shader after the depth and alpha tests, summed from a per-pixel u32 image.
+    // Exact for shaders without discard (early fragment tests); a pipeline with discard
+    // counts after the discard, and its late depth test may still reject the fragment.
+    std::optional<uint64_t> shaded_fragments;
 };
 
 struct FrameResult {
@@ -32,6 +45,11 @@ struct FrameResult {
     std::vector<PassResult> passes;  // in execution order
     double gpu_ms = 0;               // first pass start to last pass end, from timestamps
     double cpu_ms = 0;               // host time to record and submit the frame (not the wait)
+    // Pixels some surface covers: depth differs from "far" after the prepass (or forward).
+    // Read back with the image, or with count_fragments=on; none for ReadBack::No otherwise.
+    std::optional<uint64_t> covered_pixels;
+    std::vector<std::string> skipped;  // "gtao: skipped (prepass off)", in pass order
+    std::string graph_dump;            // the compiled graph (RenderGraph::dump())
 };
 
 enum class ReadBack { Yes, No };  // benchmarks skip the copy to host memory
@@ -50,6 +68,12 @@ class Renderer {
     // Throws ds::Error before set_scene() or for a zero size.
     FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
                        uint32_t height, ReadBack read_back = ReadBack::Yes);
+    // A camera cut: the next frame's temporal passes start over (no history, and its
+    // previous_view_projection is its own). set_scene() and a new size imply one.
+    void camera_cut();
+    // Hot reload: every pass rebuilds its pipelines, fail-safe (throws shader::ShaderError
+    // naming file:line and keeps the current pipelines when a shader does not compile).
+    void rebuild_pipelines();
     uint64_t validation_message_count() const;
     VkInstance instance() const;  // for RenderDoc's device pointer
 

@@ -1,13 +1,28 @@
 #version 460
-// Forward pass: PBR-lite shading, sun + hemispherical ambient, exposure + ACES, written to an
-// _SRGB target. Defines: ALPHA_MASK (discard below the cutoff; its own pipeline so opaque
-// geometry keeps early-Z), ALPHA_BLEND (output alpha for blending). Neither: opaque.
+// Forward pass: metallic-roughness PBR lit by the sun (PCF shadow map, contact shadows) and a
+// hemispherical ambient (material AO x GTAO), into the HDR target. Defines (default 0):
+//   PREPASS=1          normal and roughness come from the prepass images. With EQUAL no
+//                      variant has a discard: the test already keeps only what the masked
+//                      prepass kept, so every forward pipeline keeps early-Z.
+//   ALPHA_MASK=1       MASK materials without the prepass, or with depth_compare=
+//                      greater_or_equal (which cut-out parts would pass): alpha test with
+//                      discard, in its own pipeline drawn after opaque.
+//   COUNT_FRAGMENTS=1  count the fragments that ran (common/count.glsl).
 #extension GL_GOOGLE_include_directive : require
 
-#include "common/bindings.glsl"
-#include "common/brdf.glsl"
-#include "common/normal.glsl"
-#include "common/tonemap.glsl"
+#ifndef PREPASS
+#define PREPASS 0
+#endif
+#ifndef ALPHA_MASK
+#define ALPHA_MASK 0
+#endif
+
+#include "common/count.glsl"
+#include "common/lighting.glsl"
+
+#if COUNT_FRAGMENTS && ALPHA_MASK == 0
+layout(early_fragment_tests) in;
+#endif
 
 layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_normal;
@@ -16,46 +31,23 @@ layout(location = 3) in vec4 in_tangent;
 
 layout(location = 0) out vec4 out_color;
 
-vec3 shading_normal() {
-    vec3 n = in_normal;
-    float n_len2 = dot(n, n);
-    n = n_len2 > 1e-12 ? n * inversesqrt(n_len2) : vec3(0.0, 1.0, 0.0);
-    if ((material.flags & kMaterialHasNormalMap) != 0u) {
-        vec3 texel = texture(normal_texture, in_uv0).xyz;
-        n = perturb_normal(n, in_tangent, texel, material.normal_scale);
-    }
-    // Back faces (double-sided materials) are lit as seen from their own side.
-    return gl_FrontFacing ? n : -n;
-}
-
 void main() {
     vec4 base = texture(base_color_texture, in_uv0) * material.base_color_factor;
-#ifdef ALPHA_MASK
-    if (base.a < material.alpha_cutoff) discard;
+#if ALPHA_MASK
+    if (base.a < alpha_cutoff()) discard;
 #endif
-    vec3 n = shading_normal();
-    vec3 v = normalize(frame.camera_position.xyz - in_world_position);
-    vec4 mr = texture(metallic_roughness_texture, in_uv0);
-    float metallic = clamp(mr.b * material.metallic_factor, 0.0, 1.0);
-    float roughness = clamp(mr.g * material.roughness_factor, 0.0, 1.0);
-    float ao = 1.0 + material.occlusion_strength * (texture(occlusion_texture, in_uv0).r - 1.0);
-    SurfaceBrdf s = surface_brdf(base.rgb, metallic, roughness);
-
-    vec3 color = shade_direct(s, n, v, frame.sun_direction.xyz, frame.sun_radiance.rgb);
-
-    // Hemispherical ambient: diffuse by the normal, specular by the reflection vector.
-    float n_dot_v = max(abs(dot(n, v)), 1e-4);
-    vec3 r = reflect(-v, n);
-    vec3 diffuse_ambient = mix(frame.ground_ambient.rgb, frame.sky_ambient.rgb, n.y * 0.5 + 0.5);
-    vec3 specular_ambient = mix(frame.ground_ambient.rgb, frame.sky_ambient.rgb, r.y * 0.5 + 0.5);
-    color += ao * (diffuse_ambient * s.diffuse_color +
-                   specular_ambient * env_brdf_approx(s.f0, roughness, n_dot_v));
-    color += texture(emissive_texture, in_uv0).rgb * material.emissive_factor.rgb;
-
-    color = tonemap(color, frame.exposure.x);
-#ifdef ALPHA_BLEND
-    out_color = vec4(color, base.a);
+    count_fragment();
+    vec3 n_vertex = vertex_normal(in_normal);
+    Surface s = material_surface(base, in_uv0);
+#if PREPASS
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    s.n = decode_normal(texelFetch(prepass_normals, pixel, 0).xyz);
+    s.roughness = texelFetch(prepass_roughness, pixel, 0).r;
 #else
-    out_color = vec4(color, 1.0);
+    s.n = shading_normal(n_vertex, in_tangent, in_uv0);
+    s.roughness = material_roughness(in_uv0);
 #endif
+    s.occlusion *= screen_ao();
+    float sun = sun_shadow(in_world_position, facing(n_vertex)) * screen_contact_shadow();
+    out_color = vec4(shade(s, in_world_position, sun), 1.0);
 }

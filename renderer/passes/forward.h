@@ -1,76 +1,75 @@
 #pragma once
-// The forward pass: every draw group shaded with PBR-lite into an _SRGB colour target with a
-// reverse-Z depth buffer (clear 0, GREATER). Opaque groups first, then MASK groups with their
-// own discard pipeline, then BLEND instances back to front with depth writes off.
+// forward: metallic-roughness PBR (GGX, Smith, Schlick) lit by the sun with PCF shadows and
+// contact shadows, and a hemispherical ambient with material AO x GTAO, into the HDR image
+// (R16G16B16A16_SFLOAT, cleared to the background colour; tonemap is its own pass).
+//
+// With the prepass: depth is loaded and never stored (STORE_OP_NONE, read-only layout), the
+// test is EQUAL (or the closer-or-equal one with depth_compare=greater_or_equal), writes off,
+// and normal and roughness come from the prepass images. With EQUAL no forward pipeline has
+// a discard: EQUAL already keeps only what the masked prepass kept, so every one keeps
+// early-Z. greater_or_equal would let the cut-out parts of MASK surfaces through (they are
+// nearer than what the prepass kept), so there MASK keeps its alpha test, in its own pipeline.
+// Without the prepass (prepass=off): depth is cleared and written with the closer test,
+// opaque first, then MASK with a discard in its own pipeline. invariant=off swaps in a
+// vertex shader without `invariant` and with a different (equal in exact arithmetic)
+// expression.
+// BLEND materials are the transparent pass's.
 #include <array>
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
-#include <glm/glm.hpp>
 
-#include "renderer/scene/scene.h"
+#include "renderer/graph/graph.h"
+#include "renderer/passes/frame.h"
+#include "renderer/passes/lighting_set.h"
+#include "renderer/passes/pass_util.h"
+#include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
-#include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
-
-namespace ds {
-class GpuScene;
-namespace shader {
-class Compiler;
-}
-namespace vk {
-class Context;
-}
-}  // namespace ds
 
 namespace ds::passes {
 
-struct ForwardInputs {
-    VkCommandBuffer cmd = VK_NULL_HANDLE;
-    const GpuScene* scene = nullptr;
-    VkDescriptorSet frame_set = VK_NULL_HANDLE;  // set 0: frame uniforms + instances
-    const vk::Image* color = nullptr;            // in COLOR_ATTACHMENT_OPTIMAL
-    const vk::Image* depth = nullptr;            // in DEPTH_STENCIL_ATTACHMENT_OPTIMAL
-    std::array<float, 4> clear_color{};          // linear (the attachment encodes to sRGB)
-    glm::vec3 camera_position{0.0f};
-};
-
-struct ForwardStats {
-    uint32_t draw_calls = 0;
-    uint32_t instances = 0;
-    uint32_t opaque_groups = 0;
-    uint32_t mask_groups = 0;
-    uint32_t blend_instances = 0;
-};
-
 class ForwardPass {
   public:
-    ForwardPass(vk::Context& context, shader::Compiler& compiler, VkPipelineLayout layout,
-                VkFormat color_format, VkFormat depth_format);
+    static constexpr const char* kName = "forward";
+    static constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    // Linear radiance behind everything when the sky pass is off.
+    static constexpr std::array<float, 4> kBackground = {0.25f, 0.42f, 0.85f, 1.0f};
 
-    // Fail-safe rebuild: every shader variant compiles first (throws shader::ShaderError and
-    // keeps the current pipelines); only then are the pipelines replaced, the old ones going
-    // to `retired` because an in-flight frame may still use them.
+    explicit ForwardPass(const PassServices& services);
+
     void rebuild_pipelines(vk::DestroyList& retired);
-
-    ForwardStats record(const ForwardInputs& in) const;
-
-    static constexpr const char* kVertexShader = "forward.vert";
-    static constexpr const char* kFragmentShader = "forward.frag";
+    // Creates res.hdr. Reads res.depth (writes it without the prepass), res.shadow_map,
+    // res.normals, res.roughness, res.ao, res.contact_shadows where valid. Counts into
+    // res.forward_counts when it is valid.
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
 
   private:
-    void draw_groups(const ForwardInputs& in, VkPipeline pipeline, scene::AlphaMode alpha_mode,
-                     ForwardStats& stats) const;
-    void draw_blended(const ForwardInputs& in, ForwardStats& stats) const;
+    // Variant key bits.
+    static constexpr uint32_t kPrepassInputs = 1;  // PREPASS=1 (no discard)
+    static constexpr uint32_t kAlphaMask = 2;      // ALPHA_MASK=1 (not with prepass + EQUAL)
+    static constexpr uint32_t kNonInvariant = 4;   // invariant=off vertex shader
+    static constexpr uint32_t kCounting = 8;
 
-    vk::Context& context_;
-    shader::Compiler& compiler_;
-    VkPipelineLayout layout_;
-    VkFormat color_format_;
-    VkFormat depth_format_;
-    vk::Pipeline opaque_;
-    vk::Pipeline mask_;
-    vk::Pipeline blend_;
+    struct Draw {
+        VkPipeline opaque = VK_NULL_HANDLE;  // with the prepass and EQUAL: opaque and MASK
+        VkPipeline mask = VK_NULL_HANDLE;    // otherwise: MASK, with its discard
+        LightingInputs lighting;
+    };
+
+    ShaderStages compile(uint32_t key) const;
+    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+    void declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res,
+                 const LightingInputs& lighting) const;
+    void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
+                const Draw& draw);
+
+    PassServices services_;
+    LightingSet lighting_;
+    vk::DescriptorSetLayout count_layout_;
+    vk::PipelineLayout layout_;
+    FrameDescriptorPool count_sets_;
+    PipelineVariants pipelines_;
 };
 
 }  // namespace ds::passes

@@ -9,6 +9,33 @@
 namespace ds {
 namespace {
 
+SettingDef bool_knob(std::string name, std::string group, bool def, std::string help,
+                     Invalidates inv) {
+    return SettingDef{std::move(name),
+                      std::move(group),
+                      SettingType::Bool,
+                      def ? "on" : "off",
+                      0,
+                      0,
+                      {"on", "off"},
+                      std::move(help),
+                      inv};
+}
+
+SettingDef enum_knob(std::string name, std::string group, std::vector<std::string> choices,
+                     std::string help, Invalidates inv) {
+    std::string def = choices.front();
+    return SettingDef{std::move(name),
+                      std::move(group),
+                      SettingType::Enum,
+                      std::move(def),
+                      0,
+                      0,
+                      std::move(choices),
+                      std::move(help),
+                      inv};
+}
+
 SettingDef int_knob(std::string name, std::string group, int def, int min, int max,
                     std::string help, Invalidates inv) {
     return SettingDef{std::move(name),
@@ -86,6 +113,9 @@ std::string canonical_value(const SettingDef& def, std::string_view v) {
             return std::to_string(static_cast<long long>(value));
         }
         case SettingType::Float:
+            for (const auto& keyword : def.choices) {
+                if (keyword == v) return keyword;
+            }
             return format_number(parse_number(def, v));
         case SettingType::Enum:
             for (const auto& c : def.choices) {
@@ -119,8 +149,11 @@ std::string SettingDef::range_text() const {
         case SettingType::Enum:
             return join(choices, "|");
         case SettingType::Int:
-        case SettingType::Float:
             return format_number(min) + ".." + format_number(max);
+        case SettingType::Float: {
+            const std::string range = format_number(min) + ".." + format_number(max);
+            return choices.empty() ? range : join(choices, "|") + "|" + range;
+        }
     }
     return "";
 }
@@ -129,6 +162,46 @@ std::string SettingDef::range_text() const {
 SettingsRegistry::SettingsRegistry() {
     using I = Invalidates;
     defs_ = {
+        // Prepass and depth.
+        bool_knob("prepass", "prepass and depth", true,
+                  "depth prepass; off: forward writes depth with GREATER (gtao and "
+                  "contact_shadows need the prepass and are skipped)",
+                  I::Nothing),
+        enum_knob("depth_compare", "prepass and depth", {"equal", "greater_or_equal"},
+                  "forward pass depth test against the prepass depth (prepass on)", I::Nothing),
+        bool_knob("masked_split", "prepass and depth", true,
+                  "separate prepass pipeline for MASK materials; off: one pipeline with discard "
+                  "for all geometry (loses early-Z)",
+                  I::Nothing),
+        bool_knob("invariant", "prepass and depth", true,
+                  "off: forward computes gl_Position with a different but mathematically equal "
+                  "expression, to show what EQUAL does without invariance",
+                  I::Pipelines),
+        bool_knob("reverse_z", "prepass and depth", true,
+                  "reverse-Z depth (clear 0, GREATER); off: clear 1, LESS", I::Nothing),
+        // Alpha.
+        SettingDef{"alpha_cutoff",
+                   "alpha",
+                   SettingType::Float,
+                   "material",
+                   0,
+                   1,
+                   {"material"},
+                   "alpha test cutoff for MASK materials; material: each material's own",
+                   I::Nothing},
+        // Passes.
+        bool_knob("shadows", "passes", true, "directional-light shadow map (PCF in forward)",
+                  I::Nothing),
+        bool_knob("gtao", "passes", true, "ground-truth AO from prepass depth and normals",
+                  I::Nothing),
+        bool_knob("contact_shadows", "passes", true, "screen-space march toward the sun",
+                  I::Nothing),
+        bool_knob("sky", "passes", true, "procedural sky behind the geometry", I::Nothing),
+        // Measurement.
+        bool_knob("count_fragments", "measurement", false,
+                  "count, per pixel, fragments that really ran the shader in prepass, forward "
+                  "and transparent (shaded_fragments in the report)",
+                  I::Pipelines),
         int_knob("overdraw_layers", "scene", 8, 1, 64,
                  "overdraw scene: number of view-filling quads, drawn back to front", I::Scene),
         int_knob("zfight_pairs", "scene", 6, 1, 16,
@@ -198,7 +271,13 @@ int Settings::get_int(std::string_view name) const {
 }
 
 float Settings::get_float(std::string_view name) const {
-    return std::stof(get(name));
+    const std::string& value = get(name);
+    for (const auto& keyword : SettingsRegistry::instance().at(name).choices) {
+        if (value == keyword) {
+            throw UsageError("setting " + std::string(name) + " is '" + value + "', not a number");
+        }
+    }
+    return std::stof(value);
 }
 
 std::vector<std::string> Settings::diff(const Settings& other) const {

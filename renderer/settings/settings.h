@@ -21,7 +21,7 @@ struct SettingDef {
     std::string default_value;
     double min = 0.0;  // Int / Float
     double max = 0.0;
-    std::vector<std::string> choices;  // Enum ("on"/"off" for Bool)
+    std::vector<std::string> choices;  // Enum ("on"/"off" for Bool); Float: keywords also allowed
     std::string help;
     Invalidates invalidates = Invalidates::Nothing;
 
@@ -53,7 +53,7 @@ class Settings {
 
     bool get_bool(std::string_view name) const;
     int get_int(std::string_view name) const;
-    float get_float(std::string_view name) const;
+    float get_float(std::string_view name) const;         // throws UsageError on a keyword value
     const std::string& get(std::string_view name) const;  // canonical text
 
     const std::map<std::string, std::string, std::less<>>& values() const { return values_; }

@@ -118,6 +118,7 @@ void probe_features(VkPhysicalDevice device, DeviceReport& r) {
         vkGetPhysicalDeviceFeatures(device, &f);
         r.pipeline_statistics = f.pipelineStatisticsQuery;
         r.occlusion_query_precise = f.occlusionQueryPrecise;
+        r.fragment_stores_and_atomics = f.fragmentStoresAndAtomics;
         return;
     }
     r.candidate.via_extensions =
@@ -129,6 +130,7 @@ void probe_features(VkPhysicalDevice device, DeviceReport& r) {
         vkGetPhysicalDeviceFeatures2(device, &chain.base);
         r.pipeline_statistics = chain.base.features.pipelineStatisticsQuery;
         r.occlusion_query_precise = chain.base.features.occlusionQueryPrecise;
+        r.fragment_stores_and_atomics = chain.base.features.fragmentStoresAndAtomics;
         r.descriptor_indexing = chain.v12.runtimeDescriptorArray;
         return;
     }
@@ -139,6 +141,7 @@ void probe_features(VkPhysicalDevice device, DeviceReport& r) {
     r.candidate.extended_dynamic_state = chain.extended_dynamic_state.extendedDynamicState;
     r.pipeline_statistics = chain.base.features.pipelineStatisticsQuery;
     r.occlusion_query_precise = chain.base.features.occlusionQueryPrecise;
+    r.fragment_stores_and_atomics = chain.base.features.fragmentStoresAndAtomics;
     r.descriptor_indexing = chain.v12.runtimeDescriptorArray;
 }
 

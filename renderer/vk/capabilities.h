@@ -57,7 +57,8 @@ struct DeviceReport {
     uint32_t timestamp_valid_bits = 0;  // of the graphics+compute queue family
     bool pipeline_statistics = false;
     bool occlusion_query_precise = false;
-    bool descriptor_indexing = false;  // runtimeDescriptorArray (lavapipe 22.3: no)
+    bool fragment_stores_and_atomics = false;  // exact per-pixel fragment counts (count images)
+    bool descriptor_indexing = false;          // runtimeDescriptorArray (lavapipe 22.3: no)
     uint64_t device_local_bytes = 0;
     uint32_t queue_family = UINT32_MAX;  // first graphics+compute family
 };

@@ -204,6 +204,13 @@ void Context::create_device() {
     // Optional features: on when present, so the graph can measure with them later.
     features.base.features.pipelineStatisticsQuery = report_.pipeline_statistics;
     features.base.features.occlusionQueryPrecise = report_.occlusion_query_precise;
+    // Storage images of R8 / R16F / RG16F (the screen-space compute passes write AO and contact
+    // shadows as such): optional in Vulkan, present on lavapipe and every desktop driver.
+    VkPhysicalDeviceFeatures supported{};
+    vkGetPhysicalDeviceFeatures(physical_device_, &supported);
+    features.base.features.shaderStorageImageExtendedFormats =
+        supported.shaderStorageImageExtendedFormats;
+    features.base.features.fragmentStoresAndAtomics = report_.fragment_stores_and_atomics;
 
     auto info = make<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features.base);
     info.queueCreateInfoCount = 1;

@@ -1,18 +1,10 @@
-// Descriptor layout shared by the renderer's scene passes. Must match renderer/gpu_scene.h
-// (GpuMaterial, GpuInstance) and renderer/renderer.cpp (FrameUniforms).
+// Descriptor layout shared by the passes that draw scene meshes: set 0 is the frame
+// (common/frame.glsl) plus the instance buffer, set 1 one material. Must match
+// renderer/gpu_scene.h (GpuMaterial, GpuInstance) and renderer/passes/frame.h (FrameUniforms).
 #ifndef DS_BINDINGS_GLSL
 #define DS_BINDINGS_GLSL
 
-// Set 0: per frame.
-layout(set = 0, binding = 0, std140) uniform FrameUniforms {
-    mat4 view_projection;
-    vec4 camera_position;  // xyz, world space
-    vec4 sun_direction;    // xyz: unit vector towards the sun
-    vec4 sun_radiance;     // rgb: colour * intensity
-    vec4 sky_ambient;      // rgb: hemispherical ambient from above
-    vec4 ground_ambient;   // rgb: hemispherical ambient from below
-    vec4 exposure;         // x: linear multiplier before tonemapping
-} frame;
+#include "frame.glsl"
 
 // Model and normal matrix (transpose(inverse(mat3(model))), precomputed on the CPU so no
 // vertex inverts a matrix). Indexed by gl_InstanceIndex, which already includes firstInstance.
@@ -26,6 +18,7 @@ layout(set = 0, binding = 1, std430) readonly buffer Instances {
 
 // Set 1: per material (no descriptor indexing on lavapipe: one small set per material).
 const uint kMaterialHasNormalMap = 1u;
+const uint kMaterialAlphaMask = 2u;  // glTF alphaMode MASK
 
 layout(set = 1, binding = 0, std140) uniform MaterialUniforms {
     vec4 base_color_factor;
@@ -43,5 +36,10 @@ layout(set = 1, binding = 2) uniform sampler2D metallic_roughness_texture;  // G
 layout(set = 1, binding = 3) uniform sampler2D normal_texture;
 layout(set = 1, binding = 4) uniform sampler2D occlusion_texture;  // R
 layout(set = 1, binding = 5) uniform sampler2D emissive_texture;
+
+// The alpha_cutoff setting overrides every material's own cutoff when it is a number.
+float alpha_cutoff() {
+    return frame.alpha.x >= 0.0 ? frame.alpha.x : material.alpha_cutoff;
+}
 
 #endif

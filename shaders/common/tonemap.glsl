@@ -1,5 +1,5 @@
-// Exposure + tonemapping. The colour attachment is _SRGB, so shaders write linear values
-// and the hardware encodes; renderer.cpp computes the sky clear colour with the same curve.
+// Exposure + tonemapping. The tonemap pass writes an _SRGB target, so it outputs linear
+// values and the hardware encodes.
 #ifndef DS_TONEMAP_GLSL
 #define DS_TONEMAP_GLSL
 

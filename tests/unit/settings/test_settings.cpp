@@ -87,3 +87,30 @@ TEST(Settings, RangeTextDescribesEachType) {
     EXPECT_EQ(reg.at("overdraw_layers").type_name(), "int");
     EXPECT_THROW(reg.at("nope"), UsageError);
 }
+
+TEST(Settings, FloatWithKeyword) {
+    Settings s;
+    EXPECT_EQ(s.get("alpha_cutoff"), "material");
+    EXPECT_THROW(s.get_float("alpha_cutoff"), UsageError);
+    s.set("alpha_cutoff", "0.25");
+    EXPECT_FLOAT_EQ(s.get_float("alpha_cutoff"), 0.25f);
+    s.set("alpha_cutoff", "material");
+    EXPECT_EQ(s.get("alpha_cutoff"), "material");
+    EXPECT_NE(usage_error_of([&] { s.set("alpha_cutoff", "1.5"); }).find("material|0..1"),
+              std::string::npos);
+    EXPECT_EQ(SettingsRegistry::instance().at("alpha_cutoff").range_text(), "material|0..1");
+}
+
+TEST(Settings, EnumsAndBools) {
+    Settings s;
+    EXPECT_TRUE(s.get_bool("prepass"));
+    s.set("prepass", "false");
+    EXPECT_EQ(s.get("prepass"), "off");
+    EXPECT_EQ(s.get("depth_compare"), "equal");
+    s.set("depth_compare", "greater_or_equal");
+    EXPECT_NE(usage_error_of([&] {
+                  s.set("depth_compare", "less");
+              }).find("not one of equal|greater_or_equal"),
+              std::string::npos);
+    EXPECT_NE(usage_error_of([&] { s.set("sky", "maybe"); }).find("on|off"), std::string::npos);
+}

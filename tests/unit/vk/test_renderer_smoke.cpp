@@ -1,5 +1,6 @@
-// Smoke render on the real device (lavapipe in CI) with validation on: a ground plane and a
-// textured cube, checked against facts computed from the scene itself.
+// Smoke render of the seed frame on the real device (lavapipe in CI) with validation on: a
+// ground plane and a textured cube, checked against facts computed from the scene itself.
+#define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 
@@ -157,15 +158,24 @@ size_t non_sky_pixels(const FrameResult& f, uint32_t sky) {
     return n;
 }
 
-void check_frame(const FrameResult& f, const scene::Scene& s, uint32_t sky) {
+// `background`: the clear colour of a frame rendered with sky=off.
+void check_frame(const FrameResult& f, const scene::Scene& s, uint32_t background) {
     ASSERT_EQ(f.rgba8.size(), size_t(f.width) * f.height * 4);
     const size_t expected = expected_coverage(s, f.width, f.height);
-    const size_t actual = non_sky_pixels(f, sky);
     // Edge pixels may go either way between the two rasterizers: allow 2% of the image.
-    EXPECT_NEAR(double(actual), double(expected), 0.02 * f.width * f.height)
+    const double tolerance = 0.02 * f.width * f.height;
+    ASSERT_TRUE(f.covered_pixels);
+    EXPECT_NEAR(double(*f.covered_pixels), double(expected), tolerance)
         << f.width << "x" << f.height;
+    EXPECT_NEAR(double(non_sky_pixels(f, background)), double(expected), tolerance);
     EXPECT_GT(expected, size_t(f.width) * f.height / 5);       // the scene fills a good part
     EXPECT_LT(expected, size_t(f.width) * f.height * 9 / 10);  // and sky remains
+}
+
+Settings sky_off() {
+    Settings s;
+    s.set("sky", "off");
+    return s;
 }
 
 TEST(RendererSmoke, GroundAndCube) {
@@ -174,16 +184,14 @@ TEST(RendererSmoke, GroundAndCube) {
     options.validate = true;
     Renderer renderer(options);
     renderer.set_scene(s);
-    const Settings settings;
+    const Settings settings = sky_off();  // a uniform background: coverage by colour
 
     const FrameResult a = renderer.render(s.camera, settings, 128, 96);
     ASSERT_EQ(a.width, 128u);
     ASSERT_EQ(a.height, 96u);
-    stbi_write_png("/tmp/ds_smoke.png", int(a.width), int(a.height), 4, a.rgba8.data(),
-                   int(a.width * 4));
     std::printf("smoke 128x96: gpu %.3f ms, cpu %.3f ms\n", a.gpu_ms, a.cpu_ms);
 
-    // Top-left is sky: opaque and blue-ish (the clear colour is the tonemapped sky).
+    // Top-left is background: opaque and blue-ish (forward's clear colour, tonemapped).
     const uint32_t sky = pixel(a, 0, 0);
     const uint8_t* sp = &a.rgba8[0];
     EXPECT_EQ(sp[3], 255);
@@ -196,6 +204,13 @@ TEST(RendererSmoke, GroundAndCube) {
     EXPECT_GT(colours.size(), 50u) << "a lit, textured scene has many distinct colours";
     EXPECT_GT(a.gpu_ms, 0.0);
 
+    // The default frame (procedural sky): the same coverage, a sky that is blue at the top.
+    const FrameResult with_sky = renderer.render(s.camera, Settings{}, 128, 96);
+    stbi_write_png("/tmp/ds_smoke.png", int(with_sky.width), int(with_sky.height), 4,
+                   with_sky.rgba8.data(), int(with_sky.width * 4));
+    EXPECT_EQ(with_sky.covered_pixels, a.covered_pixels);
+    EXPECT_GT(with_sky.rgba8[2], with_sky.rgba8[0]);
+
     const FrameResult b = renderer.render(s.camera, settings, 128, 96);
     EXPECT_TRUE(a.rgba8 == b.rgba8) << "same input must give byte-identical pixels";
 
@@ -207,9 +222,10 @@ TEST(RendererSmoke, GroundAndCube) {
     const FrameResult again = renderer.render(s.camera, settings, 128, 96);
     EXPECT_TRUE(a.rgba8 == again.rgba8) << "resizing back must not change the image";
 
-    // A second scene replaces the first; an empty scene draws only sky.
+    // A second scene replaces the first; an empty scene draws only background.
     renderer.set_scene(scene::Scene{});
     const FrameResult empty = renderer.render(s.camera, settings, 32, 24);
+    EXPECT_EQ(empty.covered_pixels, 0u);
     for (uint32_t y = 0; y < empty.height; ++y)
         for (uint32_t x = 0; x < empty.width; ++x) ASSERT_EQ(pixel(empty, x, y), sky);
     EXPECT_THROW(renderer.render(s.camera, settings, 0, 24), ds::Error);
@@ -292,7 +308,7 @@ TEST(RendererSmoke, MaskAndBlend) {
     options.validate = true;
     Renderer renderer(options);
     renderer.set_scene(s);
-    const FrameResult f = renderer.render(s.camera, Settings{}, 160, 120);
+    const FrameResult f = renderer.render(s.camera, sky_off(), 160, 120);
     const uint32_t sky = pixel(f, 0, 0);
     auto at = [&](glm::vec3 p) {
         const glm::ivec2 q = project(s, f.width, f.height, p);
@@ -311,7 +327,7 @@ TEST(RendererSmoke, MaskAndBlend) {
     const uint32_t both = at({1.6f, 0.2f, 0.5f});
     EXPECT_GT(channel(both, 0), channel(both, 1)) << "blend order must be back to front";
 
-    const FrameResult again = renderer.render(s.camera, Settings{}, 160, 120);
+    const FrameResult again = renderer.render(s.camera, sky_off(), 160, 120);
     EXPECT_TRUE(f.rgba8 == again.rgba8);
     stbi_write_png("/tmp/ds_smoke_alpha.png", int(f.width), int(f.height), 4, f.rgba8.data(),
                    int(f.width * 4));

@@ -1,0 +1,78 @@
+#include "renderer/passes/ao_spatial.h"
+
+#include "renderer/vk/barrier.h"
+
+namespace ds::passes {
+
+using graph::Access;
+
+namespace {
+
+ComputeKernel make_kernel(const PassServices& services) {
+    return ComputeKernel(services, AoSpatialPass::kShader,
+                         {KernelBinding::Sampled, KernelBinding::Sampled, KernelBinding::Sampled,
+                          KernelBinding::Storage},
+                         sizeof(AoSpatialPass::Params));
+}
+
+}  // namespace
+
+AoSpatialPass::AoSpatialPass(const PassServices& services)
+    : horizontal_(make_kernel(services)), vertical_(make_kernel(services)) {
+    vk::DestroyList nothing_in_flight;
+    rebuild_pipelines(nothing_in_flight);
+}
+
+void AoSpatialPass::rebuild_pipelines(vk::DestroyList& retired) {
+    // Compile both before replacing either, so a failure leaves a matching pair.
+    ComputeKernel::Prepared h = horizontal_.prepare({{"VERTICAL", "0"}});
+    ComputeKernel::Prepared v = vertical_.prepare({{"VERTICAL", "1"}});
+    horizontal_.install(std::move(h), retired);
+    vertical_.install(std::move(v), retired);
+}
+
+void AoSpatialPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
+    if (!res.ao_raw.valid()) return;
+    struct Data {
+        graph::ImageHandle depth, normals, raw, mid, out;
+    };
+    const Data& data = graph.add_pass<Data>(
+        "ao_spatial",
+        [&](graph::PassBuilder& b, Data& d) {
+            const VkExtent2D full = b.output_extent(), raw = b.extent(res.ao_raw);
+            d.mid = b.create_image(kIntermediateName,
+                                   {.format = kIntermediateFormat,
+                                    .size = graph::ImageSize::fixed(full.width, raw.height),
+                                    .semantic = graph::Semantic::AO});
+            d.out = b.create_image("ao_filtered", {.format = kFormat,
+                                                   .size = graph::ImageSize::relative(1.0f),
+                                                   .semantic = graph::Semantic::AO});
+            b.read(res.frame_uniforms, Access::UniformRead);
+            d.depth = b.read(res.depth, Access::Sampled);
+            d.normals = b.read(res.normals, Access::Sampled);
+            d.raw = b.read(res.ao_raw, Access::Sampled);
+            b.write(d.mid, Access::StorageWrite);
+            b.read(d.mid, Access::Sampled);
+            b.write(d.out, Access::StorageWrite);
+        },
+        [this, frame_set = in.frame_set, frame = in.frame_number](graph::PassContext& ctx,
+                                                                  const Data& d) {
+            const BoundImage depth{ctx.view(d.depth), ctx.layout(d.depth)};
+            const BoundImage normals{ctx.view(d.normals), ctx.layout(d.normals)};
+            const BoundImage mid{ctx.view(d.mid), ctx.layout(d.mid)};  // GENERAL: both uses
+            const BoundImage first[] = {depth, normals, {ctx.view(d.raw), ctx.layout(d.raw)}, mid};
+            horizontal_.dispatch(ctx.cmd(), frame_set, frame, first, &params_, ctx.extent(d.mid));
+            // The graph orders passes; inside this one, the vertical dispatch reads what the
+            // horizontal one wrote.
+            vk::memory_barrier(ctx.cmd(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                               VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                               VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+            const BoundImage second[] = {depth, normals, mid, {ctx.view(d.out), ctx.layout(d.out)}};
+            vertical_.dispatch(ctx.cmd(), frame_set, frame, second, &params_, ctx.extent(d.out));
+        },
+        graph::PassKind::Compute);
+    res.ao_filtered = data.out;
+}
+
+}  // namespace ds::passes

@@ -1,0 +1,43 @@
+#pragma once
+// Edge-aware spatial filter of GTAO (shaders/ao_spatial.comp): ao_raw -> ao_filtered, R8_UNORM
+// at full resolution. A separable 5-tap tent (two dispatches through an intermediate image)
+// weighted by tangent-plane distance and normal agreement: removes gtao's 4x4 rotation
+// pattern without bleeding across depth edges, and upsamples a reduced-resolution ao_raw on
+// the way.
+#include "renderer/graph/graph.h"
+#include "renderer/passes/compute_kernel.h"
+#include "renderer/passes/frame.h"
+
+namespace ds::passes {
+
+class AoSpatialPass {
+  public:
+    struct Params {
+        float plane_tolerance = 0.02f;  // tangent-plane distance / view distance of weight 1/e
+    };
+
+    static constexpr const char* kShader = "ao_spatial.comp";
+    static constexpr VkFormat kFormat = VK_FORMAT_R8_UNORM;
+    // The horizontal result: full width x ao_raw's height, R16F like ao_raw (values over 1).
+    static constexpr const char* kIntermediateName = "ao_spatial_h";
+    static constexpr VkFormat kIntermediateFormat = VK_FORMAT_R16_SFLOAT;
+
+    explicit AoSpatialPass(const PassServices& services);  // builds the pipelines
+    // Fail-safe: both directions compile first; on any error both keep their pipelines.
+    void rebuild_pipelines(vk::DestroyList& retired);
+
+    // Declares "ao_spatial" when resources.ao_raw is valid (gtao ran): reads depth, normals,
+    // ao_raw (sampled), the frame uniforms; creates and writes resources.ao_filtered (and its
+    // intermediate, which the pass writes and then samples: GENERAL layout, with a barrier
+    // between the two dispatches).
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& resources);
+
+    Params& params() { return params_; }
+
+  private:
+    ComputeKernel horizontal_;
+    ComputeKernel vertical_;
+    Params params_;
+};
+
+}  // namespace ds::passes

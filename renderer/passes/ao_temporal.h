@@ -1,0 +1,50 @@
+#pragma once
+// Temporal accumulation of the filtered AO (shaders/ao_temporal.comp): ao_filtered + the
+// graph history "ao_history" -> FrameResources::ao (R8_UNORM, what forward reads) and the next
+// history (R16G16_SFLOAT: AO, view distance). Reprojects with previous_view_projection, drops
+// history taps of another surface (distance mismatch), blends the rest with history_weight.
+// When the graph reports the history invalid (first frame, resize, camera cut) the output is
+// the current value.
+#include "renderer/graph/graph.h"
+#include "renderer/passes/compute_kernel.h"
+#include "renderer/passes/frame.h"
+
+namespace ds::passes {
+
+class AoTemporalPass {
+  public:
+    struct Params {
+        float history_weight = 0.9f;    // share of the history in the blend
+        float depth_tolerance = 0.05f;  // accepted relative distance mismatch of a history tap
+    };
+
+    static constexpr const char* kShader = "ao_temporal.comp";
+    static constexpr const char* kHistoryName = "ao_history";
+    static constexpr VkFormat kFormat = VK_FORMAT_R8_UNORM;
+    static constexpr VkFormat kHistoryFormat = VK_FORMAT_R16G16_SFLOAT;
+
+    explicit AoTemporalPass(const PassServices& services);  // builds the pipeline
+    void rebuild_pipelines(vk::DestroyList& retired);       // fail-safe (ComputeKernel::rebuild)
+
+    // Declares "ao_temporal" when resources.ao_filtered is valid: reads depth, ao_filtered and
+    // the previous history (sampled), the frame uniforms; writes resources.ao and the current
+    // history. The graph swaps the history pair after the frame.
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& resources);
+
+    Params& params() { return params_; }
+    // Whether the last recorded frame blended with a history (false: output = current).
+    bool last_history_valid() const { return last_history_valid_; }
+
+  private:
+    struct Push {  // std430 twin of ao_temporal.comp's Params
+        uint32_t history_valid;
+        float history_weight;
+        float depth_tolerance;
+    };
+
+    ComputeKernel kernel_;
+    Params params_;
+    bool last_history_valid_ = false;
+};
+
+}  // namespace ds::passes

@@ -1,0 +1,143 @@
+#include "renderer/passes/compute_kernel.h"
+
+#include <utility>
+
+#include "renderer/common/error.h"
+#include "renderer/vk/check.h"
+#include "renderer/vk/context.h"
+
+namespace ds::passes {
+namespace {
+
+VkDescriptorType descriptor_type(KernelBinding binding) {
+    return binding == KernelBinding::Storage ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
+                                             : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+}
+
+// The shaders read with texelFetch (exact texels, their own bounds checks); a combined image
+// sampler still needs a sampler.
+vk::Sampler nearest_sampler(vk::Context& context) {
+    auto info = vk::make<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    info.magFilter = info.minFilter = VK_FILTER_NEAREST;
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.addressModeU = info.addressModeV = info.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.maxLod = 0.0f;
+    return vk::Sampler(context, info, "screen-space nearest");
+}
+
+vk::Pipeline create_compute_pipeline(vk::Context& context, VkPipelineLayout layout,
+                                     const std::vector<uint32_t>& spirv, const char* name) {
+    VkDevice device = context.device();
+    auto module_info =
+        vk::make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+    module_info.codeSize = spirv.size() * sizeof(uint32_t);
+    module_info.pCode = spirv.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    vk::check(vkCreateShaderModule(device, &module_info, nullptr, &module), "vkCreateShaderModule");
+
+    auto info =
+        vk::make<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    info.stage = vk::make<VkPipelineShaderStageCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module;
+    info.stage.pName = "main";
+    info.layout = layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    const VkResult result =
+        vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+    vkDestroyShaderModule(device, module, nullptr);  // the pipeline keeps what it needs
+    vk::check(result, "vkCreateComputePipelines");
+    context.set_name(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
+    return vk::Pipeline(device, pipeline);
+}
+
+}  // namespace
+
+ComputeKernel::ComputeKernel(const PassServices& services, std::string shader,
+                             std::vector<KernelBinding> bindings, uint32_t push_constant_size)
+    : context_(services.context),
+      compiler_(services.compiler),
+      shader_(std::move(shader)),
+      bindings_(std::move(bindings)),
+      push_constant_size_(push_constant_size) {
+    if (services.frame_layout == VK_NULL_HANDLE)
+        throw Error("compute pass " + shader_ + ": no frame set layout");
+    nearest_ = nearest_sampler(context_);
+
+    std::vector<VkDescriptorSetLayoutBinding> layout_bindings;
+    uint32_t samplers = 0, storage = 0;
+    for (uint32_t i = 0; i < bindings_.size(); ++i) {
+        layout_bindings.push_back(
+            vk::layout_binding(i, descriptor_type(bindings_[i]), VK_SHADER_STAGE_COMPUTE_BIT));
+        (bindings_[i] == KernelBinding::Storage ? storage : samplers) += 1;
+    }
+    set_layout_ = vk::DescriptorSetLayout(context_, layout_bindings, shader_.c_str());
+
+    constexpr uint32_t kSets = vk::FrameRing::kFramesInFlight;
+    std::vector<VkDescriptorPoolSize> sizes;
+    if (samplers) sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, samplers * kSets});
+    if (storage) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, storage * kSets});
+    pool_ = vk::DescriptorPool(context_, kSets, sizes, shader_.c_str());
+    for (VkDescriptorSet& set : sets_) set = pool_.allocate(set_layout_.handle());
+
+    const VkDescriptorSetLayout sets[] = {services.frame_layout, set_layout_.handle()};
+    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, push_constant_size_};
+    layout_ = vk::PipelineLayout(
+        context_, sets,
+        push_constant_size_ ? std::span(&push, 1) : std::span<const VkPushConstantRange>(),
+        shader_.c_str());
+}
+
+ComputeKernel::Prepared ComputeKernel::prepare(const std::vector<shader::Define>& defines) const {
+    // SPIR-V 1.5 (the compiler's target) states the workgroup size as a literal LocalSize.
+    const std::vector<uint32_t> spirv =
+        compiler_.compile(shader_, shader::Stage::Compute, defines).spirv;
+    return {create_compute_pipeline(context_, layout_.handle(), spirv, shader_.c_str())};
+}
+
+void ComputeKernel::install(Prepared prepared, vk::DestroyList& retired) {
+    if (pipeline_) retired.defer(std::move(pipeline_));
+    pipeline_ = std::move(prepared.pipeline);
+}
+
+void ComputeKernel::write_set(VkDescriptorSet set, std::span<const BoundImage> images) const {
+    if (images.size() != bindings_.size())
+        throw Error("compute pass " + shader_ + ": " + std::to_string(images.size()) +
+                    " images for " + std::to_string(bindings_.size()) + " bindings");
+    std::vector<VkDescriptorImageInfo> infos(images.size());
+    std::vector<VkWriteDescriptorSet> writes(images.size());
+    for (uint32_t i = 0; i < images.size(); ++i) {
+        const KernelBinding kind = bindings_[i];
+        const VkSampler sampler =
+            kind == KernelBinding::Storage ? VK_NULL_HANDLE : nearest_.handle();
+        infos[i] = {sampler, images[i].view, images[i].layout};
+        writes[i] = vk::make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i].dstSet = set;
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = descriptor_type(kind);
+        writes[i].pImageInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(context_.device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
+}
+
+void ComputeKernel::dispatch(VkCommandBuffer cmd, VkDescriptorSet frame_set, uint64_t frame_number,
+                             std::span<const BoundImage> images, const void* push_constants,
+                             VkExtent2D extent) {
+    if (!pipeline_) throw Error("compute pass " + shader_ + ": no pipeline (rebuild() first)");
+    // The set of frame N is reused by frame N + kFramesInFlight, after N's fence.
+    const VkDescriptorSet set = sets_[frame_number % sets_.size()];
+    write_set(set, images);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.handle());
+    const VkDescriptorSet sets[] = {frame_set, set};
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle(), 0, 2, sets, 0,
+                            nullptr);
+    if (push_constant_size_)
+        vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                           push_constant_size_, push_constants);
+    vkCmdDispatch(cmd, group_count(extent.width), group_count(extent.height), 1);
+}
+
+}  // namespace ds::passes

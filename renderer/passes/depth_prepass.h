@@ -1,0 +1,61 @@
+#pragma once
+// depth_prepass (seed 000): fills the scene depth before anything is lit, and writes the
+// world-space shading normal (A2B10G10R10, n * 0.5 + 0.5, normal-mapped) and the roughness
+// (R8) that forward, GTAO and contact shadows read. Depth: D32, cleared to "far", the closer
+// test (GREATER with reverse-Z), writes on.
+//
+// Two pipelines share the invariant vertex shader: opaque first (no discard: early-Z is
+// guaranteed), then MASK (alpha test before any other texture read). masked_split=off draws
+// all geometry with one pipeline that has the discard, to show what losing early-Z costs.
+// BLEND materials are not drawn here. Cull mode follows each draw group.
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/graph/graph.h"
+#include "renderer/passes/frame.h"
+#include "renderer/passes/pass_util.h"
+#include "renderer/vk/descriptors.h"
+#include "renderer/vk/destroy_list.h"
+#include "renderer/vk/pipeline.h"
+
+namespace ds::passes {
+
+class DepthPrepass {
+  public:
+    static constexpr const char* kName = "depth_prepass";
+    static constexpr VkFormat kNormalFormat = VK_FORMAT_A2B10G10R10_UNORM_PACK32;
+    static constexpr VkFormat kRoughnessFormat = VK_FORMAT_R8_UNORM;
+
+    explicit DepthPrepass(const PassServices& services);
+
+    void rebuild_pipelines(vk::DestroyList& retired);
+    // Writes res.depth (which the renderer provides); creates res.normals and res.roughness.
+    // Counts into res.prepass_counts when it is valid.
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
+
+  private:
+    // Variant key: the alpha test (bits 0-1, the shader's ALPHA_MASK), counting (bit 2).
+    enum AlphaTest : uint32_t { kOpaque = 0, kMask = 1, kUnsplit = 2 };
+    static constexpr uint32_t kCounting = 4;
+
+    struct Draw {
+        VkPipeline opaque = VK_NULL_HANDLE;  // unsplit: the one pipeline
+        VkPipeline mask = VK_NULL_HANDLE;    // unsplit: null
+        VkDescriptorSet counts = VK_NULL_HANDLE;
+    };
+
+    ShaderStages compile(uint32_t key) const;
+    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+    void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
+                Draw draw);
+
+    PassServices services_;
+    vk::DescriptorSetLayout empty_layout_;
+    vk::DescriptorSetLayout count_layout_;
+    vk::PipelineLayout layout_;
+    FrameDescriptorPool count_sets_;
+    PipelineVariants pipelines_;
+};
+
+}  // namespace ds::passes

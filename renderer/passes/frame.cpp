@@ -1,0 +1,22 @@
+#include "renderer/passes/frame.h"
+
+namespace ds::passes {
+
+FrameOptions FrameOptions::from(const Settings& s) {
+    FrameOptions o;
+    o.prepass = s.get_bool("prepass");
+    o.depth_equal = s.get("depth_compare") == "equal";
+    o.masked_split = s.get_bool("masked_split");
+    if (s.get("alpha_cutoff") != "material") o.alpha_cutoff = s.get_float("alpha_cutoff");
+    o.shadows = s.get_bool("shadows");
+    // GTAO and contact shadows read the prepass depth (and normals): no prepass, no effect.
+    o.gtao = s.get_bool("gtao") && o.prepass;
+    o.contact_shadows = s.get_bool("contact_shadows") && o.prepass;
+    o.sky = s.get_bool("sky");
+    o.invariant = s.get_bool("invariant");
+    o.reverse_z = s.get_bool("reverse_z");
+    o.count_fragments = s.get_bool("count_fragments");
+    return o;
+}
+
+}  // namespace ds::passes

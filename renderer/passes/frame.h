@@ -1,0 +1,114 @@
+#pragma once
+// What every pass of the seed frame shares: the per-frame uniforms, the settings that shape the
+// frame (read once per frame from the registry), the graph handles passes meet through, and
+// the services a pass is built with. Passes never include each other (DESIGN.md); they meet
+// only here and in graph resources.
+#include <cstdint>
+#include <optional>
+
+#include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
+
+#include "renderer/graph/types.h"
+#include "renderer/settings/settings.h"
+
+namespace ds {
+class GpuScene;
+namespace shader {
+class Compiler;
+}
+namespace vk {
+class Context;
+}
+}  // namespace ds
+
+namespace ds::passes {
+
+// std140 twin of FrameUniforms in shaders/common/frame.glsl (set 0, binding 0).
+struct FrameUniforms {
+    glm::mat4 view_projection{1.0f};  // the one expression both prepass and forward use
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::mat4 inverse_view_projection{1.0f};
+    glm::mat4 inverse_projection{1.0f};
+    glm::mat4 previous_view_projection{1.0f};         // last frame's, for temporal reprojection
+    glm::mat4 sun_view_projection{1.0f};              // world -> shadow map clip space
+    glm::vec4 camera_position{0.0f};                  // xyz world
+    glm::vec4 sun_direction{0.0f, 1.0f, 0.0f, 0.0f};  // xyz unit, towards the sun
+    glm::vec4 sun_radiance{0.0f};                     // rgb colour * intensity
+    glm::vec4 sky_ambient{0.0f};                      // rgb hemispherical ambient, above
+    glm::vec4 ground_ambient{0.0f};                   // rgb hemispherical ambient, below
+    glm::vec4 viewport{0.0f};                         // xy output size in pixels, zw 1 / size
+    glm::vec4 depth_params{0.0f};              // x znear, y zfar, z 1 = reverse-Z, w exposure
+    glm::vec4 alpha{-1.0f, 0.0f, 0.0f, 0.0f};  // x global alpha cutoff, < 0: each material's
+    glm::uvec4 flags{0u};                      // x kFrame* bits, y frame number
+};
+static_assert(sizeof(FrameUniforms) == 7 * 64 + 9 * 16);
+
+// FrameUniforms::flags.x bits (mirrored in shaders/common/frame.glsl).
+inline constexpr uint32_t kFrameShadows = 1u << 0;         // shadow map valid
+inline constexpr uint32_t kFrameAO = 1u << 1;              // AO image holds GTAO (else white)
+inline constexpr uint32_t kFrameContactShadows = 1u << 2;  // contact image valid (else 1)
+inline constexpr uint32_t kFrameReverseZ = 1u << 3;
+
+// The settings of one frame, parsed once (names and meanings: the registry's help text).
+struct FrameOptions {
+    bool prepass = true;
+    bool depth_equal = true;  // depth_compare=equal (else greater_or_equal; prepass on)
+    bool masked_split = true;
+    std::optional<float> alpha_cutoff;  // none: each material's own
+    bool shadows = true;
+    bool gtao = true;             // effective: also needs the prepass
+    bool contact_shadows = true;  // effective: also needs the prepass
+    bool sky = true;
+    bool invariant = true;
+    bool reverse_z = true;
+    bool count_fragments = false;
+
+    static FrameOptions from(const Settings& settings);
+    // The depth test that keeps the nearer fragment, and the clear value for "far".
+    VkCompareOp closer() const { return reverse_z ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS; }
+    VkCompareOp closer_or_equal() const {
+        return reverse_z ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
+    }
+    float far_depth() const { return reverse_z ? 0.0f : 1.0f; }
+};
+
+// Graph handles the passes of one frame meet through; a pass fills what it writes.
+struct FrameResources {
+    graph::BufferHandle frame_uniforms;  // FrameUniforms (imported)
+    graph::ImageHandle shadow_map;       // D32, absolute size
+    graph::ImageHandle depth;            // D32 scene depth (reverse-Z unless reverse_z=off)
+    graph::ImageHandle normals;          // A2B10G10R10, n * 0.5 + 0.5
+    graph::ImageHandle roughness;        // R8
+    graph::ImageHandle ao_raw;           // gtao output
+    graph::ImageHandle ao_filtered;      // ao_spatial output
+    graph::ImageHandle ao;               // ao_temporal output (what forward reads)
+    graph::ImageHandle contact_shadows;  // R8, 1 = lit
+    graph::ImageHandle hdr;              // R16G16B16A16_SFLOAT scene colour
+    graph::ImageHandle final_image;      // R8G8B8A8_SRGB (imported; tonemap writes it)
+    // With count_fragments=on: per-pixel u32 counts of fragments that ran the shader.
+    graph::ImageHandle prepass_counts;
+    graph::ImageHandle forward_counts;
+    graph::ImageHandle transparent_counts;
+};
+
+// Built once per Renderer; what a pass needs to create pipelines and record.
+struct PassServices {
+    vk::Context& context;
+    shader::Compiler& compiler;
+    VkDescriptorSetLayout frame_layout;     // set 0: FrameUniforms + instances
+    VkDescriptorSetLayout material_layout;  // set 1: one per material (gpu_scene.h)
+    VkFormat depth_format;
+};
+
+// Per-frame inputs beyond the graph handles.
+struct FrameInputs {
+    const GpuScene* scene = nullptr;
+    VkDescriptorSet frame_set = VK_NULL_HANDLE;  // set 0 for this frame
+    FrameOptions options;
+    glm::vec3 camera_position{0.0f};
+    uint64_t frame_number = 0;
+};
+
+}  // namespace ds::passes

@@ -1,0 +1,112 @@
+#include "renderer/passes/scene_draw.h"
+
+#include <algorithm>
+
+#include "renderer/gpu_scene.h"
+#include "renderer/vk/functions.h"
+
+namespace ds::passes {
+
+vk::GraphicsPipelineBuilder scene_pipeline_builder(VkPipelineLayout layout,
+                                                   std::span<const uint32_t> vert,
+                                                   std::span<const uint32_t> frag,
+                                                   VertexInputs inputs) {
+    vk::GraphicsPipelineBuilder b;
+    b.shader(VK_SHADER_STAGE_VERTEX_BIT, vert);
+    if (!frag.empty()) b.shader(VK_SHADER_STAGE_FRAGMENT_BIT, frag);
+    b.vertex_binding(0, sizeof(scene::Vertex))
+        .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position))
+        .vertex_attribute(2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0))
+        .layout(layout);
+    if (inputs == VertexInputs::All) {
+        b.vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal))
+            .vertex_attribute(3, 0, VK_FORMAT_R32G32B32A32_SFLOAT,
+                              offsetof(scene::Vertex, tangent));
+    }
+    return b;
+}
+
+VkCullModeFlags cull_mode(bool double_sided) {
+    return double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+}
+
+void bind_geometry(VkCommandBuffer cmd, const GpuScene& scene) {
+    const VkDeviceSize zero = 0;
+    const VkBuffer vertices = scene.vertex_buffer();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &zero);
+    vkCmdBindIndexBuffer(cmd, scene.index_buffer(), 0, VK_INDEX_TYPE_UINT32);
+}
+
+namespace {
+
+// Binds set 1 when the material differs from the one bound last.
+void bind_material(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
+                   uint32_t material, uint32_t& bound) {
+    if (material == bound) return;
+    bound = material;
+    const VkDescriptorSet set = scene.material_set(material);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &set, 0, nullptr);
+}
+
+}  // namespace
+
+DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
+                       std::span<const scene::AlphaMode> modes,
+                       std::optional<VkCullModeFlags> cull) {
+    DrawCounts counts;
+    uint32_t material = UINT32_MAX;
+    for (const scene::DrawGroup& g : scene.draw_groups()) {
+        if (std::find(modes.begin(), modes.end(), g.alpha_mode) == modes.end()) continue;
+        const GpuMesh& mesh = scene.meshes()[g.mesh];
+        if (g.instance_count == 0 || mesh.index_count == 0) continue;
+        bind_material(cmd, scene, layout, mesh.material, material);
+        vk::fn().cmd_set_cull_mode(cmd, cull.value_or(cull_mode(g.double_sided)));
+        // gl_InstanceIndex = first_instance + i indexes the instance buffer directly.
+        vkCmdDrawIndexed(cmd, mesh.index_count, g.instance_count, mesh.first_index,
+                         mesh.vertex_offset, g.first_instance);
+        ++counts.draws;
+        counts.instances += g.instance_count;
+    }
+    return counts;
+}
+
+std::vector<BlendDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera) {
+    struct Item {
+        float distance;
+        BlendDraw draw;
+    };
+    std::vector<Item> items;
+    const auto& centers = scene.instance_centers();
+    for (const scene::DrawGroup& g : scene.draw_groups()) {
+        if (g.alpha_mode != scene::AlphaMode::Blend) continue;
+        if (scene.meshes()[g.mesh].index_count == 0) continue;
+        for (uint32_t i = g.first_instance; i < g.first_instance + g.instance_count; ++i)
+            items.push_back({glm::distance(centers[i], camera), {i, &g}});
+    }
+    std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
+        return a.distance != b.distance ? a.distance > b.distance
+                                        : a.draw.instance < b.draw.instance;
+    });
+    std::vector<BlendDraw> draws;
+    draws.reserve(items.size());
+    for (const Item& item : items) draws.push_back(item.draw);
+    return draws;
+}
+
+DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
+                       std::span<const BlendDraw> draws) {
+    DrawCounts counts;
+    uint32_t material = UINT32_MAX;
+    for (const BlendDraw& d : draws) {
+        const GpuMesh& mesh = scene.meshes()[d.group->mesh];
+        bind_material(cmd, scene, layout, mesh.material, material);
+        vk::fn().cmd_set_cull_mode(cmd, cull_mode(d.group->double_sided));
+        vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, mesh.vertex_offset,
+                         d.instance);
+        ++counts.draws;
+        ++counts.instances;
+    }
+    return counts;
+}
+
+}  // namespace ds::passes

@@ -1,0 +1,63 @@
+#pragma once
+// Drawing scene meshes, shared by the passes that do (shadow, depth_prepass, forward,
+// transparent): the vertex layout, instanced draw groups (seed 000: one draw per group,
+// cull mode per group), BLEND instances back to front.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
+
+#include "renderer/scene/scene.h"
+#include "renderer/vk/pipeline.h"
+
+namespace ds {
+class GpuScene;
+}
+
+namespace ds::passes {
+
+// Which vertex attributes the vertex shader reads: unread ones draw performance warnings.
+enum class VertexInputs : uint8_t {
+    All,         // position, normal, uv0, tangent (shaders/common/scene_vertex.glsl)
+    PositionUv,  // shaders/shadow.vert
+};
+
+// Pipeline builder with the scene's vertex layout; `frag` may be empty (depth only).
+vk::GraphicsPipelineBuilder scene_pipeline_builder(VkPipelineLayout layout,
+                                                   std::span<const uint32_t> vert,
+                                                   std::span<const uint32_t> frag,
+                                                   VertexInputs inputs = VertexInputs::All);
+
+VkCullModeFlags cull_mode(bool double_sided);
+
+// Binds the scene's vertex and index buffers.
+void bind_geometry(VkCommandBuffer cmd, const GpuScene& scene);
+
+struct DrawCounts {
+    uint32_t draws = 0;
+    uint32_t instances = 0;
+};
+
+// One instanced draw per group whose alpha mode is in `modes`, in the scene's authored
+// order. Set 1 is bound when the material changes; the cull mode follows each group's
+// double_sided flag unless `cull` overrides it. The caller has bound the pipeline and set 0.
+DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
+                       std::span<const scene::AlphaMode> modes,
+                       std::optional<VkCullModeFlags> cull = std::nullopt);
+
+// A BLEND instance, in the order it must be drawn.
+struct BlendDraw {
+    uint32_t instance = 0;
+    const scene::DrawGroup* group = nullptr;
+};
+// Every BLEND instance, back to front by the distance of its bounds' centre from `camera`;
+// the instance index breaks ties so the order (and the image) is stable.
+std::vector<BlendDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera);
+// Draws them one instance at a time (the order is per instance, not per group).
+DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
+                       std::span<const BlendDraw> draws);
+
+}  // namespace ds::passes

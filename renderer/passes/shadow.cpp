@@ -1,0 +1,123 @@
+#include "renderer/passes/shadow.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/gpu_scene.h"
+#include "renderer/passes/scene_draw.h"
+#include "renderer/shader/compiler.h"
+#include "renderer/vk/context.h"
+#include "renderer/vk/functions.h"
+
+namespace ds::passes {
+
+using graph::Access;
+using scene::AlphaMode;
+
+ShadowPass::ShadowPass(const PassServices& services)
+    : services_(services),
+      pipelines_([this](uint32_t key) { return compile(key); },
+                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }) {
+    const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout};
+    layout_ = vk::PipelineLayout(services.context, sets, {}, "shadow layout");
+    pipelines_.get(kOpaque);  // shader errors surface at start-up, not in the first frame
+}
+
+void ShadowPass::rebuild_pipelines(vk::DestroyList& retired) {
+    pipelines_.rebuild(retired);
+}
+
+ShaderStages ShadowPass::compile(uint32_t key) const {
+    ShaderStages s;
+    s.vert = services_.compiler.compile("shadow.vert", shader::Stage::Vertex).spirv;
+    if (key == kMask)
+        s.frag = services_.compiler.compile("shadow.frag", shader::Stage::Fragment).spirv;
+    return s;
+}
+
+vk::Pipeline ShadowPass::create(uint32_t key, const ShaderStages& s) const {
+    return scene_pipeline_builder(layout_.handle(), s.vert, s.frag, VertexInputs::PositionUv)
+        .depth_attachment(services_.depth_format)
+        .build(services_.context, key == kMask ? "shadow mask" : "shadow opaque");
+}
+
+void ShadowPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
+    const VkPipeline opaque = pipelines_.get(kOpaque);
+    const VkPipeline mask = pipelines_.get(kMask);
+    struct Data {
+        FrameInputs in;
+        graph::ImageHandle map;
+    };
+    graph.add_pass<Data>(
+        kName,
+        [&](graph::PassBuilder& b, Data& d) {
+            res.shadow_map =
+                b.create_image("shadow_map", {.format = services_.depth_format,
+                                              .size = graph::ImageSize::fixed(kSize, kSize),
+                                              .semantic = graph::Semantic::ShadowDepth});
+            b.write(res.shadow_map, Access::DepthAttachment);
+            b.read(res.frame_uniforms, Access::UniformRead,
+                   graph::Shader::Vertex | graph::Shader::Fragment);
+            d = {in, res.shadow_map};
+        },
+        [this, opaque, mask](graph::PassContext& ctx, const Data& d) {
+            record(ctx.cmd(), ctx.view(d.map), d.in, opaque, mask);
+        });
+}
+
+void ShadowPass::record(VkCommandBuffer cmd, VkImageView map, const FrameInputs& in,
+                        VkPipeline opaque, VkPipeline mask) const {
+    // Stored: forward and transparent sample it after this pass.
+    const VkRenderingAttachmentInfo depth =
+        depth_attachment(map, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                         VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE,
+                         /*clear_depth=*/1.0f);
+    begin_rendering(cmd, {kSize, kSize}, {}, &depth);
+    set_depth_state(cmd, /*test=*/true, /*write=*/true, VK_COMPARE_OP_LESS);
+    bind_geometry(cmd, *in.scene);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.handle(), 0, 1,
+                            &in.frame_set, 0, nullptr);
+    const AlphaMode opaque_modes[] = {AlphaMode::Opaque};
+    const AlphaMode mask_modes[] = {AlphaMode::Mask};
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, opaque);
+    draw_groups(cmd, *in.scene, layout_.handle(), opaque_modes, VK_CULL_MODE_NONE);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mask);
+    draw_groups(cmd, *in.scene, layout_.handle(), mask_modes, VK_CULL_MODE_NONE);
+    vk::fn().cmd_end_rendering(cmd);
+}
+
+glm::mat4 ShadowPass::fit_sun(const scene::Bounds& bounds, glm::vec3 to_sun) {
+    scene::Bounds b = bounds;
+    if (!b.valid()) b = {glm::vec3(-1.0f), glm::vec3(1.0f)};
+    const glm::vec3 l = glm::normalize(to_sun);
+    const glm::vec3 up = std::abs(l.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    const glm::vec3 center = b.center();
+    const glm::mat4 view = glm::lookAt(center + l, center, up);
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                               (i & 4) ? b.max.z : b.min.z);
+        const glm::vec3 p = glm::vec3(view * glm::vec4(corner, 1.0f));
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    // A margin so geometry on the bounds is never clipped or on the border texels.
+    const glm::vec3 pad = 0.01f * (hi - lo) + glm::vec3(0.05f);
+    lo -= pad;
+    hi += pad;
+    // The view looks down -z: distance from the sun is -z, from -hi.z (near) to -lo.z (far).
+    const float near = -hi.z, far = -lo.z;
+    glm::mat4 p(1.0f);
+    p[0][0] = 2.0f / (hi.x - lo.x);
+    p[3][0] = -(hi.x + lo.x) / (hi.x - lo.x);
+    p[1][1] = 2.0f / (hi.y - lo.y);
+    p[3][1] = -(hi.y + lo.y) / (hi.y - lo.y);
+    p[2][2] = -1.0f / (far - near);
+    p[3][2] = -near / (far - near);
+    return p * view;
+}
+
+}  // namespace ds::passes

@@ -1,0 +1,37 @@
+#pragma once
+// skybox: the procedural sky (gradient, sun glow and disc; shaders/common/sky.glsl) drawn
+// after forward as one fullscreen triangle at the far depth, tested closer-or-equal
+// (GREATER_OR_EQUAL with reverse-Z) against the scene depth with writes off: only pixels no
+// surface covered pass, so the sky shades the background alone and never touches the
+// prepass depth (seed 004). With sky=off this pass is left out and the background keeps
+// forward's clear colour.
+#include <vulkan/vulkan.h>
+
+#include "renderer/graph/graph.h"
+#include "renderer/passes/frame.h"
+#include "renderer/passes/pass_util.h"
+#include "renderer/vk/destroy_list.h"
+#include "renderer/vk/pipeline.h"
+
+namespace ds::passes {
+
+class SkyboxPass {
+  public:
+    static constexpr const char* kName = "skybox";
+
+    explicit SkyboxPass(const PassServices& services);
+
+    void rebuild_pipelines(vk::DestroyList& retired);
+    // Reads res.depth (read-only attachment), draws into res.hdr.
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
+
+  private:
+    ShaderStages compile(uint32_t key) const;
+    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+
+    PassServices services_;
+    vk::PipelineLayout layout_;
+    PipelineVariants pipelines_;
+};
+
+}  // namespace ds::passes

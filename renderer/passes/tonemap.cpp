@@ -1,0 +1,87 @@
+#include "renderer/passes/tonemap.h"
+
+#include "renderer/shader/compiler.h"
+#include "renderer/vk/check.h"
+#include "renderer/vk/context.h"
+#include "renderer/vk/functions.h"
+
+namespace ds::passes {
+
+using graph::Access;
+
+namespace {
+const VkDescriptorPoolSize kPoolSizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+}
+
+TonemapPass::TonemapPass(const PassServices& services)
+    : services_(services),
+      sets_(services.context, 1, kPoolSizes, "tonemap sets"),
+      pipelines_([this](uint32_t key) { return compile(key); },
+                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }) {
+    const VkDescriptorSetLayoutBinding hdr = vk::layout_binding(
+        0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT);
+    hdr_layout_ = vk::DescriptorSetLayout(services.context, {&hdr, 1}, "tonemap set layout");
+    const VkDescriptorSetLayout sets[] = {services.frame_layout, hdr_layout_.handle()};
+    layout_ = vk::PipelineLayout(services.context, sets, {}, "tonemap layout");
+    auto info = vk::make<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    info.addressModeU = info.addressModeV = info.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    nearest_ = vk::Sampler(services.context, info, "tonemap nearest");
+    pipelines_.get(0);
+}
+
+void TonemapPass::rebuild_pipelines(vk::DestroyList& retired) {
+    pipelines_.rebuild(retired);
+}
+
+ShaderStages TonemapPass::compile(uint32_t) const {
+    return {services_.compiler.compile("fullscreen.vert", shader::Stage::Vertex).spirv,
+            services_.compiler.compile("tonemap.frag", shader::Stage::Fragment).spirv};
+}
+
+vk::Pipeline TonemapPass::create(uint32_t, const ShaderStages& s) const {
+    vk::GraphicsPipelineBuilder b;
+    return b.shader(VK_SHADER_STAGE_VERTEX_BIT, s.vert)
+        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, s.frag)
+        .color_attachment(kFinalFormat)
+        .layout(layout_.handle())
+        .build(services_.context, "tonemap");
+}
+
+void TonemapPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
+    const VkPipeline pipeline = pipelines_.get(0);
+    struct Data {
+        FrameInputs in;
+        FrameResources res;
+    };
+    graph.add_pass<Data>(
+        kName,
+        [&](graph::PassBuilder& b, Data& d) {
+            b.read(res.hdr, Access::Sampled, graph::Shader::Fragment);
+            b.write(res.final_image, Access::ColorAttachment);
+            b.read(res.frame_uniforms, Access::UniformRead,
+                   graph::Shader::Vertex | graph::Shader::Fragment);
+            d = {in, res};
+        },
+        [this, pipeline](graph::PassContext& ctx, const Data& d) {
+            VkCommandBuffer cmd = ctx.cmd();
+            const VkDescriptorSet set = sets_.allocate(d.in.frame_number, hdr_layout_.handle());
+            vk::DescriptorWriter writer;
+            writer.image(0, ctx.view(d.res.hdr), nearest_.handle(), ctx.layout(d.res.hdr));
+            writer.update(services_.context.device(), set);
+            // Every pixel is written: the old contents need not be loaded.
+            const VkRenderingAttachmentInfo color =
+                color_attachment(ctx.view(d.res.final_image), VK_ATTACHMENT_LOAD_OP_DONT_CARE);
+            begin_rendering(cmd, ctx.extent(d.res.final_image), {&color, 1}, nullptr);
+            set_depth_state(cmd, /*test=*/false, /*write=*/false, VK_COMPARE_OP_ALWAYS);
+            vk::fn().cmd_set_cull_mode(cmd, VK_CULL_MODE_NONE);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+            const VkDescriptorSet sets[] = {d.in.frame_set, set};
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.handle(), 0, 2,
+                                    sets, 0, nullptr);
+            vkCmdDraw(cmd, 3, 1, 0, 0);
+            vk::fn().cmd_end_rendering(cmd);
+        });
+}
+
+}  // namespace ds::passes

@@ -1,0 +1,42 @@
+#pragma once
+// tonemap: HDR -> exposure -> ACES fit -> sRGB, into the final image (R8G8B8A8_SRGB, which
+// the renderer imports and reads back). A fullscreen triangle in a graphics pass: storage
+// images cannot be _SRGB, a colour attachment encodes for free.
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/graph/graph.h"
+#include "renderer/passes/frame.h"
+#include "renderer/passes/pass_util.h"
+#include "renderer/vk/descriptors.h"
+#include "renderer/vk/destroy_list.h"
+#include "renderer/vk/image.h"
+#include "renderer/vk/pipeline.h"
+
+namespace ds::passes {
+
+class TonemapPass {
+  public:
+    static constexpr const char* kName = "tonemap";
+    static constexpr VkFormat kFinalFormat = VK_FORMAT_R8G8B8A8_SRGB;
+
+    explicit TonemapPass(const PassServices& services);
+
+    void rebuild_pipelines(vk::DestroyList& retired);
+    // Samples res.hdr, writes res.final_image (both provided).
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
+
+  private:
+    ShaderStages compile(uint32_t key) const;
+    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+
+    PassServices services_;
+    vk::DescriptorSetLayout hdr_layout_;
+    vk::PipelineLayout layout_;
+    FrameDescriptorPool sets_;
+    vk::Sampler nearest_;
+    PipelineVariants pipelines_;
+};
+
+}  // namespace ds::passes

@@ -1,0 +1,113 @@
+#include "renderer/passes/transparent.h"
+
+#include <vector>
+
+#include "renderer/gpu_scene.h"
+#include "renderer/passes/scene_draw.h"
+#include "renderer/shader/compiler.h"
+#include "renderer/vk/context.h"
+#include "renderer/vk/functions.h"
+
+namespace ds::passes {
+
+using graph::Access;
+
+namespace {
+const VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}};
+}
+
+TransparentPass::TransparentPass(const PassServices& services)
+    : services_(services),
+      lighting_(services.context, services.depth_format),
+      count_layout_(create_count_set_layout(services.context)),
+      count_sets_(services.context, 1, kCountPoolSizes, "transparent count sets"),
+      pipelines_([this](uint32_t key) { return compile(key); },
+                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }) {
+    const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
+                                          lighting_.layout(), count_layout_.handle()};
+    layout_ = vk::PipelineLayout(services.context, sets, {}, "transparent layout");
+    pipelines_.get(0);
+}
+
+void TransparentPass::rebuild_pipelines(vk::DestroyList& retired) {
+    pipelines_.rebuild(retired);
+}
+
+ShaderStages TransparentPass::compile(uint32_t key) const {
+    std::vector<shader::Define> defines;
+    if (key & kCounting) defines.push_back({"COUNT_FRAGMENTS", "1"});
+    return {services_.compiler.compile("transparent.vert", shader::Stage::Vertex).spirv,
+            services_.compiler.compile("transparent.frag", shader::Stage::Fragment, defines).spirv};
+}
+
+vk::Pipeline TransparentPass::create(uint32_t, const ShaderStages& s) const {
+    return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
+        .color_attachment(VK_FORMAT_R16G16B16A16_SFLOAT, vk::Blend::Alpha)
+        .depth_attachment(services_.depth_format)
+        .build(services_.context, "transparent");
+}
+
+void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
+    const VkPipeline pipeline = pipelines_.get(res.transparent_counts.valid() ? kCounting : 0u);
+    // No prepass normal or roughness: BLEND surfaces are not in the prepass.
+    const LightingInputs lighting = {.shadow_map = res.shadow_map,
+                                     .normals = {},
+                                     .roughness = {},
+                                     .ao = res.ao,
+                                     .contact_shadows = res.contact_shadows};
+    struct Data {
+        FrameInputs in;
+        FrameResources res;
+    };
+    graph.add_pass<Data>(
+        kName,
+        [&](graph::PassBuilder& b, Data& d) {
+            b.read(res.depth, Access::DepthReadOnly);
+            b.write(res.hdr, Access::ColorAttachment);
+            LightingSet::declare(b, lighting);
+            b.read(res.frame_uniforms, Access::UniformRead,
+                   graph::Shader::Vertex | graph::Shader::Fragment);
+            if (res.transparent_counts.valid()) declare_counts(b, res.transparent_counts);
+            d = {in, res};
+        },
+        [this, lighting, pipeline](graph::PassContext& ctx, const Data& d) {
+            record(ctx, d.in, d.res, lighting, pipeline);
+        });
+}
+
+void TransparentPass::record(graph::PassContext& ctx, const FrameInputs& in,
+                             const FrameResources& res, const LightingInputs& lighting,
+                             VkPipeline pipeline) {
+    VkCommandBuffer cmd = ctx.cmd();
+    VkDescriptorSet counts = VK_NULL_HANDLE;
+    if (res.transparent_counts.valid()) {
+        clear_counts(cmd, ctx.image(res.transparent_counts));
+        counts = count_sets_.allocate(in.frame_number, count_layout_.handle());
+        write_count_set(services_.context.device(), counts, ctx.view(res.transparent_counts));
+    }
+    const VkDescriptorSet lighting_set = lighting_.write(ctx, in.frame_number, lighting);
+    const VkRenderingAttachmentInfo color =
+        color_attachment(ctx.view(res.hdr), VK_ATTACHMENT_LOAD_OP_LOAD);
+    const VkRenderingAttachmentInfo depth =
+        depth_attachment(ctx.view(res.depth), ctx.layout(res.depth), VK_ATTACHMENT_LOAD_OP_LOAD,
+                         VK_ATTACHMENT_STORE_OP_NONE);
+    begin_rendering(cmd, ctx.extent(res.hdr), {&color, 1}, &depth);
+    set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());
+    const std::vector<BlendDraw> draws = sort_back_to_front(*in.scene, in.camera_position);
+    if (!draws.empty()) {
+        const VkPipelineLayout layout = layout_.handle();
+        bind_geometry(cmd, *in.scene);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set,
+                                0, nullptr);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &lighting_set,
+                                0, nullptr);
+        if (counts)
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kCountSet, 1,
+                                    &counts, 0, nullptr);
+        draw_sorted(cmd, *in.scene, layout, draws);
+    }
+    vk::fn().cmd_end_rendering(cmd);
+}
+
+}  // namespace ds::passes

@@ -1,0 +1,49 @@
+#pragma once
+// transparent: BLEND materials, after the sky, one instance at a time back to front, alpha
+// blended into the HDR image. Depth is tested closer-or-equal (GREATER_OR_EQUAL with
+// reverse-Z) against the scene depth with writes off: decals lying exactly on a wall or the
+// floor (the atrium's, Sponza's) have that surface's depth and pass, surfaces in front hide
+// them, and they never hide each other. They are drawn here only (not by shadow, prepass or
+// forward), so each appears exactly once (seed 004).
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/graph/graph.h"
+#include "renderer/passes/frame.h"
+#include "renderer/passes/lighting_set.h"
+#include "renderer/passes/pass_util.h"
+#include "renderer/vk/descriptors.h"
+#include "renderer/vk/destroy_list.h"
+#include "renderer/vk/pipeline.h"
+
+namespace ds::passes {
+
+class TransparentPass {
+  public:
+    static constexpr const char* kName = "transparent";
+
+    explicit TransparentPass(const PassServices& services);
+
+    void rebuild_pipelines(vk::DestroyList& retired);
+    // Reads res.depth (read-only attachment), res.shadow_map, res.ao, res.contact_shadows
+    // where valid; blends into res.hdr. Counts into res.transparent_counts when valid.
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
+
+  private:
+    static constexpr uint32_t kCounting = 1;  // variant key
+
+    ShaderStages compile(uint32_t key) const;
+    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+    void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
+                const LightingInputs& lighting, VkPipeline pipeline);
+
+    PassServices services_;
+    LightingSet lighting_;
+    vk::DescriptorSetLayout count_layout_;
+    vk::PipelineLayout layout_;
+    FrameDescriptorPool count_sets_;
+    PipelineVariants pipelines_;
+};
+
+}  // namespace ds::passes

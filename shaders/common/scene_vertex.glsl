@@ -1,0 +1,44 @@
+// The vertex shader of every pass whose depth must match another's bit for bit: depth
+// prepass, forward and transparent (seed 000). One source, one expression
+//     gl_Position = view_projection * (model * position)
+// and `invariant gl_Position`, so the EQUAL test of the forward pass keeps exactly the
+// fragments the prepass kept.
+//
+// NON_INVARIANT=1 (forward with invariant=off) drops `invariant` and evaluates the
+// mathematically equal (view_projection * model) * position, which rounds differently: the
+// EQUAL test then rejects visible fragments, which is the point of the setting.
+// Include it from a .vert that enables GL_GOOGLE_include_directive.
+
+#ifndef NON_INVARIANT
+#define NON_INVARIANT 0
+#endif
+
+#include "bindings.glsl"
+
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec2 in_uv0;
+layout(location = 3) in vec4 in_tangent;
+
+layout(location = 0) out vec3 out_world_position;
+layout(location = 1) out vec3 out_normal;
+layout(location = 2) out vec2 out_uv0;
+layout(location = 3) out vec4 out_tangent;
+
+#if !NON_INVARIANT
+invariant gl_Position;
+#endif
+
+void main() {
+    InstanceData instance = instances[gl_InstanceIndex];
+    vec4 world = instance.model * vec4(in_position, 1.0);
+#if NON_INVARIANT
+    gl_Position = (frame.view_projection * instance.model) * vec4(in_position, 1.0);
+#else
+    gl_Position = frame.view_projection * world;
+#endif
+    out_world_position = world.xyz;
+    out_normal = mat3(instance.normal_matrix) * in_normal;
+    out_tangent = vec4(mat3(instance.model) * in_tangent.xyz, in_tangent.w);
+    out_uv0 = in_uv0;
+}

@@ -1,0 +1,41 @@
+#version 460
+// Depth prepass: no lighting. Writes the encoded world-space shading normal and the
+// roughness that forward, GTAO and contact shadows read. Defines (default 0):
+//   ALPHA_MASK=1       MASK materials: alpha test (base colour alpha only) before any other
+//                      texture read; its discard makes the depth test late, so this
+//                      pipeline is drawn after the opaque one, which keeps early-Z.
+//   ALPHA_MASK=2       masked_split=off: one pipeline for all geometry, testing MASK
+//                      materials only; the discard in it costs every draw its early-Z.
+//   COUNT_FRAGMENTS=1  count the fragments that ran (common/count.glsl).
+#extension GL_GOOGLE_include_directive : require
+
+#ifndef ALPHA_MASK
+#define ALPHA_MASK 0
+#endif
+
+#include "common/count.glsl"
+#include "common/surface.glsl"
+
+#if COUNT_FRAGMENTS && ALPHA_MASK == 0
+layout(early_fragment_tests) in;
+#endif
+
+layout(location = 0) in vec3 in_world_position;
+layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec2 in_uv0;
+layout(location = 3) in vec4 in_tangent;
+
+layout(location = 0) out vec4 out_normal;
+layout(location = 1) out float out_roughness;
+
+void main() {
+#if ALPHA_MASK
+    bool tested = ALPHA_MASK == 1 || (material.flags & kMaterialAlphaMask) != 0u;
+    float alpha = texture(base_color_texture, in_uv0).a * material.base_color_factor.a;
+    if (tested && alpha < alpha_cutoff()) discard;
+#endif
+    count_fragment();
+    out_normal = vec4(encode_normal(shading_normal(vertex_normal(in_normal), in_tangent, in_uv0)),
+                      1.0);
+    out_roughness = material_roughness(in_uv0);
+}

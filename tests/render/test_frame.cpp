@@ -1,0 +1,139 @@
+// The seed frame through the real executable: pass order, validation over the settings that
+// change the frame's structure, exact shaded-fragment counts, prepass on/off equivalence.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/render/capture_helpers.h"
+
+using namespace ds::test;
+
+namespace {
+
+const std::vector<std::string> kAllPasses = {
+    "shadow",          "depth_prepass", "gtao",   "ao_spatial",  "ao_temporal",
+    "contact_shadows", "forward",       "skybox", "transparent", "tonemap"};
+
+std::vector<std::string> pass_names(const nlohmann::json& passes) {
+    std::vector<std::string> names;
+    for (const auto& p : passes) names.push_back(p["name"].get<std::string>());
+    return names;
+}
+
+nlohmann::json find_pass(const nlohmann::json& report, const std::string& name) {
+    for (const auto& p : report["passes"]) {
+        if (p["name"] == name) return p;
+    }
+    ADD_FAILURE() << "no pass " << name;
+    return {};
+}
+
+}  // namespace
+
+// 16 combinations in one process, validation on: any message makes the exit code 3.
+TEST(Frame, EveryStructuralCombinationIsValidationClean) {
+    const auto json_path = fresh_dir("frame-matrix") / "bench.json";
+    auto r = run_depthscope(
+        "bench --validate --scene atrium --size 320x180 --frames 1 --warmup 0 "
+        "--matrix prepass=on,off --matrix depth_compare=equal,greater_or_equal "
+        "--matrix masked_split=on,off --matrix reverse_z=on,off --json " +
+            json_path.string(),
+        600);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    auto json = nlohmann::json::parse(read_file(json_path));
+    ASSERT_EQ(json["runs"].size(), 16u);
+    for (const auto& run : json["runs"]) {
+        const auto names = pass_names(run["passes"]);
+        if (run["settings"]["prepass"] == "on") {
+            EXPECT_EQ(names, kAllPasses) << run["settings"].dump();
+        } else {
+            // Without the prepass, gtao and contact shadows have no input and are skipped.
+            EXPECT_EQ(names, (std::vector<std::string>{"shadow", "forward", "skybox", "transparent",
+                                                       "tonemap"}))
+                << run["settings"].dump();
+        }
+    }
+}
+
+TEST(Frame, ReportListsPassesWithStatsAndCoverage) {
+    Capture c = capture("frame-report", "atrium", "320x180");
+    ASSERT_FALSE(c.report.is_discarded());
+    EXPECT_EQ(pass_names(c.report["passes"]), kAllPasses);
+    for (const auto& p : c.report["passes"]) {
+        EXPECT_GE(p["gpu_ms"].get<double>(), 0.0) << p.dump();
+        for (const char* k :
+             {"vertex_shader_invocations", "fragment_shader_invocations", "clipping_primitives"}) {
+            EXPECT_TRUE(p["stats"].contains(k)) << p.dump();
+        }
+        EXPECT_FALSE(p.contains("shaded_fragments")) << "only with count_fragments=on";
+    }
+    EXPECT_GT(find_pass(c.report, "forward")["stats"]["vertex_shader_invocations"].get<double>(),
+              0.0);
+    const auto covered = c.report["coverage"]["covered_pixels"].get<int64_t>();
+    EXPECT_GT(covered, 320 * 180 / 2) << "the atrium view is mostly geometry";
+    EXPECT_LT(covered, 320 * 180) << "and shows some sky";
+}
+
+// Prepass on: EQUAL keeps exactly the visible fragment per pixel. Off: the atrium's authored
+// (not front-to-back) order makes forward shade every layer.
+TEST(Frame, ShadedFragmentsShowWhatThePrepassSaves) {
+    Capture on = capture("count-on", "atrium", "320x180", "--set count_fragments=on");
+    Capture off =
+        capture("count-off", "atrium", "320x180", "--set count_fragments=on --set prepass=off");
+    const double covered_on = on.report["coverage"]["covered_pixels"].get<double>();
+    const double covered_off = off.report["coverage"]["covered_pixels"].get<double>();
+    const double fwd_on = find_pass(on.report, "forward")["shaded_fragments"].get<double>();
+    const double fwd_off = find_pass(off.report, "forward")["shaded_fragments"].get<double>();
+    EXPECT_LE(fwd_on, 1.02 * covered_on);
+    EXPECT_GE(fwd_on, 0.98 * covered_on) << "EQUAL must not reject visible fragments";
+    EXPECT_GE(fwd_off, 2.0 * covered_off);
+    EXPECT_TRUE(find_pass(on.report, "depth_prepass").contains("shaded_fragments"));
+    EXPECT_TRUE(find_pass(on.report, "transparent").contains("shaded_fragments"));
+}
+
+// The exact numbers the overdraw scene's geometry implies: N view-filling quads drawn back to
+// front, so without a prepass every quad is shaded at every pixel; with it, one per pixel.
+TEST(Frame, OverdrawCountsMatchTheGeometry) {
+    const int w = 96, h = 64, layers = 5;
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    const std::string common =
+        "--set count_fragments=on --set overdraw_layers=" + std::to_string(layers);
+    Capture on = capture("overdraw-on", "overdraw", size, common);
+    Capture off = capture("overdraw-off", "overdraw", size, common + " --set prepass=off");
+    EXPECT_EQ(on.report["coverage"]["covered_pixels"].get<int64_t>(), w * h);
+    EXPECT_EQ(find_pass(on.report, "forward")["shaded_fragments"].get<int64_t>(), w * h);
+    EXPECT_EQ(find_pass(on.report, "depth_prepass")["shaded_fragments"].get<int64_t>(),
+              int64_t(layers) * w * h)
+        << "back-to-front order: every prepass layer passes the depth test";
+    EXPECT_EQ(find_pass(off.report, "forward")["shaded_fragments"].get<int64_t>(),
+              int64_t(layers) * w * h);
+}
+
+TEST(Frame, PrepassOnAndOffGiveTheSameImage) {
+    const std::string common = "--set gtao=off --set contact_shadows=off";
+    Capture on = capture("same-on", "atrium", "320x180", common);
+    Capture off = capture("same-off", "atrium", "320x180", common + " --set prepass=off");
+    ASSERT_GT(on.image.width, 0);
+    const size_t total = size_t(on.image.width) * on.image.height;
+    EXPECT_LT(differing_pixels(on.image, off.image, 8), total / 1000);
+}
+
+TEST(Frame, WithoutInvarianceEqualRejectsVisibleFragments) {
+    Capture c = capture("invariant-off", "atrium", "320x180",
+                        "--set count_fragments=on --set invariant=off");
+    const double covered = c.report["coverage"]["covered_pixels"].get<double>();
+    const double shaded = find_pass(c.report, "forward")["shaded_fragments"].get<double>();
+    EXPECT_LT(shaded, 0.95 * covered) << "shaded " << shaded << " of " << covered;
+}
+
+TEST(Frame, DumpGraphPrintsPassesResourcesAndBarriers) {
+    auto dir = fresh_dir("dump-graph") / "cap";
+    auto r = run_depthscope("capture --validate --dump-graph --scene atrium --size 160x90 --out " +
+                            dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const auto& name : kAllPasses) EXPECT_NE(r.out.find(name), std::string::npos) << name;
+    for (const char* text : {"D32_SFLOAT", "A2B10G10R10", "R8_UNORM", "R16G16B16A16_SFLOAT",
+                             "SHADER_READ_ONLY_OPTIMAL", "DEPTH"}) {
+        EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
+    }
+}

@@ -1,0 +1,254 @@
+#include "tests/unit/screen_space/gpu_rig.h"
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb/stb_image_write.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <glm/gtc/packing.hpp>
+
+#include "renderer/common/error.h"
+#include "renderer/vk/barrier.h"
+#include "renderer/vk/check.h"
+
+namespace ds::test {
+namespace {
+
+using graph::Access;
+
+uint32_t texel_size(VkFormat format) {
+    switch (format) {
+        case VK_FORMAT_R8_UNORM:
+            return 1;
+        case VK_FORMAT_R16_SFLOAT:
+            return 2;
+        case VK_FORMAT_R16G16_SFLOAT:
+            return 4;
+        default:
+            throw Error("read-back of format " + std::to_string(int(format)) + " not supported");
+    }
+}
+
+HostImage decode(VkFormat format, VkExtent2D extent, const std::byte* data) {
+    HostImage img;
+    img.width = extent.width;
+    img.height = extent.height;
+    const size_t n = size_t(extent.width) * extent.height;
+    img.r.resize(n);
+    if (format == VK_FORMAT_R16G16_SFLOAT) img.g.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        if (format == VK_FORMAT_R8_UNORM) {
+            img.r[i] = float(uint8_t(data[i])) / 255.0f;
+        } else {
+            uint16_t h[2] = {0, 0};
+            std::memcpy(h, data + i * texel_size(format), texel_size(format));
+            img.r[i] = glm::unpackHalf1x16(h[0]);
+            if (!img.g.empty()) img.g[i] = glm::unpackHalf1x16(h[1]);
+        }
+    }
+    return img;
+}
+
+// Copies `data` into `image` (TRANSFER_DST) and leaves it SHADER_READ_ONLY_OPTIMAL.
+void upload_image(vk::Context& context, const vk::Image& image, const void* data, size_t size) {
+    vk::Buffer staging(
+        context, {size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUsage::Upload, "staging"});
+    staging.write(data, size);
+    const VkImageAspectFlags aspect = image.aspect();
+    context.submit_once([&](VkCommandBuffer cmd) {
+        vk::image_barrier(cmd, {.image = image.handle(),
+                                .aspect = aspect,
+                                .old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
+                                .new_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                                .dst_access = VK_ACCESS_2_TRANSFER_WRITE_BIT});
+        VkBufferImageCopy region{};
+        region.imageSubresource = {aspect, 0, 0, 1};
+        region.imageExtent = {image.width(), image.height(), 1};
+        vkCmdCopyBufferToImage(cmd, staging.handle(), image.handle(),
+                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        vk::image_barrier(cmd, {.image = image.handle(),
+                                .aspect = aspect,
+                                .old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                .new_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                .src_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                                .src_access = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                .dst_stage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                .dst_access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+    });
+}
+
+// Uploaded before the frame and fenced: sampled-ready, nothing left to wait for.
+graph::ExternalImage sampled_input(const vk::Image& image, graph::Semantic semantic) {
+    return {image.handle(),
+            image.view(),
+            {.format = image.format(),
+             .size = graph::ImageSize::fixed(image.width(), image.height()),
+             .semantic = semantic},
+            {VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE},
+            std::nullopt};
+}
+
+}  // namespace
+
+void write_png(const std::string& path, const HostImage& image) {
+    std::vector<uint8_t> bytes(image.r.size());
+    for (size_t i = 0; i < bytes.size(); ++i)
+        bytes[i] = uint8_t(std::lround(std::clamp(image.r[i], 0.0f, 1.0f) * 255.0f));
+    stbi_write_png(path.c_str(), int(image.width), int(image.height), 1, bytes.data(),
+                   int(image.width));
+}
+
+GpuRig& GpuRig::get() {
+    static GpuRig rig;
+    return rig;
+}
+
+GpuRig::GpuRig() {
+    vk::ContextOptions options;
+    options.validate = true;
+    context_ = std::make_unique<vk::Context>(options);
+    // No disk cache: the tests compile what is in the tree, every time.
+    compiler_ = std::make_unique<shader::Compiler>(shader::Compiler::default_shader_root(),
+                                                   std::filesystem::path());
+    const VkDescriptorSetLayoutBinding binding = vk::layout_binding(
+        0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT);
+    frame_layout_ = vk::DescriptorSetLayout(*context_, std::span(&binding, 1), "test frame set");
+    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1};
+    frame_pool_ = vk::DescriptorPool(*context_, 1, std::span(&size, 1), "test frame pool");
+    frame_set_ = frame_pool_.allocate(frame_layout_.handle());
+    uniform_buffer_ =
+        vk::Buffer(*context_, {sizeof(passes::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                               vk::MemoryUsage::Upload, "frame uniforms"});
+    vk::DescriptorWriter()
+        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniform_buffer_.handle())
+        .update(context_->device(), frame_set_);
+}
+
+passes::PassServices GpuRig::services() {
+    return {*context_, *compiler_, frame_layout_.handle(), VK_NULL_HANDLE, VK_FORMAT_D32_SFLOAT};
+}
+
+void GpuRig::upload(const SyntheticFrame& frame) {
+    context_->wait_idle();
+    const uint32_t w = frame.width, h = frame.height;
+    depth_ = vk::Image(*context_, {w, h, 1, VK_FORMAT_D32_SFLOAT,
+                                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                   VK_SAMPLE_COUNT_1_BIT, "synthetic depth"});
+    normals_ = vk::Image(*context_, {w, h, 1, VK_FORMAT_A2B10G10R10_UNORM_PACK32,
+                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                     VK_SAMPLE_COUNT_1_BIT, "synthetic normals"});
+    upload_image(*context_, depth_, frame.depth.data(), frame.depth.size() * sizeof(float));
+    upload_image(*context_, normals_, frame.normals.data(),
+                 frame.normals.size() * sizeof(uint32_t));
+    reverse_z_ = frame.reverse_z;
+    set_uniforms(frame.uniforms);
+}
+
+void GpuRig::set_uniforms(const passes::FrameUniforms& uniforms) {
+    uniforms_ = uniforms;
+}
+
+vk::Image GpuRig::make_r8(uint32_t width, uint32_t height, const std::vector<float>& values) {
+    vk::Image image(*context_, {width, height, 1, VK_FORMAT_R8_UNORM,
+                                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                VK_SAMPLE_COUNT_1_BIT, "test r8 input"});
+    std::vector<uint8_t> bytes(values.size());
+    for (size_t i = 0; i < values.size(); ++i)
+        bytes[i] = uint8_t(std::lround(std::clamp(values[i], 0.0f, 1.0f) * 255.0f));
+    upload_image(*context_, image, bytes.data(), bytes.size());
+    return image;
+}
+
+graph::ImageHandle GpuRig::import_r8(graph::RenderGraph& graph, const std::string& name,
+                                     const vk::Image& image) const {
+    return graph.import_image(name, sampled_input(image, graph::Semantic::AO));
+}
+
+FrameOutput GpuRig::run_frame(graph::RenderGraph& graph, const Declare& declare,
+                              const std::vector<std::string>& read_back,
+                              const passes::FrameOptions& options) {
+    uniforms_.flags.y = uint32_t(frame_number_);
+    uniform_buffer_.write(&uniforms_, sizeof(uniforms_));
+
+    graph.begin_frame({depth_.width(), depth_.height()}, retired_);
+    passes::FrameResources res;
+    res.frame_uniforms = graph.import_buffer(
+        "frame_uniforms",
+        {uniform_buffer_.handle(),
+         sizeof(passes::FrameUniforms),
+         {VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_WRITE_BIT},
+         std::nullopt});
+    res.depth = graph.import_image(
+        "depth", sampled_input(depth_, reverse_z_ ? graph::Semantic::ReverseZDepth
+                                                  : graph::Semantic::ForwardZDepth));
+    res.normals =
+        graph.import_image("normals", sampled_input(normals_, graph::Semantic::EncodedNormal));
+    passes::FrameInputs in;
+    in.frame_set = frame_set_;
+    in.options = options;
+    in.frame_number = frame_number_;
+    declare(graph, in, res);
+
+    // Read-back: one host buffer per image, copied in a last transfer pass.
+    struct Target {
+        std::string name;
+        graph::ImageHandle image;
+        graph::BufferHandle buffer;
+        VkFormat format;
+        VkExtent2D extent;
+    };
+    std::vector<Target> targets;
+    std::vector<vk::Buffer> buffers;
+    for (const std::string& name : read_back) {
+        const graph::ImageHandle image = graph.find_image(name);
+        if (!image.valid()) throw Error("read-back: no image '" + name + "' in the graph");
+        const graph::ResourceInfo& info = graph.resources()[image.index];
+        const VkDeviceSize size =
+            VkDeviceSize(info.extent.width) * info.extent.height * texel_size(info.image.format);
+        buffers.emplace_back(*context_, vk::BufferDesc{size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                       vk::MemoryUsage::Readback, "read-back"});
+        const graph::BufferHandle buffer = graph.import_buffer(
+            "readback " + name,
+            {buffers.back().handle(), size, {}, graph::ExternalState::host_read()});
+        targets.push_back({name, image, buffer, info.image.format, info.extent});
+    }
+    if (!targets.empty()) {
+        graph.add_pass(
+            "readback",
+            [&](graph::PassBuilder& b) {
+                for (const Target& t : targets) {
+                    b.read(t.image, Access::TransferSrc);
+                    b.write(t.buffer, Access::TransferDst);
+                }
+            },
+            [targets](graph::PassContext& ctx) {
+                for (const Target& t : targets) {
+                    VkBufferImageCopy region{};
+                    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+                    region.imageExtent = {t.extent.width, t.extent.height, 1};
+                    vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(t.image), ctx.layout(t.image),
+                                           ctx.buffer(t.buffer), 1, &region);
+                }
+            });
+    }
+    graph.compile();
+    uint64_t id = 0;
+    context_->submit_once([&](VkCommandBuffer cmd) { id = graph.execute(cmd); });
+    retired_.flush();  // submit_once waited: nothing retired is in use
+    ++frame_number_;
+
+    FrameOutput out;
+    out.passes = graph.collect(id);
+    for (size_t i = 0; i < targets.size(); ++i) {
+        buffers[i].invalidate();
+        out.images[targets[i].name] =
+            decode(targets[i].format, targets[i].extent, buffers[i].mapped());
+    }
+    return out;
+}
+
+}  // namespace ds::test
