@@ -15,4 +15,13 @@ grep -q '<string name="pLabelName"[^>]*>forward</string>' "$work/frame.xml" ||
     { echo "no 'forward' debug label in the capture"; exit 1; }
 draws=$(grep -c 'name="vkCmdDrawIndexed"' "$work/frame.xml")
 (( draws > 0 )) || { echo "no draws in the capture"; exit 1; }
-echo "renderdoc: $rdc holds the forward pass with $draws indexed draws"
+# The forward pass's depth state (dynamic state, set inside its label): EQUAL, writes off.
+forward=$(awk '/pLabelName[^>]*>forward</{f=1} /pLabelName[^>]*>skybox</{f=0} f' "$work/frame.xml")
+grep -q 'name="depthCompareOp"[^>]*string="VK_COMPARE_OP_EQUAL"' <<<"$forward" ||
+    { echo "forward: depth compare is not EQUAL"; exit 1; }
+grep -q '<uint name="depthWriteEnable"[^>]*>0</uint>' <<<"$forward" ||
+    { echo "forward: depth writes are not off"; exit 1; }
+if grep -q '<uint name="depthWriteEnable"[^>]*>1</uint>' <<<"$forward"; then
+    echo "forward: depth writes switched on"; exit 1
+fi
+echo "renderdoc: $rdc: forward has depth compare EQUAL, writes off; $draws indexed draws"
