@@ -116,18 +116,26 @@ void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const 
     if (draw.counts)
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kCountSet, 1,
                                 &draw.counts, 0, nullptr);
+    // prepass_sort: nearest instances first, so the depth test rejects hidden layers before
+    // their (normal-mapped) fragment shader runs; off: instanced groups in authored order.
+    auto draw_modes = [&](std::span<const AlphaMode> modes) {
+        if (!in.options.prepass_sort) return draw_groups(cmd, *in.scene, layout, modes);
+        const auto sorted =
+            sort_by_distance(*in.scene, in.camera_position, modes, DrawOrder::FrontToBack);
+        return draw_sorted(cmd, *in.scene, layout, sorted);
+    };
     if (draw.mask) {
         const AlphaMode opaque[] = {AlphaMode::Opaque};
         const AlphaMode mask[] = {AlphaMode::Mask};
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
-        draw_groups(cmd, *in.scene, layout, opaque);
+        draw_modes(opaque);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
-        draw_groups(cmd, *in.scene, layout, mask);
+        draw_modes(mask);
     } else {
-        // One pipeline, authored order: opaque and MASK interleaved as the scene lists them.
+        // One pipeline with discard for opaque and MASK alike.
         const AlphaMode all[] = {AlphaMode::Opaque, AlphaMode::Mask};
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
-        draw_groups(cmd, *in.scene, layout, all);
+        draw_modes(all);
     }
     vk::fn().cmd_end_rendering(cmd);
 }

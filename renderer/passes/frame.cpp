@@ -7,6 +7,7 @@ FrameOptions FrameOptions::from(const Settings& s) {
     o.prepass = s.get_bool("prepass");
     o.depth_equal = s.get("depth_compare") == "equal";
     o.masked_split = s.get_bool("masked_split");
+    o.prepass_sort = s.get_bool("prepass_sort");
     if (s.get("alpha_cutoff") != "material") o.alpha_cutoff = s.get_float("alpha_cutoff");
     o.shadows = s.get_bool("shadows");
     // GTAO and contact shadows read the prepass depth (and normals): no prepass, no effect.

@@ -56,6 +56,7 @@ struct FrameOptions {
     bool prepass = true;
     bool depth_equal = true;  // depth_compare=equal (else greater_or_equal; prepass on)
     bool masked_split = true;
+    bool prepass_sort = true;           // prepass draws instances front to back
     std::optional<float> alpha_cutoff;  // none: each material's own
     bool shadows = true;
     bool gtao = true;             // effective: also needs the prepass

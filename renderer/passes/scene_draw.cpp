@@ -70,34 +70,44 @@ DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
     return counts;
 }
 
-std::vector<BlendDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera) {
+std::vector<InstanceDraw> sort_by_distance(const GpuScene& scene, glm::vec3 camera,
+                                           std::span<const scene::AlphaMode> modes,
+                                           DrawOrder order) {
     struct Item {
         float distance;
-        BlendDraw draw;
+        InstanceDraw draw;
     };
     std::vector<Item> items;
     const auto& centers = scene.instance_centers();
     for (const scene::DrawGroup& g : scene.draw_groups()) {
-        if (g.alpha_mode != scene::AlphaMode::Blend) continue;
+        if (std::find(modes.begin(), modes.end(), g.alpha_mode) == modes.end()) continue;
         if (scene.meshes()[g.mesh].index_count == 0) continue;
         for (uint32_t i = g.first_instance; i < g.first_instance + g.instance_count; ++i)
             items.push_back({glm::distance(centers[i], camera), {i, &g}});
     }
-    std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
-        return a.distance != b.distance ? a.distance > b.distance
-                                        : a.draw.instance < b.draw.instance;
+    const bool back_to_front = order == DrawOrder::BackToFront;
+    std::sort(items.begin(), items.end(), [&](const Item& a, const Item& b) {
+        if (a.distance != b.distance) {
+            return back_to_front ? a.distance > b.distance : a.distance < b.distance;
+        }
+        return a.draw.instance < b.draw.instance;
     });
-    std::vector<BlendDraw> draws;
+    std::vector<InstanceDraw> draws;
     draws.reserve(items.size());
     for (const Item& item : items) draws.push_back(item.draw);
     return draws;
 }
 
+std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera) {
+    const scene::AlphaMode blend[] = {scene::AlphaMode::Blend};
+    return sort_by_distance(scene, camera, blend, DrawOrder::BackToFront);
+}
+
 DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
-                       std::span<const BlendDraw> draws) {
+                       std::span<const InstanceDraw> draws) {
     DrawCounts counts;
     uint32_t material = UINT32_MAX;
-    for (const BlendDraw& d : draws) {
+    for (const InstanceDraw& d : draws) {
         const GpuMesh& mesh = scene.meshes()[d.group->mesh];
         bind_material(cmd, scene, layout, mesh.material, material);
         vk::fn().cmd_set_cull_mode(cmd, cull_mode(d.group->double_sided));

@@ -48,16 +48,21 @@ DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
                        std::span<const scene::AlphaMode> modes,
                        std::optional<VkCullModeFlags> cull = std::nullopt);
 
-// A BLEND instance, in the order it must be drawn.
-struct BlendDraw {
+// One instance, in the order it must be drawn.
+struct InstanceDraw {
     uint32_t instance = 0;
     const scene::DrawGroup* group = nullptr;
 };
-// Every BLEND instance, back to front by the distance of its bounds' centre from `camera`;
-// the instance index breaks ties so the order (and the image) is stable.
-std::vector<BlendDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera);
+enum class DrawOrder { FrontToBack, BackToFront };
+// Every instance whose alpha mode is in `modes`, ordered by the distance of its bounds'
+// centre from `camera`; the instance index breaks ties so the order (and the image) is stable.
+std::vector<InstanceDraw> sort_by_distance(const GpuScene& scene, glm::vec3 camera,
+                                           std::span<const scene::AlphaMode> modes,
+                                           DrawOrder order);
+// Every BLEND instance, back to front (the order blending needs).
+std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera);
 // Draws them one instance at a time (the order is per instance, not per group).
 DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
-                       std::span<const BlendDraw> draws);
+                       std::span<const InstanceDraw> draws);
 
 }  // namespace ds::passes

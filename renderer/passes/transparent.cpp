@@ -93,7 +93,7 @@ void TransparentPass::record(graph::PassContext& ctx, const FrameInputs& in,
                          VK_ATTACHMENT_STORE_OP_NONE);
     begin_rendering(cmd, ctx.extent(res.hdr), {&color, 1}, &depth);
     set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());
-    const std::vector<BlendDraw> draws = sort_back_to_front(*in.scene, in.camera_position);
+    const std::vector<InstanceDraw> draws = sort_back_to_front(*in.scene, in.camera_position);
     if (!draws.empty()) {
         const VkPipelineLayout layout = layout_.handle();
         bind_geometry(cmd, *in.scene);

@@ -173,6 +173,10 @@ SettingsRegistry::SettingsRegistry() {
                   "separate prepass pipeline for MASK materials; off: one pipeline with discard "
                   "for all geometry (loses early-Z)",
                   I::Nothing),
+        bool_knob("prepass_sort", "prepass and depth", true,
+                  "prepass draws opaque and masked instances front to back (off: instanced "
+                  "groups in the scene's authored order, every hidden layer shaded)",
+                  I::Nothing),
         bool_knob("invariant", "prepass and depth", true,
                   "off: forward computes gl_Position with a different but mathematically equal "
                   "expression, to show what EQUAL does without invariance",
