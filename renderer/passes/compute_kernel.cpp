@@ -140,4 +140,32 @@ void ComputeKernel::dispatch(VkCommandBuffer cmd, VkDescriptorSet frame_set, uin
     vkCmdDispatch(cmd, group_count(extent.width), group_count(extent.height), 1);
 }
 
+graph::ImageHandle add_depth_normals_pass(graph::RenderGraph& graph, const char* pass_name,
+                                          const char* image_name, const graph::ImageDesc& desc,
+                                          ComputeKernel& kernel, const void* push_constants,
+                                          const FrameInputs& in, const FrameResources& res) {
+    using graph::Access;
+    struct Data {
+        graph::ImageHandle depth, normals, out;
+    };
+    const Data& data = graph.add_pass<Data>(
+        pass_name,
+        [&](graph::PassBuilder& b, Data& d) {
+            d.out = b.create_image(image_name, desc);
+            b.read(res.frame_uniforms, Access::UniformRead);
+            d.depth = b.read(res.depth, Access::Sampled);
+            d.normals = b.read(res.normals, Access::Sampled);
+            b.write(d.out, Access::StorageWrite);
+        },
+        [&kernel, push_constants, frame_set = in.frame_set, frame = in.frame_number](
+            graph::PassContext& ctx, const Data& d) {
+            const BoundImage images[] = {{ctx.view(d.depth), ctx.layout(d.depth)},
+                                         {ctx.view(d.normals), ctx.layout(d.normals)},
+                                         {ctx.view(d.out), ctx.layout(d.out)}};
+            kernel.dispatch(ctx.cmd(), frame_set, frame, images, push_constants, ctx.extent(d.out));
+        },
+        graph::PassKind::Compute);
+    return data.out;
+}
+
 }  // namespace ds::passes

@@ -12,6 +12,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/graph/graph.h"
 #include "renderer/passes/frame.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/descriptors.h"
@@ -79,6 +80,14 @@ class ComputeKernel {
     vk::PipelineLayout layout_;
     vk::Pipeline pipeline_;
 };
+
+// A compute pass that reads the prepass depth and normals (and the frame uniforms) and writes
+// one new image `image` of `desc` with `kernel` (bindings: depth, normals, output). Returns
+// the new image. gtao and contact_shadows are both this shape.
+graph::ImageHandle add_depth_normals_pass(graph::RenderGraph& graph, const char* pass_name,
+                                          const char* image_name, const graph::ImageDesc& desc,
+                                          ComputeKernel& kernel, const void* push_constants,
+                                          const FrameInputs& in, const FrameResources& res);
 
 // Group count covering `extent` with kGroupSize x kGroupSize groups.
 inline uint32_t group_count(uint32_t pixels) {

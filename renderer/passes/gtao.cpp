@@ -26,29 +26,10 @@ void GtaoPass::rebuild_pipelines(vk::DestroyList& retired) {
 
 void GtaoPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     if (!in.options.gtao) return;
-    struct Data {
-        graph::ImageHandle depth, normals, out;
-    };
-    const Data& data = graph.add_pass<Data>(
-        "gtao",
-        [&](graph::PassBuilder& b, Data& d) {
-            d.out = b.create_image("ao_raw", {.format = kFormat,
-                                              .size = graph::ImageSize::relative(scale_),
-                                              .semantic = graph::Semantic::AO});
-            b.read(res.frame_uniforms, Access::UniformRead);
-            d.depth = b.read(res.depth, Access::Sampled);
-            d.normals = b.read(res.normals, Access::Sampled);
-            b.write(d.out, Access::StorageWrite);
-        },
-        [this, frame_set = in.frame_set, frame = in.frame_number](graph::PassContext& ctx,
-                                                                  const Data& d) {
-            const BoundImage images[] = {{ctx.view(d.depth), ctx.layout(d.depth)},
-                                         {ctx.view(d.normals), ctx.layout(d.normals)},
-                                         {ctx.view(d.out), ctx.layout(d.out)}};
-            kernel_.dispatch(ctx.cmd(), frame_set, frame, images, &params_, ctx.extent(d.out));
-        },
-        graph::PassKind::Compute);
-    res.ao_raw = data.out;
+    const graph::ImageDesc desc{.format = kFormat,
+                                .size = graph::ImageSize::relative(scale_),
+                                .semantic = graph::Semantic::AO};
+    res.ao_raw = add_depth_normals_pass(graph, "gtao", "ao_raw", desc, kernel_, &params_, in, res);
 }
 
 }  // namespace ds::passes
