@@ -1,5 +1,7 @@
 // The listing commands: info, scenes, settings.
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "app/commands.h"
 #include "renderer/common/error.h"
@@ -36,10 +38,22 @@ int run_scenes() {
 }
 
 int run_settings() {
-    std::printf("%-18s %-6s %-8s %-14s %s\n", "NAME", "TYPE", "DEFAULT", "RANGE", "HELP");
-    for (const auto& d : SettingsRegistry::instance().all()) {
-        std::printf("%-18s %-6s %-8s %-14s %s\n", d.name.c_str(), d.type_name().c_str(),
-                    d.default_value.c_str(), d.range_text().c_str(), d.help.c_str());
+    // Columns as wide as their widest entry, so long ranges never push the help text.
+    const auto& defs = SettingsRegistry::instance().all();
+    size_t name_w = 4, default_w = 7, range_w = 5;
+    for (const auto& d : defs) {
+        name_w = std::max(name_w, d.name.size());
+        default_w = std::max(default_w, d.default_value.size());
+        range_w = std::max(range_w, d.range_text().size());
+    }
+    auto row = [&](const std::string& name, const std::string& type, const std::string& def,
+                   const std::string& range, const std::string& help) {
+        std::printf("%-*s  %-5s  %-*s  %-*s  %s\n", int(name_w), name.c_str(), type.c_str(),
+                    int(default_w), def.c_str(), int(range_w), range.c_str(), help.c_str());
+    };
+    row("NAME", "TYPE", "DEFAULT", "RANGE", "HELP");
+    for (const auto& d : defs) {
+        row(d.name, d.type_name(), d.default_value, d.range_text(), d.help);
     }
     return 0;
 }
