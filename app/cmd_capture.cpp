@@ -83,6 +83,11 @@ int run_capture(const Options& o) {
     json["counters"] = counters_note();
     json["skipped"] = frame.skipped;
     if (frame.covered_pixels) json["coverage"] = {{"covered_pixels", *frame.covered_pixels}};
+    json["msaa"] = {{"samples", frame.msaa.samples}};
+    if (frame.msaa.samples > 1) {
+        json["msaa"]["depth_resolve"] = frame.msaa.depth_resolve;
+        if (frame.msaa.edge_pixels) json["msaa"]["edge_pixels"] = *frame.msaa.edge_pixels;
+    }
     capture::write_json(out.staging_path("report.json"), json);
     if (o.dump_graph) std::printf("%s\n", frame.graph_dump.c_str());
     out.commit();

@@ -38,10 +38,19 @@ graph::ExternalState after_copy() {
     return {VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
 }
 
+// MsaaProbe samples the multisampled images after the graph, in a compute shader.
+graph::ExternalState probed(VkImageLayout layout) {
+    return {layout, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+}
+
 }  // namespace
 
-FrameTargets::FrameTargets(vk::Context& context, VkFormat final_format, VkFormat depth_format)
-    : context_(context), final_format_(final_format), depth_format_(depth_format) {}
+FrameTargets::FrameTargets(vk::Context& context, VkFormat final_format, VkFormat depth_format,
+                           VkFormat hdr_format)
+    : context_(context),
+      final_format_(final_format),
+      depth_format_(depth_format),
+      hdr_format_(hdr_format) {}
 
 FrameTargets::Target FrameTargets::make_target(VkFormat format, VkImageUsageFlags usage,
                                                uint32_t bytes_per_texel, const char* name) const {
@@ -56,8 +65,31 @@ FrameTargets::Target FrameTargets::make_target(VkFormat format, VkImageUsageFlag
     return t;
 }
 
-void FrameTargets::ensure(VkExtent2D size, bool counts, vk::DestroyList& retired) {
+void FrameTargets::ensure_msaa(VkSampleCountFlagBits samples, vk::DestroyList& retired) {
+    if (samples == samples_ && (samples == VK_SAMPLE_COUNT_1_BIT || msaa_depth_)) return;
+    if (msaa_depth_) retired.defer(std::move(msaa_depth_));
+    if (msaa_hdr_) retired.defer(std::move(msaa_hdr_));
+    msaa_depth_ = vk::Image{};
+    msaa_hdr_ = vk::Image{};
+    samples_ = samples;
+    if (samples == VK_SAMPLE_COUNT_1_BIT) return;  // at 1x no multisampled image exists
+    msaa_depth_ = vk::Image(
+        context_, {size_.width, size_.height, 1, depth_format_,
+                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                   samples, "msaa_depth"});
+    msaa_hdr_ =
+        vk::Image(context_, {size_.width, size_.height, 1, hdr_format_,
+                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                             samples, "msaa_hdr"});
+}
+
+void FrameTargets::ensure(VkExtent2D size, bool counts, VkSampleCountFlagBits samples,
+                          vk::DestroyList& retired) {
     if (size.width != size_.width || size.height != size_.height) {
+        if (msaa_depth_) retired.defer(std::move(msaa_depth_));
+        if (msaa_hdr_) retired.defer(std::move(msaa_hdr_));
+        msaa_depth_ = vk::Image{};
+        msaa_hdr_ = vk::Image{};
         if (final_.image) retired.defer(std::move(final_));
         if (depth_.image) retired.defer(std::move(depth_));
         for (Target& t : counts_)
@@ -78,6 +110,7 @@ void FrameTargets::ensure(VkExtent2D size, bool counts, vk::DestroyList& retired
                                      VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                      4, kCountNames[i]);
     }
+    ensure_msaa(samples, retired);
 }
 
 void FrameTargets::import(graph::RenderGraph& graph, const passes::FrameOptions& options,
@@ -97,6 +130,29 @@ void FrameTargets::import(graph::RenderGraph& graph, const passes::FrameOptions&
     res.depth = import_target(
         "depth", depth_,
         options.reverse_z ? graph::Semantic::ReverseZDepth : graph::Semantic::ForwardZDepth);
+    if (options.msaa()) {
+        const graph::Semantic depth_semantic =
+            options.reverse_z ? graph::Semantic::ReverseZDepth : graph::Semantic::ForwardZDepth;
+        auto import_msaa = [&](const char* name, const vk::Image& image, graph::Semantic semantic,
+                               VkImageLayout final_layout) {
+            graph::ExternalImage e;
+            e.image = image.handle();
+            e.view = image.view();
+            e.desc = {.format = image.format(),
+                      .size = graph::ImageSize::fixed(size_.width, size_.height),
+                      .samples = samples_,
+                      .semantic = semantic};
+            // Last frame's probe read it; the contents are not needed.
+            e.initial = {VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                         VK_ACCESS_2_NONE};
+            e.final = probed(final_layout);
+            return graph.import_image(name, e);
+        };
+        res.msaa_depth = import_msaa("msaa_depth", msaa_depth_, depth_semantic,
+                                     VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+        res.msaa_hdr = import_msaa("msaa_hdr", msaa_hdr_, graph::Semantic::HdrColor,
+                                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    }
     counted_ = {};
     if (!options.count_fragments) return;
     // Only passes that run count: the prepass is left out with prepass=off.
@@ -175,7 +231,19 @@ std::optional<uint64_t> FrameTargets::count_sum(CountImage which) const {
     return sum;
 }
 
+std::vector<float> FrameTargets::depth_floats() const {
+    if (depth_format_ != VK_FORMAT_D32_SFLOAT && depth_format_ != VK_FORMAT_D32_SFLOAT_S8_UINT)
+        return {};
+    depth_.readback.invalidate();
+    std::vector<float> out(size_t(size_.width) * size_.height);
+    std::memcpy(out.data(), depth_.readback.mapped(), out.size() * sizeof(float));
+    return out;
+}
+
 void FrameTargets::reset() {
+    msaa_depth_ = vk::Image{};
+    msaa_hdr_ = vk::Image{};
+    samples_ = VK_SAMPLE_COUNT_1_BIT;
     final_ = Target{};
     depth_ = Target{};
     counts_ = {};

@@ -8,10 +8,12 @@
 #include "renderer/frame_uniforms.h"
 #include "renderer/gpu_scene.h"
 #include "renderer/graph/graph.h"
+#include "renderer/msaa_probe.h"
 #include "renderer/passes/ao_spatial.h"
 #include "renderer/passes/ao_temporal.h"
 #include "renderer/passes/contact_shadows.h"
 #include "renderer/passes/depth_prepass.h"
+#include "renderer/passes/depth_resolve.h"
 #include "renderer/passes/forward.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/gtao.h"
@@ -91,6 +93,14 @@ std::vector<std::string> skipped_passes(const passes::FrameOptions& o, const Set
     return out;
 }
 
+// msaa must be a count the device renders colour and depth with; the registry cannot know.
+void check_samples(const vk::DeviceReport& report, VkSampleCountFlagBits samples) {
+    const VkSampleCountFlags supported = report.color_sample_counts & report.depth_sample_counts;
+    if (supported & samples) return;
+    throw Error("msaa=" + std::to_string(int(samples)) + ": " + report.candidate.name +
+                " supports sample counts " + vk::sample_counts_text(supported));
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -120,6 +130,7 @@ struct Renderer::Impl {
     std::unique_ptr<Passes> passes;
     std::unique_ptr<FrameTargets> targets;
     std::unique_ptr<GpuScene> scene;
+    std::unique_ptr<MsaaProbe> probe;  // created by the first msaa > 1 frame
     scene::DirectionalLight sun;
     scene::Bounds scene_bounds;
     // Temporal state: last frame's view-projection, unless the next frame is a cut.
@@ -159,14 +170,15 @@ Renderer::Impl::Impl(const RendererOptions& options) {
     const VkFormat depth_format = context->report().depth_format;
     passes = std::make_unique<Passes>(passes::PassServices{
         *context, *compiler, frame_layout.handle(), material_layout.handle(), depth_format});
-    targets =
-        std::make_unique<FrameTargets>(*context, passes::TonemapPass::kFinalFormat, depth_format);
+    targets = std::make_unique<FrameTargets>(*context, passes::TonemapPass::kFinalFormat,
+                                             depth_format, passes::ForwardPass::kHdrFormat);
 }
 
 Renderer::Impl::~Impl() {
     if (!context) return;
     vkDeviceWaitIdle(context->device());  // teardown: an error here has nowhere to go
     if (targets) targets->reset();
+    probe.reset();
     scene.reset();
     frames.reset();  // flushes every destroy list
     passes.reset();
@@ -250,9 +262,18 @@ void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::Fra
         if (auto ticks = slot.timestamps.results())
             result.gpu_ms = slot.timestamps.ticks_to_ms((*ticks)[0], (*ticks)[1]);
     }
-    if (read_back == ReadBack::Yes || options.count_fragments)
+    if (read_back != ReadBack::No || options.count_fragments)
         result.covered_pixels = targets->covered_pixels(options.far_depth());
-    if (read_back == ReadBack::Yes) result.rgba8 = targets->rgba8();
+    if (read_back != ReadBack::No) result.rgba8 = targets->rgba8();
+    result.msaa.samples = uint32_t(options.samples);
+    if (!options.msaa()) return;
+    result.msaa.depth_resolve = passes::depth_resolve_name(context->report(), options.reverse_z);
+    result.msaa.edge_pixels = probe->edge_pixels();
+    if (read_back == ReadBack::WithMsaaDepth) {
+        result.msaa.depth_samples = probe->depth_samples();
+        result.msaa.resolved_depth = targets->depth_floats();
+        if (result.msaa.resolved_depth.empty()) result.msaa.depth_samples.clear();
+    }
 }
 
 Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl>(options)) {}
@@ -307,13 +328,15 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     if (options.count_fragments && !r.context->report().fragment_stores_and_atomics)
         throw Error("count_fragments=on needs fragmentStoresAndAtomics, which " +
                     r.context->report().candidate.name + " does not offer");
+    check_samples(r.context->report(), options.samples);
+    if (options.msaa() && !r.probe) r.probe = std::make_unique<MsaaProbe>(*r.context, *r.compiler);
     const auto start = std::chrono::steady_clock::now();
     vk::Frame& frame = r.frames->begin();
     Impl::Slot& slot = r.slots[frame.number % vk::FrameRing::kFramesInFlight];
     const VkExtent2D size{width, height};
     if (size.width != r.last_size.width || size.height != r.last_size.height) r.cut = true;
     r.last_size = size;
-    r.targets->ensure(size, options.count_fragments, frame.retired);
+    r.targets->ensure(size, options.count_fragments, options.samples, frame.retired);
     if (r.cut) r.graph->invalidate_history();
     r.graph->begin_frame(size, frame.retired);  // a new size invalidates history too
 
@@ -334,8 +357,11 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     const uint64_t graph_frame = r.graph->execute(cmd);
     if (slot.timestamps.count())
         slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 1);
-    const bool depth = read_back == ReadBack::Yes || options.count_fragments;
-    r.targets->record_read_back(cmd, read_back == ReadBack::Yes, depth);
+    const bool depth = read_back != ReadBack::No || options.count_fragments;
+    r.targets->record_read_back(cmd, read_back != ReadBack::No, depth);
+    if (options.msaa())
+        r.probe->record(cmd, r.targets->msaa_depth(), r.targets->msaa_hdr(),
+                        read_back == ReadBack::WithMsaaDepth);
     r.frames->submit(frame);
 
     FrameResult result;

@@ -38,6 +38,19 @@ struct PassResult {
     std::optional<uint64_t> shaded_fragments;
 };
 
+// msaa: how the frame was multisampled.
+struct MsaaResult {
+    uint32_t samples = 1;
+    std::string depth_resolve;  // msaa > 1: "native-max" | "native-min" | "shader"; else ""
+    // msaa > 1: pixels whose HDR colour samples are not all equal (after transparent, before
+    // the resolve); exact, counted by a compute pass over every sample.
+    std::optional<uint64_t> edge_pixels;
+    // ReadBack::WithMsaaDepth, msaa > 1 and a D32 depth only: every depth sample (per pixel,
+    // `samples` consecutive, row 0 = top) and the resolved depth (one per pixel).
+    std::vector<float> depth_samples;
+    std::vector<float> resolved_depth;
+};
+
 struct FrameResult {
     uint32_t width = 0, height = 0;
     std::vector<uint8_t> rgba8;      // final image, sRGB-encoded, tightly packed, top row first;
@@ -50,9 +63,11 @@ struct FrameResult {
     std::optional<uint64_t> covered_pixels;
     std::vector<std::string> skipped;  // "gtao: skipped (prepass off)", in pass order
     std::string graph_dump;            // the compiled graph (RenderGraph::dump())
+    MsaaResult msaa;
 };
 
-enum class ReadBack { Yes, No };  // benchmarks skip the copy to host memory
+// Benchmarks skip the copy to host memory; WithMsaaDepth is Yes plus MsaaResult's depth.
+enum class ReadBack { Yes, No, WithMsaaDepth };
 
 class Renderer {
   public:
@@ -65,7 +80,8 @@ class Renderer {
     // Uploads geometry, materials and textures (+ mips); replaces the previous scene.
     void set_scene(const scene::Scene& scene);
     // Draws one frame at width x height and reads it back (blocks until it is done).
-    // Throws ds::Error before set_scene() or for a zero size.
+    // Throws ds::Error before set_scene(), for a zero size, or for an msaa sample count the
+    // device does not support (the message lists the supported ones).
     FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
                        uint32_t height, ReadBack read_back = ReadBack::Yes);
     // A camera cut: the next frame's temporal passes start over (no history, and its

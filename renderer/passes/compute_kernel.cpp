@@ -26,6 +26,8 @@ vk::Sampler nearest_sampler(vk::Context& context) {
     return vk::Sampler(context, info, "screen-space nearest");
 }
 
+}  // namespace
+
 vk::Pipeline create_compute_pipeline(vk::Context& context, VkPipelineLayout layout,
                                      const std::vector<uint32_t>& spirv, const char* name) {
     VkDevice device = context.device();
@@ -52,8 +54,6 @@ vk::Pipeline create_compute_pipeline(vk::Context& context, VkPipelineLayout layo
     context.set_name(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
     return vk::Pipeline(device, pipeline);
 }
-
-}  // namespace
 
 ComputeKernel::ComputeKernel(const PassServices& services, std::string shader,
                              std::vector<KernelBinding> bindings, uint32_t push_constant_size)

@@ -24,7 +24,8 @@ DepthPrepass::DepthPrepass(const PassServices& services)
       count_layout_(create_count_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "prepass count sets"),
       pipelines_([this](uint32_t key) { return compile(key); },
-                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }) {
+                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }),
+      resolve_(services) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           empty_layout_.handle(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "depth prepass layout");
@@ -34,6 +35,7 @@ DepthPrepass::DepthPrepass(const PassServices& services)
 
 void DepthPrepass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
+    resolve_.rebuild_pipelines(retired);
 }
 
 ShaderStages DepthPrepass::compile(uint32_t key) const {
@@ -53,61 +55,133 @@ vk::Pipeline DepthPrepass::create(uint32_t key, const ShaderStages& s) const {
         .color_attachment(kNormalFormat)
         .color_attachment(kRoughnessFormat)
         .depth_attachment(services_.depth_format)
+        .samples(key_samples(key))
         .build(services_.context, kNames[key & 3u]);
 }
 
 void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
-    const uint32_t counting = res.prepass_counts.valid() ? kCounting : 0u;
+    const uint32_t common =
+        (res.prepass_counts.valid() ? kCounting : 0u) | samples_key(in.options.samples);
     Draw draw;
     if (in.options.masked_split) {
-        draw.opaque = pipelines_.get(kOpaque | counting);
-        draw.mask = pipelines_.get(kMask | counting);
+        draw.opaque = pipelines_.get(kOpaque | common);
+        draw.mask = pipelines_.get(kMask | common);
     } else {
-        draw.opaque = pipelines_.get(kUnsplit | counting);
+        draw.opaque = pipelines_.get(kUnsplit | common);
     }
     struct Data {
         FrameInputs in;
         FrameResources res;
+        Msaa msaa;
         Draw draw;
     };
     graph.add_pass<Data>(
         kName,
         [&](graph::PassBuilder& b, Data& d) {
-            const graph::ImageSize full = graph::ImageSize::relative(1.0f);
-            res.normals = b.create_image("normals", {.format = kNormalFormat,
-                                                     .size = full,
-                                                     .semantic = graph::Semantic::EncodedNormal});
-            res.roughness = b.create_image("roughness", {.format = kRoughnessFormat,
-                                                         .size = full,
-                                                         .semantic = graph::Semantic::UnormScalar});
-            b.write(res.depth, Access::DepthAttachment);
-            b.write(res.normals, Access::ColorAttachment);
-            b.write(res.roughness, Access::ColorAttachment);
-            b.read(res.frame_uniforms, Access::UniformRead,
-                   graph::Shader::Vertex | graph::Shader::Fragment);
-            if (counting) declare_counts(b, res.prepass_counts);
-            d = {in, res, draw};
+            const Msaa msaa = declare(b, in, res);
+            d = {in, res, msaa, draw};
         },
-        [this](graph::PassContext& ctx, const Data& d) { record(ctx, d.in, d.res, d.draw); });
+        [this](graph::PassContext& ctx, const Data& d) {
+            record(ctx, d.in, d.res, d.msaa, d.draw);
+        });
+}
+
+DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInputs& in,
+                                         FrameResources& res) const {
+    const graph::ImageSize full = graph::ImageSize::relative(1.0f);
+    res.normals = b.create_image(
+        "normals",
+        {.format = kNormalFormat, .size = full, .semantic = graph::Semantic::EncodedNormal});
+    res.roughness = b.create_image(
+        "roughness",
+        {.format = kRoughnessFormat, .size = full, .semantic = graph::Semantic::UnormScalar});
+    b.read(res.frame_uniforms, Access::UniformRead,
+           graph::Shader::Vertex | graph::Shader::Fragment);
+    if (res.prepass_counts.valid()) declare_counts(b, res.prepass_counts);
+    Msaa msaa;
+    if (!in.options.msaa()) {
+        b.write(res.depth, Access::DepthAttachment);
+        b.write(res.normals, Access::ColorAttachment);
+        b.write(res.roughness, Access::ColorAttachment);
+        return msaa;
+    }
+    const VkSampleCountFlagBits samples = in.options.samples;
+    msaa.normals = b.create_image("msaa_normals", {.format = kNormalFormat,
+                                                   .size = full,
+                                                   .samples = samples,
+                                                   .semantic = graph::Semantic::EncodedNormal});
+    msaa.roughness = b.create_image("msaa_roughness", {.format = kRoughnessFormat,
+                                                       .size = full,
+                                                       .samples = samples,
+                                                       .semantic = graph::Semantic::UnormScalar});
+    b.write(res.msaa_depth, Access::DepthAttachment);
+    b.write(msaa.normals, Access::ColorAttachment);
+    b.write(msaa.roughness, Access::ColorAttachment);
+    b.write(res.normals, Access::ResolveDst);
+    b.write(res.roughness, Access::ResolveDst);
+    // The shader resolve draws into the depth as an attachment after the rendering.
+    const bool native = native_depth_resolve(services_.context.report(), in.options.reverse_z);
+    b.write(res.depth, native ? Access::ResolveDst : Access::DepthAttachment);
+    return msaa;
+}
+
+void DepthPrepass::begin(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
+                         const Msaa& msaa) const {
+    VkCommandBuffer cmd = ctx.cmd();
+    const std::array<float, 4> no_normal = {0.5f, 0.5f, 0.5f, 0.0f};  // the zero vector
+    if (!in.options.msaa()) {
+        // Everything is stored: forward, GTAO, contact shadows and captures read it.
+        const std::array<VkRenderingAttachmentInfo, 2> colors = {
+            color_attachment(ctx.view(res.normals), VK_ATTACHMENT_LOAD_OP_CLEAR, no_normal),
+            color_attachment(ctx.view(res.roughness), VK_ATTACHMENT_LOAD_OP_CLEAR)};
+        const VkRenderingAttachmentInfo depth = depth_attachment(
+            ctx.view(res.depth), ctx.layout(res.depth), VK_ATTACHMENT_LOAD_OP_CLEAR,
+            VK_ATTACHMENT_STORE_OP_STORE, in.options.far_depth());
+        begin_rendering(cmd, ctx.extent(res.depth), colors, &depth);
+        return;
+    }
+    // Only the resolved normals and roughness are read later: the samples need no store.
+    const std::array<VkRenderingAttachmentInfo, 2> colors = {
+        resolving_color_attachment(ctx.view(msaa.normals), ctx.view(res.normals),
+                                   VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE,
+                                   no_normal),
+        resolving_color_attachment(ctx.view(msaa.roughness), ctx.view(res.roughness),
+                                   VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE)};
+    // STORE: forward, skybox and transparent LOAD these samples (seed 000's lesson).
+    VkRenderingAttachmentInfo depth = depth_attachment(
+        ctx.view(res.msaa_depth), ctx.layout(res.msaa_depth), VK_ATTACHMENT_LOAD_OP_CLEAR,
+        VK_ATTACHMENT_STORE_OP_STORE, in.options.far_depth());
+    if (const VkResolveModeFlagBits mode =
+            native_depth_resolve(services_.context.report(), in.options.reverse_z)) {
+        depth.resolveMode = mode;
+        depth.resolveImageView = ctx.view(res.depth);
+        depth.resolveImageLayout = ctx.layout(res.depth);
+    }
+    begin_rendering(cmd, ctx.extent(res.depth), colors, &depth);
 }
 
 void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
-                          Draw draw) {
+                          const Msaa& msaa, Draw draw) {
     VkCommandBuffer cmd = ctx.cmd();
     if (res.prepass_counts.valid()) {
         clear_counts(cmd, ctx.image(res.prepass_counts));
         draw.counts = count_sets_.allocate(in.frame_number, count_layout_.handle());
         write_count_set(services_.context.device(), draw.counts, ctx.view(res.prepass_counts));
     }
-    // Everything is stored: forward, GTAO, contact shadows and captures read it.
-    const std::array<VkRenderingAttachmentInfo, 2> colors = {
-        color_attachment(ctx.view(res.normals), VK_ATTACHMENT_LOAD_OP_CLEAR,
-                         {0.5f, 0.5f, 0.5f, 0.0f}),  // the zero vector: "no surface"
-        color_attachment(ctx.view(res.roughness), VK_ATTACHMENT_LOAD_OP_CLEAR)};
-    const VkRenderingAttachmentInfo depth =
-        depth_attachment(ctx.view(res.depth), ctx.layout(res.depth), VK_ATTACHMENT_LOAD_OP_CLEAR,
-                         VK_ATTACHMENT_STORE_OP_STORE, in.options.far_depth());
-    begin_rendering(cmd, ctx.extent(res.depth), colors, &depth);
+    begin(ctx, in, res, msaa);
+    draw_scene(cmd, in, draw);
+    vk::fn().cmd_end_rendering(cmd);
+    if (in.options.msaa() &&
+        !native_depth_resolve(services_.context.report(), in.options.reverse_z))
+        resolve_.record(cmd, in,
+                        {.msaa_image = ctx.image(res.msaa_depth),
+                         .msaa_view = ctx.view(res.msaa_depth),
+                         .depth_view = ctx.view(res.depth),
+                         .extent = ctx.extent(res.depth),
+                         .samples = in.options.samples});
+}
+
+void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, Draw draw) const {
     set_depth_state(cmd, /*test=*/true, /*write=*/true, in.options.closer());
     bind_geometry(cmd, *in.scene);
     const VkPipelineLayout layout = layout_.handle();
@@ -137,7 +211,6 @@ void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const 
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
         draw_modes(all);
     }
-    vk::fn().cmd_end_rendering(cmd);
 }
 
 }  // namespace ds::passes

@@ -8,11 +8,18 @@
 // guaranteed), then MASK (alpha test before any other texture read). masked_split=off draws
 // all geometry with one pipeline that has the discard, to show what losing early-Z costs.
 // BLEND materials are not drawn here. Cull mode follows each draw group.
+//
+// msaa > 1: renders into multisampled depth (res.msaa_depth, STOREd: forward LOADs it),
+// normals and roughness; normals and roughness resolve inline (AVERAGE) into the
+// single-sample images; depth resolves to the nearest sample, natively (MAX / MIN resolve
+// attachment) where the device has the mode, else by DepthResolve after the rendering, in
+// this same pass.
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
 
 #include "renderer/graph/graph.h"
+#include "renderer/passes/depth_resolve.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/vk/descriptors.h"
@@ -35,7 +42,8 @@ class DepthPrepass {
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
 
   private:
-    // Variant key: the alpha test (bits 0-1, the shader's ALPHA_MASK), counting (bit 2).
+    // Variant key: the alpha test (bits 0-1, the shader's ALPHA_MASK), counting (bit 2),
+    // samples_key() (bits 8-15).
     enum AlphaTest : uint32_t { kOpaque = 0, kMask = 1, kUnsplit = 2 };
     static constexpr uint32_t kCounting = 4;
 
@@ -47,8 +55,17 @@ class DepthPrepass {
 
     ShaderStages compile(uint32_t key) const;
     vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+    // msaa > 1: the multisampled normals and roughness (transients) of this frame.
+    struct Msaa {
+        graph::ImageHandle normals, roughness;
+    };
+
+    Msaa declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res) const;
     void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
-                Draw draw);
+                const Msaa& msaa, Draw draw);
+    void begin(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
+               const Msaa& msaa) const;
+    void draw_scene(VkCommandBuffer cmd, const FrameInputs& in, Draw draw) const;
 
     PassServices services_;
     vk::DescriptorSetLayout empty_layout_;
@@ -56,6 +73,7 @@ class DepthPrepass {
     vk::PipelineLayout layout_;
     FrameDescriptorPool count_sets_;
     PipelineVariants pipelines_;
+    DepthResolve resolve_;
 };
 
 }  // namespace ds::passes

@@ -23,7 +23,8 @@ ForwardPass::ForwardPass(const PassServices& services)
       count_layout_(create_count_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "forward count sets"),
       pipelines_([this](uint32_t key) { return compile(key); },
-                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }) {
+                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }),
+      resolve_(services) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           lighting_.layout(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "forward layout");
@@ -32,6 +33,7 @@ ForwardPass::ForwardPass(const PassServices& services)
 
 void ForwardPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
+    resolve_.rebuild_pipelines(retired);
 }
 
 ShaderStages ForwardPass::compile(uint32_t key) const {
@@ -55,13 +57,14 @@ vk::Pipeline ForwardPass::create(uint32_t key, const ShaderStages& s) const {
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
         .color_attachment(kHdrFormat)
         .depth_attachment(services_.depth_format)
+        .samples(key_samples(key))
         .build(services_.context, name);
 }
 
 void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const FrameOptions& o = in.options;
-    const uint32_t common =
-        (o.invariant ? 0u : kNonInvariant) | (res.forward_counts.valid() ? kCounting : 0u);
+    const uint32_t common = (o.invariant ? 0u : kNonInvariant) |
+                            (res.forward_counts.valid() ? kCounting : 0u) | samples_key(o.samples);
     Draw draw;
     if (o.prepass) {
         draw.opaque = pipelines_.get(common | kPrepassInputs);
@@ -94,14 +97,26 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
 
 void ForwardPass::declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res,
                           const LightingInputs& lighting) const {
-    res.hdr = b.create_image("hdr", {.format = kHdrFormat,
-                                     .size = graph::ImageSize::relative(1.0f),
-                                     .semantic = graph::Semantic::HdrColor});
-    b.write(res.hdr, Access::ColorAttachment);
-    if (in.options.prepass)
-        b.read(res.depth, Access::DepthReadOnly);
-    else
-        b.write(res.depth, Access::DepthAttachment);
+    const FrameOptions& o = in.options;
+    if (o.msaa()) {
+        // res.hdr is transparent's resolve destination.
+        b.write(res.msaa_hdr, Access::ColorAttachment);
+        if (o.prepass) {
+            b.read(res.msaa_depth, Access::DepthReadOnly);
+        } else {
+            b.write(res.msaa_depth, Access::DepthAttachment);
+            b.write(res.depth, native_resolve(o) ? Access::ResolveDst : Access::DepthAttachment);
+        }
+    } else {
+        res.hdr = b.create_image("hdr", {.format = kHdrFormat,
+                                         .size = graph::ImageSize::relative(1.0f),
+                                         .semantic = graph::Semantic::HdrColor});
+        b.write(res.hdr, Access::ColorAttachment);
+        if (o.prepass)
+            b.read(res.depth, Access::DepthReadOnly);
+        else
+            b.write(res.depth, Access::DepthAttachment);
+    }
     LightingSet::declare(b, lighting);
     b.read(res.frame_uniforms, Access::UniformRead,
            graph::Shader::Vertex | graph::Shader::Fragment);
@@ -120,17 +135,7 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     }
     const VkDescriptorSet lighting = lighting_.write(ctx, in.frame_number, draw.lighting);
 
-    const VkRenderingAttachmentInfo color =
-        color_attachment(ctx.view(res.hdr), VK_ATTACHMENT_LOAD_OP_CLEAR, kBackground);
-    // With the prepass the depth is only tested: loaded, never stored (STORE_OP_NONE keeps
-    // the contents and needs no write access), in the read-only layout the graph chose.
-    const VkRenderingAttachmentInfo depth =
-        o.prepass ? depth_attachment(ctx.view(res.depth), ctx.layout(res.depth),
-                                     VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_NONE)
-                  : depth_attachment(ctx.view(res.depth), ctx.layout(res.depth),
-                                     VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE,
-                                     o.far_depth());
-    begin_rendering(cmd, ctx.extent(res.hdr), {&color, 1}, &depth);
+    begin(ctx, o, res);
     const VkCompareOp test = !o.prepass      ? o.closer()
                              : o.depth_equal ? VK_COMPARE_OP_EQUAL
                                              : o.closer_or_equal();
@@ -154,6 +159,39 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     if (draw.mask) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
     draw_groups(cmd, *in.scene, layout, mask);
     vk::fn().cmd_end_rendering(cmd);
+    if (o.msaa() && !o.prepass && !native_resolve(o))
+        resolve_.record(cmd, in,
+                        {.msaa_image = ctx.image(res.msaa_depth),
+                         .msaa_view = ctx.view(res.msaa_depth),
+                         .depth_view = ctx.view(res.depth),
+                         .extent = ctx.extent(res.depth),
+                         .samples = o.samples});
+}
+
+bool ForwardPass::native_resolve(const FrameOptions& o) const {
+    return native_depth_resolve(services_.context.report(), o.reverse_z) != VK_RESOLVE_MODE_NONE;
+}
+
+void ForwardPass::begin(graph::PassContext& ctx, const FrameOptions& o,
+                        const FrameResources& res) const {
+    const graph::ImageHandle color_image = o.msaa() ? res.msaa_hdr : res.hdr;
+    const graph::ImageHandle depth_image = o.msaa() ? res.msaa_depth : res.depth;
+    const VkRenderingAttachmentInfo color =
+        color_attachment(ctx.view(color_image), VK_ATTACHMENT_LOAD_OP_CLEAR, kBackground);
+    // With the prepass the depth is only tested: loaded, never stored (STORE_OP_NONE keeps
+    // the contents and needs no write access), in the read-only layout the graph chose.
+    VkRenderingAttachmentInfo depth =
+        o.prepass ? depth_attachment(ctx.view(depth_image), ctx.layout(depth_image),
+                                     VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_NONE)
+                  : depth_attachment(ctx.view(depth_image), ctx.layout(depth_image),
+                                     VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE,
+                                     o.far_depth());
+    if (o.msaa() && !o.prepass && native_resolve(o)) {
+        depth.resolveMode = native_depth_resolve(services_.context.report(), o.reverse_z);
+        depth.resolveImageView = ctx.view(res.depth);
+        depth.resolveImageLayout = ctx.layout(res.depth);
+    }
+    begin_rendering(ctx.cmd(), ctx.extent(color_image), {&color, 1}, &depth);
 }
 
 }  // namespace ds::passes

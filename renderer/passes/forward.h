@@ -14,12 +14,18 @@
 // vertex shader without `invariant` and with a different (equal in exact arithmetic)
 // expression.
 // BLEND materials are the transparent pass's.
+//
+// msaa > 1: draws into res.msaa_hdr (cleared and stored: skybox and transparent add to it,
+// and transparent resolves it into res.hdr) against res.msaa_depth. Without the prepass it
+// writes that depth and resolves it to the nearest sample into res.depth, natively or by
+// DepthResolve after its rendering.
 #include <array>
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
 
 #include "renderer/graph/graph.h"
+#include "renderer/passes/depth_resolve.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/lighting_set.h"
 #include "renderer/passes/pass_util.h"
@@ -39,9 +45,9 @@ class ForwardPass {
     explicit ForwardPass(const PassServices& services);
 
     void rebuild_pipelines(vk::DestroyList& retired);
-    // Creates res.hdr. Reads res.depth (writes it without the prepass), res.shadow_map,
-    // res.normals, res.roughness, res.ao, res.contact_shadows where valid. Counts into
-    // res.forward_counts when it is valid.
+    // Creates res.hdr (msaa > 1: draws into res.msaa_hdr instead). Reads res.depth (writes it
+    // without the prepass), res.shadow_map, res.normals, res.roughness, res.ao, res.contact_shadows
+    // where valid. Counts into res.forward_counts when it is valid.
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
 
   private:
@@ -50,6 +56,7 @@ class ForwardPass {
     static constexpr uint32_t kAlphaMask = 2;      // ALPHA_MASK=1 (not with prepass + EQUAL)
     static constexpr uint32_t kNonInvariant = 4;   // invariant=off vertex shader
     static constexpr uint32_t kCounting = 8;
+    // samples_key() holds bits 8-15.
 
     struct Draw {
         VkPipeline opaque = VK_NULL_HANDLE;  // with the prepass and EQUAL: opaque and MASK
@@ -63,6 +70,8 @@ class ForwardPass {
                  const LightingInputs& lighting) const;
     void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
                 const Draw& draw);
+    void begin(graph::PassContext& ctx, const FrameOptions& o, const FrameResources& res) const;
+    bool native_resolve(const FrameOptions& o) const;
 
     PassServices services_;
     LightingSet lighting_;
@@ -70,6 +79,7 @@ class ForwardPass {
     vk::PipelineLayout layout_;
     FrameDescriptorPool count_sets_;
     PipelineVariants pipelines_;
+    DepthResolve resolve_;  // prepass=off with msaa > 1, without a native MAX / MIN
 };
 
 }  // namespace ds::passes

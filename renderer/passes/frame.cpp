@@ -1,5 +1,10 @@
 #include "renderer/passes/frame.h"
 
+#include <bit>
+#include <string>
+
+#include "renderer/common/error.h"
+
 namespace ds::passes {
 
 FrameOptions FrameOptions::from(const Settings& s) {
@@ -17,6 +22,12 @@ FrameOptions FrameOptions::from(const Settings& s) {
     o.invariant = s.get_bool("invariant");
     o.reverse_z = s.get_bool("reverse_z");
     o.count_fragments = s.get_bool("count_fragments");
+    // The registry allows 1..8; VkSampleCountFlagBits are the powers of two themselves.
+    const int msaa = s.get_int("msaa");
+    if (!std::has_single_bit(unsigned(msaa)))
+        throw Error("setting msaa: " + std::to_string(msaa) +
+                    " is not a power of two (1, 2, 4, 8)");
+    o.samples = VkSampleCountFlagBits(msaa);
     return o;
 }
 

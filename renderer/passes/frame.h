@@ -65,6 +65,7 @@ struct FrameOptions {
     bool invariant = true;
     bool reverse_z = true;
     bool count_fragments = false;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // msaa
 
     static FrameOptions from(const Settings& settings);
     // The depth test that keeps the nearer fragment, and the clear value for "far".
@@ -73,6 +74,7 @@ struct FrameOptions {
         return reverse_z ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
     }
     float far_depth() const { return reverse_z ? 0.0f : 1.0f; }
+    bool msaa() const { return samples != VK_SAMPLE_COUNT_1_BIT; }
 };
 
 // Graph handles the passes of one frame meet through; a pass fills what it writes.
@@ -87,7 +89,12 @@ struct FrameResources {
     graph::ImageHandle ao;               // ao_temporal output (what forward reads)
     graph::ImageHandle contact_shadows;  // R8, 1 = lit
     graph::ImageHandle hdr;              // R16G16B16A16_SFLOAT scene colour
-    graph::ImageHandle final_image;      // R8G8B8A8_SRGB (imported; tonemap writes it)
+    // msaa > 1 only (imported, so they can be probed after the graph): the multisampled
+    // depth the prepass stores and forward, skybox and transparent load, and the
+    // multisampled HDR colour that transparent resolves into hdr.
+    graph::ImageHandle msaa_depth;
+    graph::ImageHandle msaa_hdr;
+    graph::ImageHandle final_image;  // R8G8B8A8_SRGB (imported; tonemap writes it)
     // With count_fragments=on: per-pixel u32 counts of fragments that ran the shader.
     graph::ImageHandle prepass_counts;
     graph::ImageHandle forward_counts;

@@ -58,6 +58,18 @@ VkRenderingAttachmentInfo color_attachment(VkImageView view, VkAttachmentLoadOp 
     return a;
 }
 
+VkRenderingAttachmentInfo resolving_color_attachment(VkImageView msaa, VkImageView resolve,
+                                                     VkAttachmentLoadOp load,
+                                                     VkAttachmentStoreOp store,
+                                                     std::array<float, 4> clear) {
+    VkRenderingAttachmentInfo a = color_attachment(msaa, load, clear);
+    a.storeOp = store;
+    a.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+    a.resolveImageView = resolve;
+    a.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    return a;
+}
+
 VkRenderingAttachmentInfo depth_attachment(VkImageView view, VkImageLayout layout,
                                            VkAttachmentLoadOp load, VkAttachmentStoreOp store,
                                            float clear_depth) {

@@ -78,6 +78,22 @@ void begin_rendering(VkCommandBuffer cmd, VkExtent2D extent,
 // The dynamic depth state every pipeline declares (pipeline.h), in one call.
 void set_depth_state(VkCommandBuffer cmd, bool test, bool write, VkCompareOp compare);
 
+// Pipeline variant key bits for the sample count (bits 8-15; 0 at 1x, so single-sample keys
+// are unchanged): pipelines are built per count on first use and kept, so switching msaa
+// back and forth costs nothing after the first frame of each.
+inline uint32_t samples_key(VkSampleCountFlagBits samples) {
+    return samples == VK_SAMPLE_COUNT_1_BIT ? 0u : uint32_t(samples) << 8;
+}
+inline VkSampleCountFlagBits key_samples(uint32_t key) {
+    const uint32_t s = (key >> 8) & 0xffu;
+    return s ? VkSampleCountFlagBits(s) : VK_SAMPLE_COUNT_1_BIT;
+}
+// A colour attachment that resolves (AVERAGE) into `resolve` at the end of the rendering.
+VkRenderingAttachmentInfo resolving_color_attachment(VkImageView msaa, VkImageView resolve,
+                                                     VkAttachmentLoadOp load,
+                                                     VkAttachmentStoreOp store,
+                                                     std::array<float, 4> clear = {});
+
 // Count images (shaders/common/count.glsl, set 3): R32_UINT, one per counting pass.
 inline constexpr VkFormat kCountFormat = VK_FORMAT_R32_UINT;
 inline constexpr uint32_t kCountSet = 3;

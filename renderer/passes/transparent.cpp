@@ -40,15 +40,17 @@ ShaderStages TransparentPass::compile(uint32_t key) const {
             services_.compiler.compile("transparent.frag", shader::Stage::Fragment, defines).spirv};
 }
 
-vk::Pipeline TransparentPass::create(uint32_t, const ShaderStages& s) const {
+vk::Pipeline TransparentPass::create(uint32_t key, const ShaderStages& s) const {
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
         .color_attachment(VK_FORMAT_R16G16B16A16_SFLOAT, vk::Blend::Alpha)
         .depth_attachment(services_.depth_format)
+        .samples(key_samples(key))
         .build(services_.context, "transparent");
 }
 
 void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
-    const VkPipeline pipeline = pipelines_.get(res.transparent_counts.valid() ? kCounting : 0u);
+    const VkPipeline pipeline = pipelines_.get((res.transparent_counts.valid() ? kCounting : 0u) |
+                                               samples_key(in.options.samples));
     // No prepass normal or roughness: BLEND surfaces are not in the prepass.
     const LightingInputs lighting = {.shadow_map = res.shadow_map,
                                      .normals = {},
@@ -62,8 +64,17 @@ void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
     graph.add_pass<Data>(
         kName,
         [&](graph::PassBuilder& b, Data& d) {
-            b.read(res.depth, Access::DepthReadOnly);
-            b.write(res.hdr, Access::ColorAttachment);
+            if (in.options.msaa()) {
+                res.hdr = b.create_image("hdr", {.format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                                 .size = graph::ImageSize::relative(1.0f),
+                                                 .semantic = graph::Semantic::HdrColor});
+                b.read(res.msaa_depth, Access::DepthReadOnly);
+                b.write(res.msaa_hdr, Access::ColorAttachment);
+                b.write(res.hdr, Access::ResolveDst);
+            } else {
+                b.read(res.depth, Access::DepthReadOnly);
+                b.write(res.hdr, Access::ColorAttachment);
+            }
             LightingSet::declare(b, lighting);
             b.read(res.frame_uniforms, Access::UniformRead,
                    graph::Shader::Vertex | graph::Shader::Fragment);
@@ -86,10 +97,15 @@ void TransparentPass::record(graph::PassContext& ctx, const FrameInputs& in,
         write_count_set(services_.context.device(), counts, ctx.view(res.transparent_counts));
     }
     const VkDescriptorSet lighting_set = lighting_.write(ctx, in.frame_number, lighting);
+    // msaa > 1: the samples are stored too, for the edge count (MsaaProbe) after the graph.
+    const bool msaa = in.options.msaa();
     const VkRenderingAttachmentInfo color =
-        color_attachment(ctx.view(res.hdr), VK_ATTACHMENT_LOAD_OP_LOAD);
+        msaa ? resolving_color_attachment(ctx.view(res.msaa_hdr), ctx.view(res.hdr),
+                                          VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_STORE)
+             : color_attachment(ctx.view(res.hdr), VK_ATTACHMENT_LOAD_OP_LOAD);
+    const graph::ImageHandle depth_image = msaa ? res.msaa_depth : res.depth;
     const VkRenderingAttachmentInfo depth =
-        depth_attachment(ctx.view(res.depth), ctx.layout(res.depth), VK_ATTACHMENT_LOAD_OP_LOAD,
+        depth_attachment(ctx.view(depth_image), ctx.layout(depth_image), VK_ATTACHMENT_LOAD_OP_LOAD,
                          VK_ATTACHMENT_STORE_OP_NONE);
     begin_rendering(cmd, ctx.extent(res.hdr), {&color, 1}, &depth);
     set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());

@@ -5,6 +5,10 @@
 // floor (the atrium's, Sponza's) have that surface's depth and pass, surfaces in front hide
 // them, and they never hide each other. They are drawn here only (not by shadow, prepass or
 // forward), so each appears exactly once (seed 004).
+//
+// msaa > 1: the last pass that draws multisampled. It blends into res.msaa_hdr against
+// res.msaa_depth and resolves the colour (AVERAGE) into res.hdr, which it creates, at the
+// end of its rendering; forward and skybox have drawn every sample before.
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
@@ -31,7 +35,7 @@ class TransparentPass {
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
 
   private:
-    static constexpr uint32_t kCounting = 1;  // variant key
+    static constexpr uint32_t kCounting = 1;  // variant key, with samples_key() (bits 8-15)
 
     ShaderStages compile(uint32_t key) const;
     vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;

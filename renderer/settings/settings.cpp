@@ -183,6 +183,13 @@ SettingsRegistry::SettingsRegistry() {
                   I::Pipelines),
         bool_knob("reverse_z", "prepass and depth", true,
                   "reverse-Z depth (clear 0, GREATER); off: clear 1, LESS", I::Nothing),
+        // A power of two the device supports for colour and depth (checked per frame: the
+        // registry is static, the device is not); lavapipe offers 1 and 4.
+        int_knob("msaa", "prepass and depth", 1, 1, 8,
+                 "samples per pixel (1, 2, 4 or 8, as the device allows); > 1: depth, normals, "
+                 "roughness and HDR colour are multisampled and resolved inline (depth keeps "
+                 "the nearest sample)",
+                 I::Pipelines),
         // Alpha.
         SettingDef{"alpha_cutoff",
                    "alpha",

@@ -43,6 +43,7 @@ class Image {
     uint32_t height() const { return desc_.height; }
     VkExtent2D extent() const { return {desc_.width, desc_.height}; }
     uint32_t mip_levels() const { return desc_.mip_levels; }
+    VkSampleCountFlagBits samples() const { return desc_.samples; }
     VkImageAspectFlags aspect() const { return aspect_flags(desc_.format); }
 
   private:
