@@ -88,6 +88,9 @@ int run_capture(const Options& o) {
         json["msaa"]["depth_resolve"] = frame.msaa.depth_resolve;
         if (frame.msaa.edge_pixels) json["msaa"]["edge_pixels"] = *frame.msaa.edge_pixels;
     }
+    if (frame.masked_discards)
+        json["masked_discards"] = {{"invoked", frame.masked_discards->invoked},
+                                   {"discarded", frame.masked_discards->discarded}};
     capture::write_json(out.staging_path("report.json"), json);
     if (o.dump_graph) std::printf("%s\n", frame.graph_dump.c_str());
     out.commit();

@@ -329,6 +329,9 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
         throw Error("count_fragments=on needs fragmentStoresAndAtomics, which " +
                     r.context->report().candidate.name + " does not offer");
     check_samples(r.context->report(), options.samples);
+    if (options.sample_shading && !r.context->report().sample_rate_shading)
+        throw Error("sample_shading=on needs sampleRateShading, which " +
+                    r.context->report().candidate.name + " does not offer");
     if (options.msaa() && !r.probe) r.probe = std::make_unique<MsaaProbe>(*r.context, *r.compiler);
     const auto start = std::chrono::steady_clock::now();
     vk::Frame& frame = r.frames->begin();
@@ -373,6 +376,8 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     result.graph_dump = r.graph->dump();
     r.frames->wait(frame);
     r.collect(slot, graph_frame, options, read_back, result);
+    if (const auto counts = r.passes->prepass.discard_counts(frame.number))
+        result.masked_discards = DiscardCounts{counts->invoked, counts->discarded};
     return result;
 }
 

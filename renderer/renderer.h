@@ -51,6 +51,14 @@ struct MsaaResult {
     std::vector<float> resolved_depth;
 };
 
+// count_discards=on: fragments that ran the depth prepass's alpha-tested pipeline (the MASK one;
+// masked_split=off: the one for all geometry), and how many of them it discarded. Exact
+// (shader atomics; helper invocations do not count).
+struct DiscardCounts {
+    uint64_t invoked = 0;
+    uint64_t discarded = 0;
+};
+
 struct FrameResult {
     uint32_t width = 0, height = 0;
     std::vector<uint8_t> rgba8;      // final image, sRGB-encoded, tightly packed, top row first;
@@ -64,6 +72,7 @@ struct FrameResult {
     std::vector<std::string> skipped;  // "gtao: skipped (prepass off)", in pass order
     std::string graph_dump;            // the compiled graph (RenderGraph::dump())
     MsaaResult msaa;
+    std::optional<DiscardCounts> masked_discards;  // count_discards=on with the prepass
 };
 
 // Benchmarks skip the copy to host memory; WithMsaaDepth is Yes plus MsaaResult's depth.

@@ -7,12 +7,14 @@
 //   ALPHA_MASK=2       masked_split=off: one pipeline for all geometry, testing MASK
 //                      materials only; the discard in it costs every draw its early-Z.
 //   COUNT_FRAGMENTS=1  count the fragments that ran (common/count.glsl).
+//   ALPHA_TO_COVERAGE, COUNT_DISCARDS: see common/alpha_test.glsl (with ALPHA_MASK only).
 #extension GL_GOOGLE_include_directive : require
 
 #ifndef ALPHA_MASK
 #define ALPHA_MASK 0
 #endif
 
+#include "common/alpha_test.glsl"
 #include "common/count.glsl"
 #include "common/surface.glsl"
 
@@ -29,13 +31,23 @@ layout(location = 0) out vec4 out_normal;
 layout(location = 1) out float out_roughness;
 
 void main() {
+    float coverage = 1.0;  // output 0's alpha: the sample mask with alpha-to-coverage
 #if ALPHA_MASK
     bool tested = ALPHA_MASK == 1 || (material.flags & kMaterialAlphaMask) != 0u;
     float alpha = texture(base_color_texture, in_uv0).a * material.base_color_factor.a;
-    if (tested && alpha < alpha_cutoff()) discard;
+    count_invoked();
+#if ALPHA_TO_COVERAGE
+    float sharpened = coverage_alpha(alpha, alpha_cutoff());  // outside the branch: fwidth
+    if (tested) coverage = sharpened;
+#else
+    if (tested && alpha < alpha_cutoff()) {
+        count_discarded();
+        discard;
+    }
+#endif
 #endif
     count_fragment();
     out_normal = vec4(encode_normal(shading_normal(vertex_normal(in_normal), in_tangent, in_uv0)),
-                      1.0);
+                      coverage);
     out_roughness = material_roughness(in_uv0);
 }

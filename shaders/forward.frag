@@ -8,6 +8,7 @@
 //                      greater_or_equal (which cut-out parts would pass): alpha test with
 //                      discard, in its own pipeline drawn after opaque.
 //   COUNT_FRAGMENTS=1  count the fragments that ran (common/count.glsl).
+//   ALPHA_TO_COVERAGE=1  with ALPHA_MASK: coverage instead of discard (common/alpha_test.glsl).
 #extension GL_GOOGLE_include_directive : require
 
 #ifndef PREPASS
@@ -17,6 +18,7 @@
 #define ALPHA_MASK 0
 #endif
 
+#include "common/alpha_test.glsl"
 #include "common/count.glsl"
 #include "common/lighting.glsl"
 
@@ -33,7 +35,10 @@ layout(location = 0) out vec4 out_color;
 
 void main() {
     vec4 base = texture(base_color_texture, in_uv0) * material.base_color_factor;
-#if ALPHA_MASK
+    float coverage = 1.0;  // output alpha: the sample mask with alpha-to-coverage
+#if ALPHA_MASK && ALPHA_TO_COVERAGE
+    coverage = coverage_alpha(base.a, alpha_cutoff());
+#elif ALPHA_MASK
     if (base.a < alpha_cutoff()) discard;
 #endif
     count_fragment();
@@ -49,5 +54,5 @@ void main() {
 #endif
     s.occlusion *= screen_ao();
     float sun = sun_shadow(in_world_position, facing(n_vertex)) * screen_contact_shadow();
-    out_color = vec4(shade(s, in_world_position, sun), 1.0);
+    out_color = vec4(shade(s, in_world_position, sun), coverage);
 }

@@ -1,11 +1,13 @@
 #include "renderer/passes/depth_prepass.h"
 
 #include <array>
+#include <cstring>
 #include <string>
 
 #include "renderer/gpu_scene.h"
 #include "renderer/passes/scene_draw.h"
 #include "renderer/shader/compiler.h"
+#include "renderer/vk/barrier.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/functions.h"
 
@@ -16,18 +18,27 @@ using scene::AlphaMode;
 
 namespace {
 const VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}};
+const VkDescriptorPoolSize kDiscardPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+constexpr VkDeviceSize kDiscardBytes = 2 * sizeof(uint32_t);  // invoked, discarded
+
+vk::DescriptorSetLayout create_discard_set_layout(vk::Context& context) {
+    const VkDescriptorSetLayoutBinding binding =
+        vk::layout_binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT);
+    return vk::DescriptorSetLayout(context, {&binding, 1}, "discard count set layout");
 }
+}  // namespace
 
 DepthPrepass::DepthPrepass(const PassServices& services)
     : services_(services),
-      empty_layout_(create_empty_set_layout(services.context)),
+      discard_layout_(create_discard_set_layout(services.context)),
       count_layout_(create_count_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "prepass count sets"),
+      discard_sets_(services.context, 1, kDiscardPoolSizes, "prepass discard count sets"),
       pipelines_([this](uint32_t key) { return compile(key); },
                  [this](uint32_t key, const ShaderStages& s) { return create(key, s); }),
       resolve_(services) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
-                                          empty_layout_.handle(), count_layout_.handle()};
+                                          discard_layout_.handle(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "depth prepass layout");
     pipelines_.get(kOpaque);
     pipelines_.get(kMask);
@@ -42,6 +53,8 @@ ShaderStages DepthPrepass::compile(uint32_t key) const {
     std::vector<shader::Define> defines;
     if (key & 3u) defines.push_back({"ALPHA_MASK", std::to_string(key & 3u)});
     if (key & kCounting) defines.push_back({"COUNT_FRAGMENTS", "1"});
+    if (key & kAlphaToCoverage) defines.push_back({"ALPHA_TO_COVERAGE", "1"});
+    if (key & kCountDiscards) defines.push_back({"COUNT_DISCARDS", "1"});
     ShaderStages s;
     s.vert = services_.compiler.compile("depth_prepass.vert", shader::Stage::Vertex).spirv;
     s.frag =
@@ -56,34 +69,89 @@ vk::Pipeline DepthPrepass::create(uint32_t key, const ShaderStages& s) const {
         .color_attachment(kRoughnessFormat)
         .depth_attachment(services_.depth_format)
         .samples(key_samples(key))
+        .alpha_to_coverage((key & kAlphaToCoverage) != 0)
         .build(services_.context, kNames[key & 3u]);
 }
 
 void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const uint32_t common =
         (res.prepass_counts.valid() ? kCounting : 0u) | samples_key(in.options.samples);
+    // Only the pipeline with the alpha test changes: the opaque one keeps early-Z and its
+    // key, so normal frames share it.
+    const uint32_t tested = (in.options.alpha_to_coverage ? kAlphaToCoverage : 0u) |
+                            (in.options.count_discards ? kCountDiscards : 0u);
     Draw draw;
     if (in.options.masked_split) {
         draw.opaque = pipelines_.get(kOpaque | common);
-        draw.mask = pipelines_.get(kMask | common);
+        draw.mask = pipelines_.get(kMask | common | tested);
     } else {
-        draw.opaque = pipelines_.get(kUnsplit | common);
+        draw.opaque = pipelines_.get(kUnsplit | common | tested);
     }
+    const graph::BufferHandle discards =
+        in.options.count_discards ? import_discards(graph, in.frame_number) : graph::BufferHandle{};
     struct Data {
         FrameInputs in;
         FrameResources res;
         Msaa msaa;
         Draw draw;
+        graph::BufferHandle discards;
     };
     graph.add_pass<Data>(
         kName,
         [&](graph::PassBuilder& b, Data& d) {
             const Msaa msaa = declare(b, in, res);
-            d = {in, res, msaa, draw};
+            if (discards.valid()) {
+                b.write(discards, Access::TransferDst);
+                b.write(discards, Access::StorageReadWrite, graph::Shader::Fragment);
+            }
+            d = {in, res, msaa, draw, discards};
         },
         [this](graph::PassContext& ctx, const Data& d) {
-            record(ctx, d.in, d.res, d.msaa, d.draw);
+            record(ctx, d.in, d.res, d.msaa, d.draw, d.discards);
         });
+}
+
+graph::BufferHandle DepthPrepass::import_discards(graph::RenderGraph& graph,
+                                                  uint64_t frame_number) {
+    DiscardSlot& slot = discard_slots_[frame_number % discard_slots_.size()];
+    if (!slot.buffer)
+        slot.buffer = vk::Buffer(
+            services_.context,
+            {kDiscardBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+             vk::MemoryUsage::Readback, "prepass discard counts"});
+    slot.frame = frame_number;
+    // The host read the last frame of this slot after its fence; it reads this one likewise.
+    graph::ExternalBuffer ext;
+    ext.buffer = slot.buffer.handle();
+    ext.size = kDiscardBytes;
+    ext.initial = graph::ExternalState::host_read();
+    ext.final = graph::ExternalState::host_read();
+    return graph.import_buffer("prepass_discard_counts", ext);
+}
+
+VkDescriptorSet DepthPrepass::prepare_discards(graph::PassContext& ctx, const FrameInputs& in,
+                                               graph::BufferHandle buffer) {
+    const VkBuffer handle = ctx.buffer(buffer);
+    VkCommandBuffer cmd = ctx.cmd();
+    vkCmdFillBuffer(cmd, handle, 0, kDiscardBytes, 0);
+    // The zeros before the atomics: a dependency inside the pass, which the graph cannot see.
+    vk::memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    const VkDescriptorSet set = discard_sets_.allocate(in.frame_number, discard_layout_.handle());
+    vk::DescriptorWriter writer;
+    writer.buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, handle);
+    writer.update(services_.context.device(), set);
+    return set;
+}
+
+std::optional<DiscardCounts> DepthPrepass::discard_counts(uint64_t frame_number) const {
+    const DiscardSlot& slot = discard_slots_[frame_number % discard_slots_.size()];
+    if (!slot.buffer || slot.frame != frame_number) return std::nullopt;
+    slot.buffer.invalidate();
+    uint32_t counts[2] = {};
+    std::memcpy(counts, slot.buffer.mapped(), sizeof counts);
+    return DiscardCounts{counts[0], counts[1]};
 }
 
 DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInputs& in,
@@ -161,8 +229,9 @@ void DepthPrepass::begin(graph::PassContext& ctx, const FrameInputs& in, const F
 }
 
 void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
-                          const Msaa& msaa, Draw draw) {
+                          const Msaa& msaa, Draw draw, graph::BufferHandle discards) {
     VkCommandBuffer cmd = ctx.cmd();
+    if (discards.valid()) draw.discards = prepare_discards(ctx, in, discards);
     if (res.prepass_counts.valid()) {
         clear_counts(cmd, ctx.image(res.prepass_counts));
         draw.counts = count_sets_.allocate(in.frame_number, count_layout_.handle());
@@ -190,6 +259,9 @@ void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, Draw d
     if (draw.counts)
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kCountSet, 1,
                                 &draw.counts, 0, nullptr);
+    if (draw.discards)
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kDiscardSet, 1,
+                                &draw.discards, 0, nullptr);
     // prepass_sort: nearest instances first, so the depth test rejects hidden layers before
     // their (normal-mapped) fragment shader runs; off: instanced groups in authored order.
     auto draw_modes = [&](std::span<const AlphaMode> modes) {

@@ -42,6 +42,7 @@ ShaderStages ForwardPass::compile(uint32_t key) const {
     if (key & kPrepassInputs) frag_defines.push_back({"PREPASS", "1"});
     if (key & kAlphaMask) frag_defines.push_back({"ALPHA_MASK", "1"});
     if (key & kCounting) frag_defines.push_back({"COUNT_FRAGMENTS", "1"});
+    if (key & kAlphaToCoverage) frag_defines.push_back({"ALPHA_TO_COVERAGE", "1"});
     ShaderStages s;
     s.vert = services_.compiler.compile("forward.vert", shader::Stage::Vertex, vert_defines).spirv;
     s.frag =
@@ -58,22 +59,27 @@ vk::Pipeline ForwardPass::create(uint32_t key, const ShaderStages& s) const {
         .color_attachment(kHdrFormat)
         .depth_attachment(services_.depth_format)
         .samples(key_samples(key))
+        .sample_shading((key & kSampleShading) ? 1.0f : 0.0f)
+        .alpha_to_coverage((key & kAlphaToCoverage) != 0)
         .build(services_.context, name);
 }
 
 void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const FrameOptions& o = in.options;
     const uint32_t common = (o.invariant ? 0u : kNonInvariant) |
-                            (res.forward_counts.valid() ? kCounting : 0u) | samples_key(o.samples);
+                            (res.forward_counts.valid() ? kCounting : 0u) |
+                            (o.sample_shading ? kSampleShading : 0u) | samples_key(o.samples);
+    // The pipelines with the alpha test: alpha-to-coverage replaces their discard.
+    const uint32_t mask = kAlphaMask | (o.alpha_to_coverage ? kAlphaToCoverage : 0u);
     Draw draw;
     if (o.prepass) {
         draw.opaque = pipelines_.get(common | kPrepassInputs);
         // Only EQUAL makes the alpha test redundant: with greater_or_equal the cut-out parts
         // of a MASK surface are nearer than what the prepass kept there, and would pass.
-        if (!o.depth_equal) draw.mask = pipelines_.get(common | kPrepassInputs | kAlphaMask);
+        if (!o.depth_equal) draw.mask = pipelines_.get(common | kPrepassInputs | mask);
     } else {
         draw.opaque = pipelines_.get(common);
-        draw.mask = pipelines_.get(common | kAlphaMask);
+        draw.mask = pipelines_.get(common | mask);
     }
     draw.lighting = {.shadow_map = res.shadow_map,
                      .normals = o.prepass ? res.normals : graph::ImageHandle{},

@@ -13,6 +13,9 @@
 // opaque first, then MASK with a discard in its own pipeline. invariant=off swaps in a
 // vertex shader without `invariant` and with a different (equal in exact arithmetic)
 // expression.
+// msaa > 1 only: sample_shading=on runs every pipeline once per sample (minSampleShading 1);
+// alpha_to_coverage=on makes the MASK pipelines (those with the alpha test) write a sharpened
+// alpha and let alpha-to-coverage cut the samples instead of discarding whole pixels.
 // BLEND materials are the transparent pass's.
 //
 // msaa > 1: draws into res.msaa_hdr (cleared and stored: skybox and transparent add to it,
@@ -56,6 +59,8 @@ class ForwardPass {
     static constexpr uint32_t kAlphaMask = 2;      // ALPHA_MASK=1 (not with prepass + EQUAL)
     static constexpr uint32_t kNonInvariant = 4;   // invariant=off vertex shader
     static constexpr uint32_t kCounting = 8;
+    static constexpr uint32_t kSampleShading = 16;    // sample_shading=on (msaa > 1)
+    static constexpr uint32_t kAlphaToCoverage = 32;  // MASK pipelines, alpha_to_coverage=on
     // samples_key() holds bits 8-15.
 
     struct Draw {

@@ -28,6 +28,10 @@ FrameOptions FrameOptions::from(const Settings& s) {
         throw Error("setting msaa: " + std::to_string(msaa) +
                     " is not a power of two (1, 2, 4, 8)");
     o.samples = VkSampleCountFlagBits(msaa);
+    o.count_discards = s.get_bool("count_discards");
+    // Both act on multisampled targets only; at 1x they would change nothing but the key.
+    o.sample_shading = s.get_bool("sample_shading") && o.msaa();
+    o.alpha_to_coverage = s.get_bool("alpha_to_coverage") && o.msaa();
     return o;
 }
 

@@ -65,6 +65,9 @@ struct FrameOptions {
     bool invariant = true;
     bool reverse_z = true;
     bool count_fragments = false;
+    bool count_discards = false;     // masked prepass: fragments run and discarded
+    bool sample_shading = false;     // effective: also needs msaa > 1
+    bool alpha_to_coverage = false;  // effective: also needs msaa > 1
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // msaa
 
     static FrameOptions from(const Settings& settings);

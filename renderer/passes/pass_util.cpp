@@ -136,8 +136,4 @@ void write_count_set(VkDevice device, VkDescriptorSet set, VkImageView view) {
     vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
 }
 
-vk::DescriptorSetLayout create_empty_set_layout(vk::Context& context) {
-    return vk::DescriptorSetLayout(context, {}, "empty set layout");
-}
-
 }  // namespace ds::passes

@@ -105,8 +105,4 @@ void declare_counts(graph::PassBuilder& builder, graph::ImageHandle counts);
 void clear_counts(VkCommandBuffer cmd, VkImage image);
 void write_count_set(VkDevice device, VkDescriptorSet set, VkImageView view);
 
-// A layout with no bindings: fills set numbers a pipeline layout skips (set 2 of the
-// prepass, whose counts are set 3 as everywhere).
-vk::DescriptorSetLayout create_empty_set_layout(vk::Context& context);
-
 }  // namespace ds::passes

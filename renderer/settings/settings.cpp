@@ -190,6 +190,11 @@ SettingsRegistry::SettingsRegistry() {
                  "roughness and HDR colour are multisampled and resolved inline (depth keeps "
                  "the nearest sample)",
                  I::Pipelines),
+        bool_knob("sample_shading", "prepass and depth", false,
+                  "msaa > 1: forward shades every sample (minSampleShading 1), so specular "
+                  "and texture detail inside a pixel is antialiased too, at up to msaa times "
+                  "the shading cost",
+                  I::Pipelines),
         // Alpha.
         SettingDef{"alpha_cutoff",
                    "alpha",
@@ -200,6 +205,10 @@ SettingsRegistry::SettingsRegistry() {
                    {"material"},
                    "alpha test cutoff for MASK materials; material: each material's own",
                    I::Nothing},
+        bool_knob("alpha_to_coverage", "alpha", false,
+                  "msaa > 1: MASK materials turn alpha (sharpened around the cutoff) into "
+                  "sample coverage instead of discarding, so cut-out edges are antialiased",
+                  I::Pipelines),
         // Passes.
         bool_knob("shadows", "passes", true, "directional-light shadow map (PCF in forward)",
                   I::Nothing),
@@ -212,6 +221,10 @@ SettingsRegistry::SettingsRegistry() {
         bool_knob("count_fragments", "measurement", false,
                   "count, per pixel, fragments that really ran the shader in prepass, forward "
                   "and transparent (shaded_fragments in the report)",
+                  I::Pipelines),
+        bool_knob("count_discards", "measurement", false,
+                  "count fragments the masked prepass pipeline ran and discarded "
+                  "(masked_discards in the report)",
                   I::Pipelines),
         int_knob("overdraw_layers", "scene", 8, 1, 64,
                  "overdraw scene: number of view-filling quads, drawn back to front", I::Scene),

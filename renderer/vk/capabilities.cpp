@@ -119,6 +119,7 @@ void probe_features(VkPhysicalDevice device, DeviceReport& r) {
         r.pipeline_statistics = f.pipelineStatisticsQuery;
         r.occlusion_query_precise = f.occlusionQueryPrecise;
         r.fragment_stores_and_atomics = f.fragmentStoresAndAtomics;
+        r.sample_rate_shading = f.sampleRateShading;
         return;
     }
     r.candidate.via_extensions =
@@ -131,6 +132,7 @@ void probe_features(VkPhysicalDevice device, DeviceReport& r) {
         r.pipeline_statistics = chain.base.features.pipelineStatisticsQuery;
         r.occlusion_query_precise = chain.base.features.occlusionQueryPrecise;
         r.fragment_stores_and_atomics = chain.base.features.fragmentStoresAndAtomics;
+        r.sample_rate_shading = chain.base.features.sampleRateShading;
         r.descriptor_indexing = chain.v12.runtimeDescriptorArray;
         return;
     }
@@ -142,6 +144,7 @@ void probe_features(VkPhysicalDevice device, DeviceReport& r) {
     r.pipeline_statistics = chain.base.features.pipelineStatisticsQuery;
     r.occlusion_query_precise = chain.base.features.occlusionQueryPrecise;
     r.fragment_stores_and_atomics = chain.base.features.fragmentStoresAndAtomics;
+    r.sample_rate_shading = chain.base.features.sampleRateShading;
     r.descriptor_indexing = chain.v12.runtimeDescriptorArray;
 }
 

@@ -211,6 +211,7 @@ void Context::create_device() {
     features.base.features.shaderStorageImageExtendedFormats =
         supported.shaderStorageImageExtendedFormats;
     features.base.features.fragmentStoresAndAtomics = report_.fragment_stores_and_atomics;
+    features.base.features.sampleRateShading = report_.sample_rate_shading;
 
     auto info = make<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features.base);
     info.queueCreateInfoCount = 1;

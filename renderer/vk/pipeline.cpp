@@ -82,6 +82,16 @@ GraphicsPipelineBuilder& GraphicsPipelineBuilder::samples(VkSampleCountFlagBits 
     return *this;
 }
 
+GraphicsPipelineBuilder& GraphicsPipelineBuilder::sample_shading(float min_fraction) {
+    min_sample_shading_ = min_fraction;
+    return *this;
+}
+
+GraphicsPipelineBuilder& GraphicsPipelineBuilder::alpha_to_coverage(bool enable) {
+    alpha_to_coverage_ = enable;
+    return *this;
+}
+
 GraphicsPipelineBuilder& GraphicsPipelineBuilder::front_face(VkFrontFace face) {
     front_face_ = face;
     return *this;
@@ -187,7 +197,10 @@ Pipeline GraphicsPipelineBuilder::build(Context& context, const char* name) cons
     vertex.pVertexBindingDescriptions = bindings_.data();
     vertex.vertexAttributeDescriptionCount = uint32_t(attributes_.size());
     vertex.pVertexAttributeDescriptions = attributes_.data();
-    const FixedState fixed(front_face_, samples_);
+    FixedState fixed(front_face_, samples_);
+    fixed.multisample.sampleShadingEnable = min_sample_shading_ > 0.0f ? VK_TRUE : VK_FALSE;
+    fixed.multisample.minSampleShading = min_sample_shading_;
+    fixed.multisample.alphaToCoverageEnable = alpha_to_coverage_ ? VK_TRUE : VK_FALSE;
     std::vector<VkPipelineColorBlendAttachmentState> blends;
     for (Blend b : blends_) blends.push_back(blend_state(b));
     auto blend = make<VkPipelineColorBlendStateCreateInfo>(

@@ -63,6 +63,10 @@ class GraphicsPipelineBuilder {
     GraphicsPipelineBuilder& color_attachment(VkFormat format, Blend blend = Blend::None);
     GraphicsPipelineBuilder& depth_attachment(VkFormat format);
     GraphicsPipelineBuilder& samples(VkSampleCountFlagBits samples);
+    // Per-sample shading with minSampleShading (0: off; needs the sampleRateShading feature).
+    GraphicsPipelineBuilder& sample_shading(float min_fraction);
+    // Colour attachment 0's alpha becomes the coverage mask (multisampled targets).
+    GraphicsPipelineBuilder& alpha_to_coverage(bool enable);
     GraphicsPipelineBuilder& front_face(VkFrontFace face);  // default counter-clockwise (glTF)
     GraphicsPipelineBuilder& layout(VkPipelineLayout layout);
 
@@ -83,6 +87,8 @@ class GraphicsPipelineBuilder {
     std::vector<Blend> blends_;
     VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
+    float min_sample_shading_ = 0.0f;
+    bool alpha_to_coverage_ = false;
     VkFrontFace front_face_ = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
 };
