@@ -92,7 +92,7 @@ int run_capture(const Options& o) {
         json["masked_discards"] = {{"invoked", frame.masked_discards->invoked},
                                    {"discarded", frame.masked_discards->discarded}};
     capture::write_json(out.staging_path("report.json"), json);
-    if (o.dump_graph) std::printf("%s\n", frame.graph_dump.c_str());
+    if (o.dump_graph) std::printf("%s\n", renderer.graph_dump().c_str());
     out.commit();
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());
     return exit_code_for(renderer);

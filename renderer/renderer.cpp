@@ -268,6 +268,7 @@ void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::Fra
     result.msaa.samples = uint32_t(options.samples);
     if (!options.msaa()) return;
     result.msaa.depth_resolve = passes::depth_resolve_name(context->report(), options.reverse_z);
+    if (read_back == ReadBack::No) return;
     result.msaa.edge_pixels = probe->edge_pixels();
     if (read_back == ReadBack::WithMsaaDepth) {
         result.msaa.depth_samples = probe->depth_samples();
@@ -282,6 +283,10 @@ Renderer::~Renderer() = default;
 
 const vk::DeviceReport& Renderer::device_report() const {
     return impl_->context->report();
+}
+
+std::string Renderer::graph_dump() const {
+    return impl_->graph->dump();
 }
 
 uint64_t Renderer::validation_message_count() const {
@@ -362,7 +367,8 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
         slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 1);
     const bool depth = read_back != ReadBack::No || options.count_fragments;
     r.targets->record_read_back(cmd, read_back != ReadBack::No, depth);
-    if (options.msaa())
+    // The exact edge count reads every sample: only frames that are read back pay for it.
+    if (options.msaa() && read_back != ReadBack::No)
         r.probe->record(cmd, r.targets->msaa_depth(), r.targets->msaa_hdr(),
                         read_back == ReadBack::WithMsaaDepth);
     r.frames->submit(frame);
@@ -373,7 +379,6 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     result.cpu_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     result.skipped = skipped_passes(options, settings);
-    result.graph_dump = r.graph->dump();
     r.frames->wait(frame);
     r.collect(slot, graph_frame, options, read_back, result);
     if (const auto counts = r.passes->prepass.discard_counts(frame.number))

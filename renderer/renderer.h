@@ -42,7 +42,8 @@ struct PassResult {
 struct MsaaResult {
     uint32_t samples = 1;
     std::string depth_resolve;  // msaa > 1: "native-max" | "native-min" | "shader"; else ""
-    // msaa > 1: pixels whose HDR colour samples are not all equal (after transparent, before
+    // msaa > 1 and read back: pixels whose HDR colour samples are not all equal (after
+    // transparent, before
     // the resolve); exact, counted by a compute pass over every sample.
     std::optional<uint64_t> edge_pixels;
     // ReadBack::WithMsaaDepth, msaa > 1 and a D32 depth only: every depth sample (per pixel,
@@ -70,7 +71,6 @@ struct FrameResult {
     // Read back with the image, or with count_fragments=on; none for ReadBack::No otherwise.
     std::optional<uint64_t> covered_pixels;
     std::vector<std::string> skipped;  // "gtao: skipped (prepass off)", in pass order
-    std::string graph_dump;            // the compiled graph (RenderGraph::dump())
     MsaaResult msaa;
     std::optional<DiscardCounts> masked_discards;  // count_discards=on with the prepass
 };
@@ -99,6 +99,9 @@ class Renderer {
     // Hot reload: every pass rebuilds its pipelines, fail-safe (throws shader::ShaderError
     // naming file:line and keeps the current pipelines when a shader does not compile).
     void rebuild_pipelines();
+    // The last frame's compiled graph as text (passes, resources, barriers); built on demand,
+    // so frames that nobody dumps do not pay for the formatting.
+    std::string graph_dump() const;
     uint64_t validation_message_count() const;
     VkInstance instance() const;  // for RenderDoc's device pointer
 
