@@ -43,8 +43,7 @@ struct MsaaResult {
     uint32_t samples = 1;
     std::string depth_resolve;  // msaa > 1: "native-max" | "native-min" | "shader"; else ""
     // msaa > 1 and read back: pixels whose HDR colour samples are not all equal (after
-    // transparent, before
-    // the resolve); exact, counted by a compute pass over every sample.
+    // transparent, before the resolve); exact, counted by a compute pass over every sample.
     std::optional<uint64_t> edge_pixels;
     // ReadBack::WithMsaaDepth, msaa > 1 and a D32 depth only: every depth sample (per pixel,
     // `samples` consecutive, row 0 = top) and the resolved depth (one per pixel).

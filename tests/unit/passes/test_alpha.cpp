@@ -10,6 +10,7 @@
 
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
+#include "tests/unit/passes/shared_renderer.h"
 
 namespace {
 
@@ -17,42 +18,35 @@ using namespace ds;
 
 constexpr uint32_t kWidth = 240, kHeight = 135;
 
-class Alpha : public ::testing::Test {
+class Alpha : public test::SharedRenderer {
   protected:
     static void SetUpTestSuite() {
-        RendererOptions options;
-        options.validate = true;
-        renderer_ = new Renderer(options);
+        SharedRenderer::SetUpTestSuite();
         foliage_ = new scene::Scene(scene::load_scene("foliage", Settings{}));
         renderer_->set_scene(*foliage_);
     }
     static void TearDownTestSuite() {
-        delete renderer_;
         delete foliage_;
-        renderer_ = nullptr;
         foliage_ = nullptr;
+        SharedRenderer::TearDownTestSuite();
     }
-    void TearDown() override { EXPECT_EQ(renderer_->validation_message_count(), 0u); }
 
     static FrameResult render(const std::vector<std::string>& assignments) {
         return render(foliage_->camera, assignments);
     }
     static FrameResult render(const scene::Camera& camera,
                               const std::vector<std::string>& assignments) {
-        Settings s;
-        for (const std::string& a : assignments) s.apply(a);
-        return renderer_->render(camera, s, kWidth, kHeight, ReadBack::Yes);
+        return renderer_->render(camera, test::settings_of(assignments), kWidth, kHeight,
+                                 ReadBack::Yes);
     }
     static bool has_msaa4() {
         const vk::DeviceReport& r = renderer_->device_report();
         return (r.color_sample_counts & r.depth_sample_counts & VK_SAMPLE_COUNT_4_BIT) != 0;
     }
 
-    static Renderer* renderer_;
     static scene::Scene* foliage_;
 };
 
-Renderer* Alpha::renderer_ = nullptr;
 scene::Scene* Alpha::foliage_ = nullptr;
 
 std::string cutoff(float value) {

@@ -13,6 +13,7 @@
 #include "renderer/common/error.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
+#include "tests/unit/passes/shared_renderer.h"
 
 namespace {
 
@@ -20,30 +21,26 @@ using namespace ds;
 
 constexpr uint32_t kWidth = 240, kHeight = 135;
 
-class Msaa : public ::testing::Test {
+class Msaa : public test::SharedRenderer {
   protected:
     static void SetUpTestSuite() {
-        RendererOptions options;
-        options.validate = true;
-        renderer_ = new Renderer(options);
+        SharedRenderer::SetUpTestSuite();
         edges_ = new scene::Scene(scene::load_scene("edges", Settings{}));
         atrium_ = new scene::Scene(scene::load_scene("atrium", Settings{}));
     }
     static void TearDownTestSuite() {
-        delete renderer_;
         delete edges_;
         delete atrium_;
-        renderer_ = nullptr;
         edges_ = atrium_ = nullptr;
+        current_ = nullptr;
+        SharedRenderer::TearDownTestSuite();
     }
-    void TearDown() override { EXPECT_EQ(renderer_->validation_message_count(), 0u); }
 
     static FrameResult render(const scene::Scene& scene,
                               const std::vector<std::string>& assignments,
                               ReadBack read_back = ReadBack::Yes, uint32_t w = kWidth,
                               uint32_t h = kHeight) {
-        Settings s;
-        for (const std::string& a : assignments) s.apply(a);
+        const Settings s = test::settings_of(assignments);
         if (current_ != &scene) {
             renderer_->set_scene(scene);
             current_ = &scene;
@@ -57,13 +54,11 @@ class Msaa : public ::testing::Test {
         return (modes & VK_RESOLVE_MODE_MIN_BIT) ? "native-min" : "shader";
     }
 
-    static Renderer* renderer_;
     static scene::Scene* edges_;
     static scene::Scene* atrium_;
     static const scene::Scene* current_;
 };
 
-Renderer* Msaa::renderer_ = nullptr;
 scene::Scene* Msaa::edges_ = nullptr;
 scene::Scene* Msaa::atrium_ = nullptr;
 const scene::Scene* Msaa::current_ = nullptr;

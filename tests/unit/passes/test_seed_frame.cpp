@@ -20,6 +20,7 @@
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 #include "renderer/shader/compiler.h"
+#include "tests/unit/passes/shared_renderer.h"
 
 namespace {
 
@@ -29,36 +30,28 @@ constexpr uint32_t kWidth = 320, kHeight = 180;
 
 // One renderer and the atrium for every test: device and pipeline creation dominate on
 // lavapipe.
-class SeedFrame : public ::testing::Test {
+class SeedFrame : public test::SharedRenderer {
   protected:
     static void SetUpTestSuite() {
-        RendererOptions options;
-        options.validate = true;
-        renderer_ = new Renderer(options);
+        SharedRenderer::SetUpTestSuite();
         scene_ = new scene::Scene(scene::load_scene("atrium", Settings{}));
         renderer_->set_scene(*scene_);
     }
     static void TearDownTestSuite() {
-        delete renderer_;
         delete scene_;
-        renderer_ = nullptr;
         scene_ = nullptr;
+        SharedRenderer::TearDownTestSuite();
     }
-    void TearDown() override { EXPECT_EQ(renderer_->validation_message_count(), 0u); }
 
     // `assignments`: "name=value" each.
     static FrameResult render(const std::vector<std::string>& assignments, uint32_t w = kWidth,
                               uint32_t h = kHeight) {
-        Settings s;
-        for (const std::string& a : assignments) s.apply(a);
-        return renderer_->render(scene_->camera, s, w, h);
+        return renderer_->render(scene_->camera, test::settings_of(assignments), w, h);
     }
 
-    static Renderer* renderer_;
     static scene::Scene* scene_;
 };
 
-Renderer* SeedFrame::renderer_ = nullptr;
 scene::Scene* SeedFrame::scene_ = nullptr;
 
 const PassResult* find_pass(const FrameResult& f, const std::string& name) {
