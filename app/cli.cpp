@@ -36,11 +36,23 @@ Size parse_size(const std::string& text) {
 std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
     CLI::App app{
         "depthscope: see inside a depth-prepass Vulkan renderer.\n"
-        "Without a command it renders a headless capture of the default scene (the interactive "
-        "inspector arrives with its own issue).\n"
+        "Without a command it opens the inspector (`view`) when there is a display, else it "
+        "renders a headless capture of the default scene.\n"
         "Exit codes: 0 ok, 1 runtime or input error, 2 usage error, 3 validation messages seen."};
     app.require_subcommand(0, 1);
     std::string size_text;
+
+    // The inspector: `depthscope [view] [--scene NAME|PATH] [--set k=v]... [--frames N]`.
+    std::string window_text;
+    auto add_view_options = [&](CLI::App& cmd) {
+        add_render_options(cmd, o, /*with_scene=*/true);
+        cmd.add_option("--frames", o.view_frames, "close the window after N frames (0: never)")
+            ->check(CLI::Range(0, 100000000));
+        cmd.add_option("--size", window_text, "window size WIDTHxHEIGHT (default 1600x900)");
+    };
+    add_view_options(app);
+    auto* view = app.add_subcommand("view", "the inspector in a window (the default command)");
+    add_view_options(*view);
 
     auto* info = app.add_subcommand("info", "list Vulkan devices and their capabilities");
     info->add_option("--device", o.device, "mark this device as selected (index or name)");
@@ -56,6 +68,11 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
                       "bracket the frame with RenderDoc's StartFrameCapture/EndFrameCapture and "
                       "store the .rdc in the output folder (needs RenderDoc loaded)");
 
+    capture->add_flag("--ui", o.ui,
+                      "draw the inspector (every panel) over the frame into final.png, "
+                      "offscreen; --size is the UI's size");
+    capture->add_option("--view", o.view_resource,
+                        "with --ui: the graph resource the viewer shows (default final)");
     capture->add_flag("--dump-graph", o.dump_graph,
                       "print the compiled render graph: passes, resources, barriers");
 
@@ -78,6 +95,8 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
                      "setting=value1,value2,...: one run per combination, repeatable")
         ->type_name("NAME=V1,V2");
     bench->add_option("--json", o.out, "also write the results as JSON to FILE");
+    bench->add_flag("--ui", o.ui,
+                    "draw the inspector offscreen every frame (its cost is measured)");
 
     try {
         app.parse(argc, argv);
@@ -89,6 +108,7 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
         throw UsageError(std::string(e.what()) + " (see --help)");
     }
 
+    if (view->parsed()) o.command = Command::View;
     if (info->parsed()) o.command = Command::Info;
     if (app.got_subcommand("scenes")) o.command = Command::Scenes;
     if (app.got_subcommand("settings")) o.command = Command::Settings;
@@ -96,6 +116,12 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
     if (export_cmd->parsed()) o.command = Command::ExportScene;
     if (bench->parsed()) o.command = Command::Bench;
     if (!size_text.empty()) o.size = parse_size(size_text);
+    if (!window_text.empty()) {
+        o.window = parse_size(window_text);
+        if (o.command == Command::Default) o.size = o.window;  // the headless fallback
+    }
+    for (CLI::App* cmd : {&app, view, capture, bench})
+        if (cmd->count("--scene")) o.scene_given = true;
     return std::nullopt;
 }
 

@@ -7,7 +7,7 @@
 
 namespace ds::app {
 
-enum class Command { Default, Info, Scenes, Settings, Capture, ExportScene, Bench };
+enum class Command { Default, View, Info, Scenes, Settings, Capture, ExportScene, Bench };
 
 struct Size {
     uint32_t width = 1280;
@@ -19,11 +19,17 @@ struct Options {
     bool validate = false;  // VK_LAYER_KHRONOS_validation; any message -> exit code 3
     std::string device;     // "N" or a name substring; "" = first suitable
     std::string scene = "atrium";
+    bool scene_given = false;  // --scene on the command line (over the inspector's saved one)
     Size size;
     std::string out;                // capture folder / export file
     std::vector<std::string> sets;  // "name=value"
     bool renderdoc = false;
     bool dump_graph = false;
+    // view: the window's size and how many frames before it closes (0: until closed)
+    Size window{1600, 900};
+    int view_frames = 0;
+    bool ui = false;  // capture --ui / bench --ui: the inspector drawn offscreen
+    std::string view_resource = "final";  // capture --ui: the resource the viewer shows
     // bench
     int bench_frames = 20;
     int bench_warmup = 5;

@@ -1,6 +1,9 @@
 // bench: render N frames per settings combination in one process; print per-pass medians.
+#include <chrono>
 #include <cstdio>
 #include <map>
+#include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -9,39 +12,51 @@
 #include "renderer/capture/report.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
+#include "ui/headless.h"
 
 namespace ds::app {
 namespace {
 
 struct RunResult {
     std::vector<Assignment> assignments;
-    Summary frame;
+    Summary frame;  // GPU: the frame's graph (+ the UI's with --ui)
+    Summary wall;   // host: the whole frame, submit to result (+ ImGui, decode, composite)
     std::vector<std::pair<std::string, Summary>> passes;  // execution order
     std::vector<std::string> skipped;
 };
 
-RunResult measure(Renderer& renderer, const scene::Scene& scene, const Settings& settings,
-                  const Options& o) {
-    for (int i = 0; i < o.bench_warmup; ++i) {
-        renderer.render(scene.camera, settings, o.size.width, o.size.height, ReadBack::No);
-    }
-    std::vector<double> frame_ms;
+// One measured frame: the renderer's result and, with --ui, the UI composite's GPU ms.
+struct Measured {
+    const FrameResult* frame = nullptr;
+    std::optional<double> ui_gpu_ms;
+};
+
+template <typename RenderFrame>
+RunResult measure(RenderFrame&& render_frame, const Options& o) {
+    for (int i = 0; i < o.bench_warmup; ++i) render_frame();
+    std::vector<double> frame_ms, wall_ms;
     std::vector<std::string> order;
     std::map<std::string, std::vector<double>> pass_ms;
     std::vector<std::string> last_skipped;
+    auto add = [&](const std::string& name, double ms) {
+        if (!pass_ms.count(name)) order.push_back(name);
+        pass_ms[name].push_back(ms);
+    };
     for (int i = 0; i < o.bench_frames; ++i) {
-        const FrameResult f =
-            renderer.render(scene.camera, settings, o.size.width, o.size.height, ReadBack::No);
-        frame_ms.push_back(f.gpu_ms);
-        last_skipped = f.skipped;
-        for (const PassResult& p : f.passes) {
-            if (!pass_ms.count(p.name)) order.push_back(p.name);
-            pass_ms[p.name].push_back(p.gpu_ms);
-        }
+        const auto start = std::chrono::steady_clock::now();
+        const Measured m = render_frame();
+        wall_ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
+        frame_ms.push_back(m.frame->gpu_ms + m.ui_gpu_ms.value_or(0.0));
+        last_skipped = m.frame->skipped;
+        for (const PassResult& p : m.frame->passes) add(p.name, p.gpu_ms);
+        if (m.ui_gpu_ms) add("ui", *m.ui_gpu_ms);
     }
     RunResult run;
     run.skipped = last_skipped;
     run.frame = summarize(frame_ms);
+    run.wall = summarize(wall_ms);
     for (const auto& name : order) run.passes.emplace_back(name, summarize(pass_ms[name]));
     return run;
 }
@@ -56,6 +71,8 @@ void print_run(const RunResult& run, size_t index) {
     }
     std::printf("  %-18s %9.3f %9.3f %9.3f\n", "frame", run.frame.median, run.frame.min,
                 run.frame.max);
+    std::printf("  %-18s %9.3f %9.3f %9.3f   (host ms, whole frame)\n", "wall", run.wall.median,
+                run.wall.min, run.wall.max);
     for (const auto& note : run.skipped) std::printf("  (%s)\n", note.c_str());
 }
 
@@ -74,6 +91,7 @@ nlohmann::json runs_json(const std::vector<RunResult>& runs, const Settings& bas
         }
         out.push_back({{"settings", settings.values()},
                        {"frame_ms", summary_json(run.frame)},
+                       {"wall_ms", summary_json(run.wall)},
                        {"passes", passes},
                        {"skipped", run.skipped}});
     }
@@ -92,17 +110,45 @@ int run_bench(const Options& o) {
         for (const auto& [name, value] : combination) s.set(name, value);
     }
     const scene::Scene scene = scene::load_scene(o.scene, base);
-    Renderer renderer({.validate = o.validate, .device = o.device});
+    RendererOptions renderer_options;
+    renderer_options.validate = o.validate;
+    renderer_options.device = o.device;
+    Renderer renderer(renderer_options);
     renderer.set_scene(scene);
-    std::printf("bench: %s at %ux%u, %d frames after %d warm-up, on %s\n", scene.name.c_str(),
+    std::printf("bench: %s at %ux%u, %d frames after %d warm-up, on %s%s\n", scene.name.c_str(),
                 o.size.width, o.size.height, o.bench_frames, o.bench_warmup,
-                renderer.device_report().candidate.name.c_str());
+                renderer.device_report().candidate.name.c_str(),
+                o.ui ? ", inspector drawn offscreen every frame" : "");
+    // --ui: the inspector at --size over a scene frame of --size, drawn every frame.
+    std::unique_ptr<ui::HeadlessUi> ui;
+    if (o.ui)
+        ui = std::make_unique<ui::HeadlessUi>(renderer, base, scene,
+                                              VkExtent2D{o.size.width, o.size.height},
+                                              VkExtent2D{o.size.width, o.size.height});
 
     std::vector<RunResult> runs;
     for (const auto& combination : combinations) {
         Settings settings = base;
         for (const auto& [name, value] : combination) settings.set(name, value);
-        runs.push_back(measure(renderer, scene, settings, o));
+        FrameResult last;
+        if (ui) {
+            for (const auto& [name, value] : combination)
+                ui->inspector().apply(ui::SetSetting{name, value});
+            runs.push_back(measure(
+                [&] {
+                    ui->frame();
+                    return Measured{&ui->inspector().frame(), ui->last_stats().gpu_ms};
+                },
+                o));
+        } else {
+            runs.push_back(measure(
+                [&] {
+                    last = renderer.render(scene.camera, settings, o.size.width, o.size.height,
+                                           ReadBack::No);
+                    return Measured{&last, std::nullopt};
+                },
+                o));
+        }
         runs.back().assignments = combination;
         print_run(runs.back(), runs.size() - 1);
     }

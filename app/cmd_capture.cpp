@@ -14,6 +14,7 @@
 #include "renderer/scene/builtin/builtin.h"
 #include "renderer/scene/loader.h"
 #include "renderer/vk/capabilities.h"
+#include "ui/headless.h"
 
 #ifndef DS_CAPTURE_ROOT
 #define DS_CAPTURE_ROOT "captures"
@@ -21,6 +22,9 @@
 
 namespace ds::app {
 namespace {
+
+// capture --ui: UI frames drawn before the one written (the panels show the frames before).
+constexpr int kUiCaptureFrames = 3;
 
 Settings settings_from(const Options& o) {
     Settings settings;
@@ -59,14 +63,35 @@ int run_capture(const Options& o) {
     }
     capture::OutputDir out(capture_dir(o, scene));
 
-    Renderer renderer({.validate = o.validate, .device = o.device});
+    RendererOptions renderer_options;
+    renderer_options.validate = o.validate;
+    renderer_options.device = o.device;
+    Renderer renderer(renderer_options);
     renderer.set_scene(scene);
     void* device_pointer = RENDERDOC_DEVICEPOINTER_FROM_VKINSTANCE(renderer.instance());
-    if (renderdoc) renderdoc->start(device_pointer, out.staging_path("frame"));
-    const FrameResult frame = renderer.render(scene.camera, settings, o.size.width, o.size.height);
-    if (renderdoc) renderdoc->end(device_pointer);
-
-    capture::write_png_rgba8(out.staging_path("final.png"), frame.width, frame.height, frame.rgba8);
+    FrameResult frame;
+    if (o.ui) {
+        // The inspector over the frame, offscreen, through the window's code: the first UI
+        // frame lays the panels out, the next ones show the frames before them.
+        ui::HeadlessUi headless(renderer, settings, scene, {o.size.width, o.size.height});
+        headless.inspector().queue(ui::SelectResource{o.view_resource});
+        std::vector<uint8_t> pixels;
+        for (int i = 0; i < kUiCaptureFrames; ++i) {
+            if (renderdoc && i + 1 == kUiCaptureFrames)
+                renderdoc->start(device_pointer, out.staging_path("frame"));
+            pixels = headless.frame();
+        }
+        if (renderdoc) renderdoc->end(device_pointer);
+        capture::write_png_rgba8(out.staging_path("final.png"), o.size.width, o.size.height,
+                                 pixels);
+        frame = headless.inspector().frame();
+    } else {
+        if (renderdoc) renderdoc->start(device_pointer, out.staging_path("frame"));
+        frame = renderer.render(scene.camera, settings, o.size.width, o.size.height);
+        if (renderdoc) renderdoc->end(device_pointer);
+        capture::write_png_rgba8(out.staging_path("final.png"), frame.width, frame.height,
+                                 frame.rgba8);
+    }
     const auto& device = renderer.device_report();
     capture::ReportInput report{.device_name = device.candidate.name,
                                 .driver = device.driver_name + " " + device.driver_info,

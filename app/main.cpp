@@ -24,9 +24,12 @@ int dispatch(const ds::app::Options& o) {
             return ds::app::run_capture(o);
         case Command::Bench:
             return ds::app::run_bench(o);
+        case Command::View:
+            return ds::app::run_view(o);
         case Command::Default:
-            // No inspector yet: the default is a headless capture of the default scene.
-            std::fprintf(stderr, "depthscope: rendering a headless capture of '%s'\n",
+            // The inspector where there is a display; a headless capture where there is none.
+            if (ds::app::display_available()) return ds::app::run_view(o);
+            std::fprintf(stderr, "depthscope: no display: rendering a headless capture of '%s'\n",
                          o.scene.c_str());
             return ds::app::run_capture(o);
     }

@@ -41,7 +41,9 @@ passes::FrameUniforms frame_uniforms(const UniformInputs& in) {
     const float aspect = float(in.size.width) / float(in.size.height);
     passes::FrameUniforms u;
     u.view = cam.view();
-    u.projection = perspective(cam.yfov, aspect, cam.znear, cam.zfar, in.options.reverse_z);
+    const std::string& fov = in.settings.get("fov");  // "scene" or degrees
+    const float yfov = fov == "scene" ? cam.yfov : glm::radians(in.settings.get_float("fov"));
+    u.projection = perspective(yfov, aspect, cam.znear, cam.zfar, in.options.reverse_z);
     u.view_projection = u.projection * u.view;
     u.inverse_view_projection = glm::inverse(u.view_projection);
     u.inverse_projection = glm::inverse(u.projection);

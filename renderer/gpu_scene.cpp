@@ -82,7 +82,7 @@ vk::DescriptorSetLayout create_material_set_layout(vk::Context& context) {
 
 GpuScene::GpuScene(vk::Context& context, const scene::Scene& scene,
                    VkDescriptorSetLayout material_layout)
-    : context_(context), draw_groups_(scene.draw_groups) {
+    : context_(context), scene_name_(scene.name), draw_groups_(scene.draw_groups) {
     for (const scene::DrawGroup& group : draw_groups_) {
         // The passes index meshes and instances by these without further checks.
         if (group.mesh >= scene.meshes.size() ||
@@ -196,7 +196,10 @@ void GpuScene::create_material_sets(const scene::Scene& scene, VkDescriptorSetLa
     const uint32_t sets = std::max(count, 1u);  // a pool must allow at least one set
     const VkDeviceSize stride =
         vk::align_up(sizeof(GpuMaterial), context_.limits().minUniformBufferOffsetAlignment);
-    std::vector<uint8_t> bytes(std::max<VkDeviceSize>(stride * count, kMinBufferSize));
+    material_stride_ = stride;
+    std::vector<uint8_t>& bytes = material_bytes_;
+    bytes.assign(std::max<VkDeviceSize>(stride * count, kMinBufferSize), 0);
+    cutoff_overrides_.assign(count, -1.0f);
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, sets},
                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 5 * sets}};
     pool_ = vk::DescriptorPool(context_, sets, sizes, "material sets");
@@ -207,6 +210,7 @@ void GpuScene::create_material_sets(const scene::Scene& scene, VkDescriptorSetLa
 
     for (uint32_t i = 0; i < count; ++i) {
         const scene::Material& m = scene.materials[i];
+        material_keys_.push_back({m.name, m.alpha_mode == scene::AlphaMode::Mask});
         const GpuMaterial g = gpu_material(m, texture_valid(scene, m.normal));
         std::memcpy(bytes.data() + i * stride, &g, sizeof g);
 
@@ -226,6 +230,42 @@ void GpuScene::create_material_sets(const scene::Scene& scene, VkDescriptorSetLa
         writer.update(context_.device(), material_sets_.back());
     }
     batch.buffer(material_uniforms_, bytes.data(), bytes.size());
+}
+
+void GpuScene::set_alpha_cutoff_overrides(
+    const std::map<std::string, float, std::less<>>& by_name) {
+    std::vector<float> overrides(material_keys_.size(), -1.0f);
+    for (const auto& [name, cutoff] : by_name) {
+        bool found = false;
+        for (size_t i = 0; i < material_keys_.size(); ++i) {
+            if (!material_keys_[i].masked || material_keys_[i].name != name) continue;
+            overrides[i] = cutoff;
+            found = true;
+        }
+        if (found) continue;
+        std::vector<std::string> masked;
+        for (const MaterialKey& key : material_keys_)
+            if (key.masked) masked.push_back(key.name);
+        std::sort(masked.begin(), masked.end());
+        masked.erase(std::unique(masked.begin(), masked.end()), masked.end());
+        std::string list;
+        for (const std::string& m : masked) list += (list.empty() ? "" : ", ") + m;
+        throw UsageError("material_alpha_cutoff: no masked material \"" + name + "\" in " +
+                         scene_name_ + " (masked: " + (list.empty() ? "none" : list) + ")");
+    }
+    if (overrides == cutoff_overrides_) return;
+
+    for (size_t i = 0; i < overrides.size(); ++i)
+        std::memcpy(material_bytes_.data() + i * material_stride_ +
+                        offsetof(GpuMaterial, alpha_cutoff_override),
+                    &overrides[i], sizeof(float));
+    // Every frame that may still read the uniforms finishes before the copy overwrites them
+    // (Renderer::render already waits for its frame; a setting change is rare enough to pay).
+    context_.wait_idle();
+    vk::UploadBatch batch(context_);
+    batch.buffer(material_uniforms_, material_bytes_.data(), material_bytes_.size());
+    batch.submit();
+    cutoff_overrides_ = std::move(overrides);
 }
 
 }  // namespace ds

@@ -1,9 +1,12 @@
 #pragma once
 // A Scene on the GPU: one vertex and one index buffer for every mesh, the instance buffer
 // (model + normal matrices), textures with mips, samplers, and one descriptor set per
-// material (lavapipe has no descriptor indexing). Immutable once built; set_scene() replaces
-// the whole object.
+// material (lavapipe has no descriptor indexing). Immutable once built, but for the
+// material_alpha_cutoff overrides; set_scene() replaces the whole object.
+#include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,11 +33,13 @@ struct GpuMaterial {
     float roughness_factor = 1.0f;
     float normal_scale = 1.0f;
     float occlusion_strength = 1.0f;
-    float alpha_cutoff = 0.5f;
+    float alpha_cutoff = 0.5f;  // the glTF material's own
     uint32_t flags = 0;
-    float pad[2] = {};
+    float alpha_cutoff_override = -1.0f;  // material_alpha_cutoff, < 0: none
+    float pad = 0.0f;
 };
 static_assert(sizeof(GpuMaterial) == 64);
+static_assert(offsetof(GpuMaterial, alpha_cutoff_override) == 56);
 inline constexpr uint32_t kMaterialHasNormalMap = 1u;
 inline constexpr uint32_t kMaterialAlphaMask = 2u;  // alphaMode MASK (one-pipeline prepass)
 
@@ -81,6 +86,13 @@ class GpuScene {
     // How each image's mip chain was filled (the report says which path ran).
     const std::vector<vk::MipFill>& mip_fills() const { return mip_fills_; }
 
+    // material_alpha_cutoff (name -> cutoff): the cutoff of every MASK material of that name,
+    // which wins over alpha_cutoff and the material's own (common/bindings.glsl); materials not
+    // named get none. Throws UsageError, listing the scene's MASK materials, for a name that is
+    // none of them. Rewrites the material uniforms only when the overrides change, and then
+    // waits for the device to be idle first: frames in flight read them.
+    void set_alpha_cutoff_overrides(const std::map<std::string, float, std::less<>>& by_name);
+
   private:
     void upload_geometry(const scene::Scene& scene, vk::UploadBatch& batch);
     void upload_instances(const scene::Scene& scene, vk::UploadBatch& batch);
@@ -94,7 +106,17 @@ class GpuScene {
     void create_material_sets(const scene::Scene& scene, VkDescriptorSetLayout layout,
                               vk::UploadBatch& batch);
 
+    struct MaterialKey {
+        std::string name;
+        bool masked = false;
+    };
+
     vk::Context& context_;
+    std::string scene_name_;
+    std::vector<MaterialKey> material_keys_;  // per material
+    std::vector<float> cutoff_overrides_;     // per material, as uploaded; < 0: none
+    std::vector<uint8_t> material_bytes_;     // the material uniforms as uploaded
+    VkDeviceSize material_stride_ = 0;
     vk::Buffer vertices_;
     vk::Buffer indices_;
     vk::Buffer instances_;

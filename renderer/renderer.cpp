@@ -1,5 +1,6 @@
 #include "renderer/renderer.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 
@@ -7,6 +8,7 @@
 #include "renderer/frame_targets.h"
 #include "renderer/frame_uniforms.h"
 #include "renderer/gpu_scene.h"
+#include "renderer/graph/access.h"
 #include "renderer/graph/graph.h"
 #include "renderer/msaa_probe.h"
 #include "renderer/passes/ao_spatial.h"
@@ -21,6 +23,7 @@
 #include "renderer/passes/skybox.h"
 #include "renderer/passes/tonemap.h"
 #include "renderer/passes/transparent.h"
+#include "renderer/resource_inspector.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/context.h"
@@ -101,6 +104,55 @@ void check_samples(const vk::DeviceReport& report, VkSampleCountFlagBits samples
                 " supports sample counts " + vk::sample_counts_text(supported));
 }
 
+constexpr const char* kFinalImageName = "final";
+
+std::vector<ResourceSummary> summarize(const graph::RenderGraph& graph) {
+    std::vector<ResourceSummary> out;
+    for (const graph::ResourceInfo& r : graph.resources()) {
+        ResourceSummary s{.name = r.name,
+                          .is_image = r.is_image,
+                          .format = r.image.format,
+                          .width = r.extent.width,
+                          .height = r.extent.height,
+                          .samples = uint32_t(r.image.samples),
+                          .semantic = r.image.semantic,
+                          .lifetime = r.lifetime,
+                          .bytes = r.size};
+        if (!r.is_image) s.format = VK_FORMAT_UNDEFINED;
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
+// Fills each pass's reads and writes (by resource name) from the graph's declarations.
+void add_declarations(const graph::RenderGraph& graph, std::vector<PassResult>& passes) {
+    const auto resources = graph.resources();
+    for (const graph::PassInfo& info : graph.passes()) {
+        auto it = std::find_if(passes.begin(), passes.end(),
+                               [&](const PassResult& p) { return p.name == info.name; });
+        if (it == passes.end()) continue;
+        for (const graph::AccessInfo& a : info.accesses) {
+            std::vector<std::string>& list = graph::is_write(a.access) ? it->writes : it->reads;
+            const std::string& name = resources[a.resource].name;
+            if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
+        }
+    }
+}
+
+// The final image as the inspector sees any other: four floats per texel (sRGB-encoded).
+InspectedImage final_as_inspected(const FrameResult& frame) {
+    InspectedImage image;
+    image.name = kFinalImageName;
+    // Its bytes as stored (sRGB-encoded), which is what a UNORM view of them reads.
+    image.format = VK_FORMAT_R8G8B8A8_UNORM;
+    image.semantic = graph::Semantic::LdrColor;
+    image.width = frame.width;
+    image.height = frame.height;
+    image.texels.resize(frame.rgba8.size());
+    for (size_t i = 0; i < frame.rgba8.size(); ++i) image.texels[i] = frame.rgba8[i] / 255.0f;
+    return image;
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -130,7 +182,8 @@ struct Renderer::Impl {
     std::unique_ptr<Passes> passes;
     std::unique_ptr<FrameTargets> targets;
     std::unique_ptr<GpuScene> scene;
-    std::unique_ptr<MsaaProbe> probe;  // created by the first msaa > 1 frame
+    std::unique_ptr<MsaaProbe> probe;              // created by the first msaa > 1 frame
+    std::unique_ptr<ResourceInspector> inspector;  // pipelines built by the first request
     scene::DirectionalLight sun;
     scene::Bounds scene_bounds;
     // Temporal state: last frame's view-projection, unless the next frame is a cut.
@@ -141,7 +194,10 @@ struct Renderer::Impl {
 
 Renderer::Impl::Impl(const RendererOptions& options) {
     context = std::make_unique<vk::Context>(
-        vk::ContextOptions{.validate = options.validate, .device = options.device});
+        vk::ContextOptions{.validate = options.validate,
+                           .device = options.device,
+                           .instance_extensions = options.instance_extensions,
+                           .swapchain = options.swapchain});
     compiler = std::make_unique<shader::Compiler>();
     // The frame uniforms are read by every stage (the screen-space passes are compute).
     const VkDescriptorSetLayoutBinding frame_bindings[] = {
@@ -168,8 +224,10 @@ Renderer::Impl::Impl(const RendererOptions& options) {
     frames = std::make_unique<vk::FrameRing>(*context);
     graph = std::make_unique<graph::RenderGraph>(*context);
     const VkFormat depth_format = context->report().depth_format;
-    passes = std::make_unique<Passes>(passes::PassServices{
-        *context, *compiler, frame_layout.handle(), material_layout.handle(), depth_format});
+    const passes::PassServices services{*context, *compiler, frame_layout.handle(),
+                                        material_layout.handle(), depth_format};
+    passes = std::make_unique<Passes>(services);
+    inspector = std::make_unique<ResourceInspector>(services);
     targets = std::make_unique<FrameTargets>(*context, passes::TonemapPass::kFinalFormat,
                                              depth_format, passes::ForwardPass::kHdrFormat);
 }
@@ -178,6 +236,7 @@ Renderer::Impl::~Impl() {
     if (!context) return;
     vkDeviceWaitIdle(context->device());  // teardown: an error here has nowhere to go
     if (targets) targets->reset();
+    inspector.reset();
     probe.reset();
     scene.reset();
     frames.reset();  // flushes every destroy list
@@ -244,12 +303,12 @@ void Renderer::Impl::write_uniforms(Slot& slot, const scene::Camera& camera,
 void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::FrameOptions& options,
                              ReadBack read_back, FrameResult& result) {
     for (const graph::PassResult& g : graph->collect(graph_frame)) {
-        PassResult p{.name = g.name,
-                     .gpu_ms = g.gpu_ms,
-                     .vertex_shader_invocations = g.vertex_invocations,
-                     .fragment_shader_invocations = g.fragment_invocations,
-                     .clipping_primitives = g.clipping_primitives,
-                     .shaded_fragments = std::nullopt};
+        PassResult p;
+        p.name = g.name;
+        p.gpu_ms = g.gpu_ms;
+        p.vertex_shader_invocations = g.vertex_invocations;
+        p.fragment_shader_invocations = g.fragment_invocations;
+        p.clipping_primitives = g.clipping_primitives;
         if (p.name == passes::DepthPrepass::kName)
             p.shaded_fragments = targets->count_sum(CountImage::Prepass);
         else if (p.name == passes::ForwardPass::kName)
@@ -303,6 +362,11 @@ void Renderer::camera_cut() {
 
 void Renderer::rebuild_pipelines() {
     impl_->passes->rebuild(impl_->frames->retire_list());
+    if (impl_->inspector) impl_->inspector->rebuild_pipelines(impl_->frames->retire_list());
+}
+
+vk::Context& Renderer::context() {
+    return *impl_->context;
 }
 
 void Renderer::set_scene(const scene::Scene& scene) {
@@ -323,7 +387,7 @@ void Renderer::set_scene(const scene::Scene& scene) {
 }
 
 FrameResult Renderer::render(const scene::Camera& camera, const Settings& settings, uint32_t width,
-                             uint32_t height, ReadBack read_back) {
+                             uint32_t height, ReadBack read_back, const InspectRequest& inspect) {
     Impl& r = *impl_;
     if (!r.scene) throw Error("render: no scene (call set_scene first)");
     if (width == 0 || height == 0)
@@ -337,6 +401,9 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     if (options.sample_shading && !r.context->report().sample_rate_shading)
         throw Error("sample_shading=on needs sampleRateShading, which " +
                     r.context->report().candidate.name + " does not offer");
+    // material_alpha_cutoff: checked against the scene (an unknown name throws) and uploaded
+    // when it changed, before this frame begins.
+    r.scene->set_alpha_cutoff_overrides(settings.get_map("material_alpha_cutoff"));
     if (options.msaa() && !r.probe) r.probe = std::make_unique<MsaaProbe>(*r.context, *r.compiler);
     const auto start = std::chrono::steady_clock::now();
     vk::Frame& frame = r.frames->begin();
@@ -354,6 +421,15 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
                                  .camera_position = camera.position,
                                  .frame_number = frame.number};
     const passes::FrameResources res = r.build_graph(in, slot);
+    // "final" is read back as it is (sRGB-encoded); any other image through the inspect pass.
+    const bool inspect_final = inspect.resource == kFinalImageName;
+    if (inspect_final && read_back == ReadBack::No) read_back = ReadBack::Yes;
+    const std::vector<ResourceSummary> resources = summarize(*r.graph);
+    bool inspecting = false;
+    if (!inspect.resource.empty() && !inspect_final) {
+        inspecting =
+            r.inspector->add(*r.graph, in, inspect.resource, inspect.sample, frame.retired);
+    }
     r.write_uniforms(slot, camera, settings, in, res);
     r.graph->compile();
 
@@ -367,6 +443,7 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
         slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 1);
     const bool depth = read_back != ReadBack::No || options.count_fragments;
     r.targets->record_read_back(cmd, read_back != ReadBack::No, depth);
+    if (inspecting) r.inspector->record_read_back(cmd);
     // The exact edge count reads every sample: only frames that are read back pay for it.
     if (options.msaa() && read_back != ReadBack::No)
         r.probe->record(cmd, r.targets->msaa_depth(), r.targets->msaa_hdr(),
@@ -383,6 +460,15 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     r.collect(slot, graph_frame, options, read_back, result);
     if (const auto counts = r.passes->prepass.discard_counts(frame.number))
         result.masked_discards = DiscardCounts{counts->invoked, counts->discarded};
+    add_declarations(*r.graph, result.passes);
+    result.resources = resources;
+    if (inspecting) result.inspected = r.inspector->result();
+    if (inspect_final) result.inspected = final_as_inspected(result);
+    if (result.inspected) {
+        result.inspected->znear = camera.znear;
+        result.inspected->zfar = camera.zfar;
+        result.inspected->reverse_z = options.reverse_z;
+    }
     return result;
 }
 

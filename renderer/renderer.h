@@ -11,15 +11,23 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/graph/types.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
 #include "renderer/vk/capabilities.h"
+
+namespace ds::vk {
+class Context;
+}
 
 namespace ds {
 
 struct RendererOptions {
     bool validate = false;  // validation layer (+ synchronization validation) and messenger
     std::string device;     // "" = first suitable, "N" = index, else a name substring
+    // The inspector's window: surface instance extensions and VK_KHR_swapchain.
+    std::vector<std::string> instance_extensions;
+    bool swapchain = false;
 };
 
 // One pass of a frame, as measured by the GPU.
@@ -36,6 +44,19 @@ struct PassResult {
     // Exact for shaders without discard (early fragment tests); a pipeline with discard
     // counts after the discard, and its late depth test may still reject the fragment.
     std::optional<uint64_t> shaded_fragments;
+    // The graph resources the pass declared, by name, in declaration order.
+    std::vector<std::string> reads, writes;
+};
+
+// One resource of the frame's graph (the inspector's Resources panel).
+struct ResourceSummary {
+    std::string name;
+    bool is_image = true;
+    VkFormat format = VK_FORMAT_UNDEFINED;  // images
+    uint32_t width = 0, height = 0, samples = 1;
+    graph::Semantic semantic = graph::Semantic::Other;
+    graph::Lifetime lifetime = graph::Lifetime::Transient;
+    uint64_t bytes = 0;  // buffers
 };
 
 // msaa: how the frame was multisampled.
@@ -59,6 +80,23 @@ struct DiscardCounts {
     uint64_t discarded = 0;
 };
 
+// One graph image as the frame's `inspect` pass read it (Renderer::render's `inspect`): every
+// texel as the four floats a shader sampling it sees (depth in r; u32 counts converted to
+// float in r, exact below 2^24; UNORM formats in 0..1; HDR as stored), row 0 = top. A
+// multisampled image is read at one sample. The camera's depth range comes with it so a
+// viewer can linearise depth.
+struct InspectedImage {
+    std::string name;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    graph::Semantic semantic = graph::Semantic::Other;
+    uint32_t width = 0, height = 0;
+    uint32_t samples = 1;       // of the resource
+    uint32_t sample = 0;        // the sample that was read
+    std::vector<float> texels;  // width * height * 4
+    float znear = 0.1f, zfar = 1000.0f;
+    bool reverse_z = true;
+};
+
 struct FrameResult {
     uint32_t width = 0, height = 0;
     std::vector<uint8_t> rgba8;      // final image, sRGB-encoded, tightly packed, top row first;
@@ -72,6 +110,19 @@ struct FrameResult {
     std::vector<std::string> skipped;  // "gtao: skipped (prepass off)", in pass order
     MsaaResult msaa;
     std::optional<DiscardCounts> masked_discards;  // count_discards=on with the prepass
+    // Every resource of the frame's graph, in creation order (the inspect pass's own target
+    // left out).
+    std::vector<ResourceSummary> resources;
+    // InspectRequest: the image as read; none when the frame has no image of that name (its
+    // pass is off) or nothing was asked.
+    std::optional<InspectedImage> inspected;
+};
+
+// Read back one graph image by name at the end of the frame ("final": the tonemapped image;
+// any other: a compute pass "inspect" samples it, so it appears last in FrameResult::passes).
+struct InspectRequest {
+    std::string resource;  // "" = none
+    uint32_t sample = 0;   // multisampled images
 };
 
 // Benchmarks skip the copy to host memory; WithMsaaDepth is Yes plus MsaaResult's depth.
@@ -89,9 +140,11 @@ class Renderer {
     void set_scene(const scene::Scene& scene);
     // Draws one frame at width x height and reads it back (blocks until it is done).
     // Throws ds::Error before set_scene(), for a zero size, or for an msaa sample count the
-    // device does not support (the message lists the supported ones).
+    // device does not support (the message lists the supported ones); UsageError for a
+    // material_alpha_cutoff name that is no MASK material of the scene (before the frame begins).
     FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
-                       uint32_t height, ReadBack read_back = ReadBack::Yes);
+                       uint32_t height, ReadBack read_back = ReadBack::Yes,
+                       const InspectRequest& inspect = {});
     // A camera cut: the next frame's temporal passes start over (no history, and its
     // previous_view_projection is its own). set_scene() and a new size imply one.
     void camera_cut();
@@ -103,6 +156,8 @@ class Renderer {
     std::string graph_dump() const;
     uint64_t validation_message_count() const;
     VkInstance instance() const;  // for RenderDoc's device pointer
+    // The device, for the inspector's presentation layer (ui/), which draws on it.
+    vk::Context& context();
 
   private:
     struct Impl;

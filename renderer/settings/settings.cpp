@@ -1,5 +1,7 @@
 #include "renderer/settings/settings.h"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -62,6 +64,19 @@ SettingDef float_knob(std::string name, std::string group, std::string def, doub
                       inv};
 }
 
+SettingDef map_knob(std::string name, std::string group, double min, double max, std::string help,
+                    Invalidates inv) {
+    return SettingDef{std::move(name),
+                      std::move(group),
+                      SettingType::Map,
+                      "",
+                      min,
+                      max,
+                      {},
+                      std::move(help),
+                      inv};
+}
+
 // Shortest text that reads back to the same float ("0.5", "45", "1e-05").
 std::string format_number(double v) {
     std::ostringstream out;
@@ -85,19 +100,67 @@ std::string canonical_bool(const SettingDef& def, std::string_view v) {
     throw UsageError("setting " + def.name + ": '" + std::string(v) + "' is not on|off");
 }
 
-double parse_number(const SettingDef& def, std::string_view v) {
+// `entry`: a Map's entry name, said in the message.
+double parse_number(const SettingDef& def, std::string_view v, std::string_view entry = {}) {
+    const std::string subject =
+        "setting " + def.name + (entry.empty() ? "" : ": " + std::string(entry));
+    const std::string range = def.type == SettingType::Map
+                                  ? format_number(def.min) + ".." + format_number(def.max)
+                                  : def.range_text();
     double value = 0.0;
     const char* end = v.data() + v.size();
     auto [ptr, ec] = std::from_chars(v.data(), end, value);
     if (v.empty() || ec != std::errc() || ptr != end || !std::isfinite(value)) {
-        throw UsageError("setting " + def.name + ": '" + std::string(v) + "' is not a number (" +
-                         def.type_name() + " in " + def.range_text() + ")");
+        throw UsageError(subject + ": '" + std::string(v) + "' is not a number (" +
+                         def.type_name() + " in " + range + ")");
     }
     if (value < def.min || value > def.max) {
-        throw UsageError("setting " + def.name + ": " + std::string(v) + " is out of range " +
-                         def.range_text());
+        throw UsageError(subject + ": " + std::string(v) + " is out of range " + range);
     }
     return value;
+}
+
+std::string_view trim(std::string_view v) {
+    while (!v.empty() && std::isspace(static_cast<unsigned char>(v.front()))) v.remove_prefix(1);
+    while (!v.empty() && std::isspace(static_cast<unsigned char>(v.back()))) v.remove_suffix(1);
+    return v;
+}
+
+// A Map value: comma-separated NAME=V entries (names and values trimmed; a name may hold '=',
+// the value follows the last one), each name once, each V a number in min..max.
+std::map<std::string, double, std::less<>> parse_map(const SettingDef& def, std::string_view text) {
+    std::map<std::string, double, std::less<>> pairs;
+    const std::string_view all = trim(text);
+    if (all.empty()) return pairs;
+    const std::string subject = "setting " + def.name + ": ";
+    const std::string expected = " (expected NAME=V[,NAME=V...] with V in " +
+                                 format_number(def.min) + ".." + format_number(def.max) + ")";
+    for (size_t start = 0;;) {
+        const size_t comma = std::min(all.find(',', start), all.size());
+        const std::string_view entry = trim(all.substr(start, comma - start));
+        const size_t eq = entry.rfind('=');
+        if (entry.empty())
+            throw UsageError(subject + "empty entry in '" + std::string(all) + "'" + expected);
+        if (eq == std::string_view::npos)
+            throw UsageError(subject + "'" + std::string(entry) + "' is not NAME=V" + expected);
+        const std::string_view name = trim(entry.substr(0, eq));
+        if (name.empty())
+            throw UsageError(subject + "'" + std::string(entry) + "' has no name" + expected);
+        const double value = parse_number(def, trim(entry.substr(eq + 1)), name);
+        if (!pairs.emplace(std::string(name), value).second)
+            throw UsageError(subject + std::string(name) + " is given twice");
+        if (comma == all.size()) break;
+        start = comma + 1;
+    }
+    return pairs;
+}
+
+// Sorted by name (the map's order), numbers as Float writes them.
+std::string canonical_map(const SettingDef& def, std::string_view v) {
+    std::vector<std::string> entries;
+    for (const auto& [name, value] : parse_map(def, v))
+        entries.push_back(name + "=" + format_number(value));
+    return join(entries, ",");
 }
 
 std::string canonical_value(const SettingDef& def, std::string_view v) {
@@ -123,6 +186,8 @@ std::string canonical_value(const SettingDef& def, std::string_view v) {
             }
             throw UsageError("setting " + def.name + ": '" + std::string(v) + "' is not one of " +
                              def.range_text());
+        case SettingType::Map:
+            return canonical_map(def, v);
     }
     return std::string(v);
 }
@@ -139,6 +204,8 @@ std::string SettingDef::type_name() const {
             return "float";
         case SettingType::Enum:
             return "enum";
+        case SettingType::Map:
+            return "map";
     }
     return "?";
 }
@@ -154,6 +221,8 @@ std::string SettingDef::range_text() const {
             const std::string range = format_number(min) + ".." + format_number(max);
             return choices.empty() ? range : join(choices, "|") + "|" + range;
         }
+        case SettingType::Map:
+            return "NAME=" + format_number(min) + ".." + format_number(max) + ",...";
     }
     return "";
 }
@@ -185,12 +254,12 @@ SettingsRegistry::SettingsRegistry() {
                   "reverse-Z depth (clear 0, GREATER); off: clear 1, LESS", I::Nothing),
         // A power of two the device supports for colour and depth (checked per frame: the
         // registry is static, the device is not); lavapipe offers 1 and 4.
-        int_knob("msaa", "prepass and depth", 1, 1, 8,
+        int_knob("msaa", "msaa", 1, 1, 8,
                  "samples per pixel (1, 2, 4 or 8, as the device allows); > 1: depth, normals, "
                  "roughness and HDR colour are multisampled and resolved inline (depth keeps "
                  "the nearest sample)",
                  I::Pipelines),
-        bool_knob("sample_shading", "prepass and depth", false,
+        bool_knob("sample_shading", "msaa", false,
                   "msaa > 1: forward shades every sample (minSampleShading 1), so specular "
                   "and texture detail inside a pixel is antialiased too, at up to msaa times "
                   "the shading cost",
@@ -203,8 +272,16 @@ SettingsRegistry::SettingsRegistry() {
                    0,
                    1,
                    {"material"},
-                   "alpha test cutoff for MASK materials; material: each material's own",
+                   "alpha test cutoff for MASK materials; material: each material's own "
+                   "(material_alpha_cutoff wins over it)",
                    I::Nothing},
+        // Checked against the scene when rendering: every NAME must be a MASK material.
+        map_knob("material_alpha_cutoff", "alpha", 0, 1,
+                 "per-material alpha test cutoff, NAME=V[,NAME=V...]: NAME a MASK material of "
+                 "the scene by its glTF name (unnamed: 'material N', N its glTF index; a name "
+                 "sets every material so named); wins over alpha_cutoff, which wins over the "
+                 "material's own alphaCutoff",
+                 I::Nothing),
         bool_knob("alpha_to_coverage", "alpha", false,
                   "msaa > 1: MASK materials turn alpha (sharpened around the cutoff) into "
                   "sample coverage instead of discarding, so cut-out edges are antialiased",
@@ -240,6 +317,19 @@ SettingsRegistry::SettingsRegistry() {
                    "hemispherical sky/ground ambient strength", I::Nothing),
         float_knob("exposure", "lighting", "1", 0.01, 64,
                    "exposure multiplier applied before tonemapping", I::Nothing),
+        SettingDef{"fov",
+                   "camera",
+                   SettingType::Float,
+                   "scene",
+                   10,
+                   120,
+                   {"scene"},
+                   "vertical field of view in degrees; scene: the scene camera's own",
+                   I::Nothing},
+        float_knob("render_scale", "camera", "1", 0.25, 2,
+                   "inspector: the frame renders at the viewer's size times this (below 1 keeps "
+                   "a CPU device interactive); capture and bench render at --size",
+                   I::Resources),
     };
 }
 
@@ -278,6 +368,14 @@ void Settings::apply(std::string_view assignment) {
         throw UsageError("--set expects name=value, got '" + std::string(assignment) + "'");
     }
     set(assignment.substr(0, eq), assignment.substr(eq + 1));
+}
+
+std::map<std::string, float, std::less<>> Settings::get_map(std::string_view name) const {
+    const SettingDef& def = SettingsRegistry::instance().at(name);
+    if (def.type != SettingType::Map) throw UsageError("setting " + def.name + " is not a map");
+    std::map<std::string, float, std::less<>> out;
+    for (const auto& [key, value] : parse_map(def, get(name))) out.emplace(key, float(value));
+    return out;
 }
 
 const std::string& Settings::get(std::string_view name) const {

@@ -9,7 +9,9 @@
 
 namespace ds {
 
-enum class SettingType { Bool, Int, Float, Enum };
+// Map: a list of NAME=NUMBER pairs ("a=0.3,b=0.7"; empty: none), each number in min..max; the
+// names are free text that the knob's user checks (material_alpha_cutoff: material names).
+enum class SettingType { Bool, Int, Float, Enum, Map };
 
 // What changing a knob invalidates, from cheapest to most expensive.
 enum class Invalidates { Nothing, Pipelines, Resources, Scene };
@@ -25,8 +27,8 @@ struct SettingDef {
     std::string help;
     Invalidates invalidates = Invalidates::Nothing;
 
-    std::string type_name() const;   // "bool", "int", "float", "enum"
-    std::string range_text() const;  // "on|off", "1..64", "0.01..16", "a|b|c"
+    std::string type_name() const;   // "bool", "int", "float", "enum", "map"
+    std::string range_text() const;  // "on|off", "1..64", "0.01..16", "a|b|c", "NAME=0..1,..."
 };
 
 class SettingsRegistry {
@@ -47,7 +49,8 @@ class Settings {
     Settings();  // every knob at its default
 
     // Throws UsageError for an unknown name (listing the valid names) or a bad value (listing
-    // what is allowed). Values are canonicalised ("true"/"1" -> "on", "0.50" -> "0.5").
+    // what is allowed). Values are canonicalised ("true"/"1" -> "on", "0.50" -> "0.5"; a Map
+    // " b = 0.50, a=1" -> "a=1,b=0.5": trimmed, sorted by name, numbers as for Float).
     void set(std::string_view name, std::string_view value);
     void apply(std::string_view assignment);  // "name=value"
 
@@ -55,6 +58,8 @@ class Settings {
     int get_int(std::string_view name) const;
     float get_float(std::string_view name) const;         // throws UsageError on a keyword value
     const std::string& get(std::string_view name) const;  // canonical text
+    // A Map knob's pairs by name (empty when none).
+    std::map<std::string, float, std::less<>> get_map(std::string_view name) const;
 
     const std::map<std::string, std::string, std::less<>>& values() const { return values_; }
     // Knobs whose value differs from `other`, by name.

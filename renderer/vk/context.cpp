@@ -80,7 +80,7 @@ VkDebugUtilsMessengerCreateInfoEXT messenger_info(std::atomic<uint64_t>* counter
 
 }  // namespace
 
-Context::Context(const ContextOptions& options) {
+Context::Context(const ContextOptions& options) : swapchain_(options.swapchain) {
     try {
         create_instance(options);
         pick_physical_device(options.device);
@@ -131,6 +131,11 @@ void Context::create_instance(const ContextOptions& options) {
     const bool sync = validate && options.sync_validation &&
                       has_instance_extension(layer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
     if (sync) extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+    for (const std::string& name : options.instance_extensions) {
+        if (!has_instance_extension(nullptr, name.c_str()))
+            throw Error("the Vulkan loader has no " + name + " (needed for a window)");
+        extensions.push_back(name.c_str());
+    }
 
     auto app = make<VkApplicationInfo>(VK_STRUCTURE_TYPE_APPLICATION_INFO);
     app.pApplicationName = "depthscope";
@@ -191,6 +196,19 @@ void Context::pick_physical_device(const std::string& request) {
 }
 
 void Context::create_device() {
+    if (swapchain_) {
+        uint32_t count = 0;
+        check(vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, nullptr),
+              "vkEnumerateDeviceExtensionProperties");
+        std::vector<VkExtensionProperties> exts(count);
+        check(vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, exts.data()),
+              "vkEnumerateDeviceExtensionProperties");
+        if (std::none_of(exts.begin(), exts.end(), [](const VkExtensionProperties& e) {
+                return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
+            }))
+            throw Error(report_.candidate.name + " has no " VK_KHR_SWAPCHAIN_EXTENSION_NAME
+                                                 " (needed for a window)");
+    }
     const float priority = 1.0f;
     auto queue = make<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
     queue.queueFamilyIndex = report_.queue_family;
@@ -216,10 +234,12 @@ void Context::create_device() {
     auto info = make<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features.base);
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queue;
-    if (report_.candidate.via_extensions) {
-        info.enabledExtensionCount = uint32_t(kPromotedExtensions.size());
-        info.ppEnabledExtensionNames = kPromotedExtensions.data();
-    }
+    std::vector<const char*> extensions;
+    if (report_.candidate.via_extensions)
+        extensions.assign(kPromotedExtensions.begin(), kPromotedExtensions.end());
+    if (swapchain_) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    info.enabledExtensionCount = uint32_t(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
     check(vkCreateDevice(physical_device_, &info, nullptr, &device_), "vkCreateDevice");
     load_device_functions(device_, report_.candidate.via_extensions);
     vkGetDeviceQueue(device_, report_.queue_family, 0, &queue_);

@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -19,6 +20,10 @@ struct ContextOptions {
     bool validate = false;        // VK_LAYER_KHRONOS_validation + messenger
     bool sync_validation = true;  // with validate: also report synchronization hazards
     std::string device;           // "" = first suitable, "N" = index, else a name substring
+    // A window (the inspector): the instance extensions its surface needs
+    // (glfwGetRequiredInstanceExtensions) and VK_KHR_swapchain on the device.
+    std::vector<std::string> instance_extensions;
+    bool swapchain = false;
 };
 
 class Context {
@@ -59,6 +64,7 @@ class Context {
     void destroy();  // explicit teardown order; safe on a partly built context
 
     std::atomic<uint64_t> validation_messages_{0};
+    bool swapchain_ = false;
     VkInstance instance_ = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;

@@ -48,14 +48,28 @@ Frame& FrameRing::begin() {
     return f;
 }
 
-void FrameRing::submit(Frame& f) {
+void FrameRing::submit(Frame& f, const SubmitSemaphores& semaphores) {
     check(vkEndCommandBuffer(f.cmd), "vkEndCommandBuffer");
     check(vkResetFences(context_.device(), 1, &f.fence), "vkResetFences");
     auto cmd = make<VkCommandBufferSubmitInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO);
     cmd.commandBuffer = f.cmd;
+    auto wait = make<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
+    wait.semaphore = semaphores.wait;
+    wait.stageMask = semaphores.wait_stages;
+    auto signal = make<VkSemaphoreSubmitInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO);
+    signal.semaphore = semaphores.signal;
+    signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
     auto submit = make<VkSubmitInfo2>(VK_STRUCTURE_TYPE_SUBMIT_INFO_2);
     submit.commandBufferInfoCount = 1;
     submit.pCommandBufferInfos = &cmd;
+    if (semaphores.wait) {
+        submit.waitSemaphoreInfoCount = 1;
+        submit.pWaitSemaphoreInfos = &wait;
+    }
+    if (semaphores.signal) {
+        submit.signalSemaphoreInfoCount = 1;
+        submit.pSignalSemaphoreInfos = &signal;
+    }
     check(fn().queue_submit2(context_.queue(), 1, &submit, f.fence), "vkQueueSubmit2");
     f.submitted = true;
 }

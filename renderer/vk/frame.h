@@ -21,6 +21,14 @@ struct Frame {
     uint64_t number = 0;
 };
 
+// Binary semaphores around a submit (presentation: wait for the acquired image, signal the
+// present); none by default.
+struct SubmitSemaphores {
+    VkSemaphore wait = VK_NULL_HANDLE;
+    VkPipelineStageFlags2 wait_stages = VK_PIPELINE_STAGE_2_NONE;
+    VkSemaphore signal = VK_NULL_HANDLE;
+};
+
 class FrameRing {
   public:
     static constexpr uint32_t kFramesInFlight = 2;
@@ -30,9 +38,10 @@ class FrameRing {
     FrameRing(const FrameRing&) = delete;
     FrameRing& operator=(const FrameRing&) = delete;
 
-    Frame& begin();             // the next slot, recording (ONE_TIME_SUBMIT)
-    void submit(Frame& frame);  // ends recording, submits, signals the slot's fence
-    void wait(Frame& frame);    // blocks until the frame's fence has signalled
+    Frame& begin();  // the next slot, recording (ONE_TIME_SUBMIT)
+    // Ends recording, submits, signals the slot's fence.
+    void submit(Frame& frame, const SubmitSemaphores& semaphores = {});
+    void wait(Frame& frame);  // blocks until the frame's fence has signalled
     // Objects replaced while recording the current frame N (older frames may still read
     // them). They die at begin() of frame N + kFramesInFlight, after N's fence; every older
     // frame's fence was already waited by the begin() calls in between.

@@ -27,8 +27,9 @@ layout(set = 1, binding = 0, std140) uniform MaterialUniforms {
     float roughness_factor;
     float normal_scale;
     float occlusion_strength;
-    float alpha_cutoff;
-    uint flags;  // kMaterial* bits
+    float alpha_cutoff;           // the glTF material's own
+    uint flags;                   // kMaterial* bits
+    float alpha_cutoff_override;  // material_alpha_cutoff for this material, < 0: none
 } material;
 
 layout(set = 1, binding = 1) uniform sampler2D base_color_texture;
@@ -37,8 +38,10 @@ layout(set = 1, binding = 3) uniform sampler2D normal_texture;
 layout(set = 1, binding = 4) uniform sampler2D occlusion_texture;  // R
 layout(set = 1, binding = 5) uniform sampler2D emissive_texture;
 
-// The alpha_cutoff setting overrides every material's own cutoff when it is a number.
+// Precedence: the material_alpha_cutoff setting for this material, then the alpha_cutoff
+// setting (every material) when it is a number, then the material's own cutoff.
 float alpha_cutoff() {
+    if (material.alpha_cutoff_override >= 0.0) return material.alpha_cutoff_override;
     return frame.alpha.x >= 0.0 ? frame.alpha.x : material.alpha_cutoff;
 }
 

@@ -1,6 +1,10 @@
 // The command line as a user meets it: help, listings, usage errors and their exit codes.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
 #include "tests/support/run_process.h"
 
 using ds::test::count_lines;
@@ -86,4 +90,52 @@ TEST(Cli, DeviceByIndexAndNameAndAClearErrorOtherwise) {
     EXPECT_NE(r.err.find("no device name contains 'no-such-gpu'"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("llvmpipe"), std::string::npos) << "lists the devices: " << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "c"));
+}
+
+// material_alpha_cutoff: bad syntax fails while parsing settings, a name that is no MASK
+// material of the scene when rendering; both are one usage-error line and leave no capture
+// folder. A good value reaches report.json in canonical form, and `settings` lists the knob.
+TEST(Cli, MaterialAlphaCutoffErrorsAndReport) {
+    auto dir = ds::test::fresh_dir("material-alpha-cutoff");
+    const struct {
+        const char* set;
+        const char* mention;
+    } bad[] = {
+        {"material_alpha_cutoff=bogus=0.5",
+         "material_alpha_cutoff: no masked material \"bogus\" in foliage (masked: alpha_ramp, "
+         "alpha_ramp_leaf)"},
+        {"material_alpha_cutoff=ground=0.5", "no masked material \"ground\""},
+        {"material_alpha_cutoff=alpha_ramp", "'alpha_ramp' is not NAME=V"},
+        {"material_alpha_cutoff=alpha_ramp=2", "alpha_ramp: 2 is out of range 0..1"},
+    };
+    for (const auto& b : bad) {
+        const auto out = dir / "bad";
+        auto r = run_depthscope("capture --scene foliage --size 32x32 --out " + out.string() +
+                                " --set " + b.set);
+        EXPECT_EQ(r.exit_code, 2) << b.set << "\n" << r.err;
+        EXPECT_EQ(count_lines(r.err), 1u) << b.set << "\n" << r.err;
+        EXPECT_EQ(r.err.rfind("depthscope: error: ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find(b.mention), std::string::npos) << r.err;
+        EXPECT_FALSE(std::filesystem::exists(out)) << b.set;
+    }
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        ADD_FAILURE() << "left behind: " << entry.path();
+
+    const auto good = dir / "good";
+    auto r =
+        run_depthscope("capture --scene foliage --size 32x32 --out " + good.string() +
+                       " --set \"material_alpha_cutoff= alpha_ramp_leaf=0.70, alpha_ramp=0.3\"");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto report =
+        nlohmann::json::parse(ds::test::read_file(good / "report.json"), nullptr, false);
+    ASSERT_FALSE(report.is_discarded());
+    EXPECT_EQ(report["settings"]["material_alpha_cutoff"], "alpha_ramp=0.3,alpha_ramp_leaf=0.7");
+
+    auto listing = run_depthscope("settings");
+    ASSERT_EQ(listing.exit_code, 0) << listing.err;
+    const size_t row = listing.out.find("\nmaterial_alpha_cutoff ");
+    ASSERT_NE(row, std::string::npos) << listing.out;
+    const std::string line = listing.out.substr(row + 1, listing.out.find('\n', row + 1) - row - 1);
+    EXPECT_NE(line.find(" map "), std::string::npos) << line;
+    EXPECT_NE(line.find("NAME=0..1,..."), std::string::npos) << line;
 }

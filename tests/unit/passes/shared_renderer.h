@@ -21,7 +21,9 @@ inline Settings settings_of(const std::vector<std::string>& assignments) {
 class SharedRenderer : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {
-        renderer_ = std::make_unique<Renderer>(RendererOptions{.validate = true, .device = ""});
+        RendererOptions options;
+        options.validate = true;
+        renderer_ = std::make_unique<Renderer>(options);
     }
     static void TearDownTestSuite() { renderer_.reset(); }
     void TearDown() override { EXPECT_EQ(renderer_->validation_message_count(), 0u); }

@@ -1,13 +1,15 @@
-// Alpha-tested (MASK) geometry through the Renderer facade with validation on: alpha cutoff on
-// the foliage scene, alpha-to-coverage and per-sample shading at 4x, and the prepass's
-// discard counters (count_discards=on).
+// Alpha-tested (MASK) geometry through the Renderer facade with validation on: alpha cutoff
+// (global and per material) on the foliage scene, alpha-to-coverage and per-sample shading at
+// 4x, and the prepass's discard counters (count_discards=on).
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
+#include "renderer/common/error.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 #include "tests/unit/passes/shared_renderer.h"
@@ -39,6 +41,12 @@ class Alpha : public test::SharedRenderer {
         return renderer_->render(camera, test::settings_of(assignments), kWidth, kHeight,
                                  ReadBack::Yes);
     }
+    // After a camera cut: temporal AO forgets the previous frame, so the image depends on
+    // these settings only (images are compared across different previous frames).
+    static FrameResult render_cut(const std::vector<std::string>& assignments) {
+        renderer_->camera_cut();
+        return render(assignments);
+    }
     static bool has_msaa4() {
         const vk::DeviceReport& r = renderer_->device_report();
         return (r.color_sample_counts & r.depth_sample_counts & VK_SAMPLE_COUNT_4_BIT) != 0;
@@ -55,16 +63,36 @@ std::string cutoff(float value) {
     return text;
 }
 
+// foliage's MASK materials: the flat ramp cards, and the leaf-shaped cards and bushes.
+constexpr const char* kRamp = "alpha_ramp";
+constexpr const char* kLeaf = "alpha_ramp_leaf";
+
+std::string per_material(const std::vector<std::pair<const char*, float>>& cutoffs) {
+    std::string text = "material_alpha_cutoff=";
+    for (size_t i = 0; i < cutoffs.size(); ++i) {
+        char entry[64];
+        std::snprintf(entry, sizeof entry, "%s%s=%.1f", i ? "," : "", cutoffs[i].first,
+                      double(cutoffs[i].second));
+        text += entry;
+    }
+    return text;
+}
+
 // Every card's alpha ramps across it: a higher cutoff cuts more of each card away. From the
 // scene's own camera the backdrop and ground fill the frame (covered_pixels counts depth, not
-// colour), so this looks up from the ground at the middle ramp card (x 0, z -3, 2 m tall)
-// until its upper part stands against the sky above the backdrop: there what the cutoff
-// removes is no longer covered.
-TEST_F(Alpha, RaisingTheCutoffLowersCoveredPixels) {
-    scene::Camera camera = foliage_->camera;
+// colour), so this looks up from the ground at the middle ramp card (x 0, z -3, 2 m tall,
+// material alpha_ramp) until its upper part stands against the sky above the backdrop: there
+// what the cutoff removes is no longer covered.
+scene::Camera ramp_card_against_the_sky(const scene::Camera& base) {
+    scene::Camera camera = base;
     camera.position = {0.0f, 0.15f, -1.6f};
     camera.forward = glm::normalize(glm::vec3(0.0f, 2.2f, -3.0f) - camera.position);
     camera.up = {0.0f, 1.0f, 0.0f};
+    return camera;
+}
+
+TEST_F(Alpha, RaisingTheCutoffLowersCoveredPixels) {
+    const scene::Camera camera = ramp_card_against_the_sky(foliage_->camera);
     uint64_t previous = UINT64_MAX;
     for (float c = 0.1f; c < 0.95f; c += 0.2f) {
         SCOPED_TRACE(cutoff(c));
@@ -160,6 +188,97 @@ TEST_F(Alpha, CombinationsAtFourSamplesAreValidationClean) {
                     EXPECT_GT(f.masked_discards->discarded, 0u);
                 EXPECT_EQ(renderer_->validation_message_count(), 0u);
             }
+}
+
+// material_alpha_cutoff raises one material's cutoff: the ramp card against the sky loses
+// covered pixels, and the masked prepass pipeline discards more (invoked stays: late depth
+// test); raising only the leaf material's cutoff leaves the ramp card's coverage as it was.
+TEST_F(Alpha, PerMaterialCutoffLowersCoverageAndRaisesDiscards) {
+    const scene::Camera up = ramp_card_against_the_sky(foliage_->camera);
+    const FrameResult plain = render(up, {});
+    const FrameResult ramp = render(up, {per_material({{kRamp, 0.9f}})});
+    ASSERT_TRUE(plain.covered_pixels && ramp.covered_pixels);
+    std::printf("covered: default %llu, %s=0.9 %llu\n", (unsigned long long)*plain.covered_pixels,
+                kRamp, (unsigned long long)*ramp.covered_pixels);
+    EXPECT_LT(*ramp.covered_pixels, *plain.covered_pixels);
+    EXPECT_EQ(*render(up, {per_material({{kLeaf, 0.9f}})}).covered_pixels, *plain.covered_pixels);
+
+    const FrameResult base = render_cut({"count_discards=on"});
+    ASSERT_TRUE(base.masked_discards);
+    uint64_t previous = base.masked_discards->discarded;
+    std::printf("discards: default invoked %llu, discarded %llu\n",
+                (unsigned long long)base.masked_discards->invoked, (unsigned long long)previous);
+    for (const char* material : {kRamp, kLeaf}) {
+        const std::string knob = per_material({{material, 0.9f}});
+        const FrameResult f = render_cut({knob, "count_discards=on"});
+        ASSERT_TRUE(f.masked_discards) << knob;
+        std::printf("discards: %s invoked %llu, discarded %llu\n", knob.c_str(),
+                    (unsigned long long)f.masked_discards->invoked,
+                    (unsigned long long)f.masked_discards->discarded);
+        EXPECT_EQ(f.masked_discards->invoked, base.masked_discards->invoked) << knob;
+        EXPECT_GT(f.masked_discards->discarded, base.masked_discards->discarded) << knob;
+    }
+    // Back to the default: the material uniforms are rewritten to no override.
+    const FrameResult again = render_cut({"count_discards=on"});
+    EXPECT_EQ(again.rgba8, base.rgba8);
+    EXPECT_EQ(again.masked_discards->discarded, base.masked_discards->discarded);
+}
+
+// A per-material value for every MASK material equal to the global one gives the global
+// override's image, bit for bit, on every path with the alpha test: the split and unsplit
+// prepass, forward's MASK discard without the prepass and with greater_or_equal, shadows.
+TEST_F(Alpha, PerMaterialValueEqualToTheGlobalGivesTheSameImage) {
+    for (const char* path :
+         {"prepass=on", "masked_split=off", "prepass=off", "depth_compare=greater_or_equal"}) {
+        SCOPED_TRACE(path);
+        const FrameResult global = render_cut({path, cutoff(0.7f), "count_discards=on"});
+        const FrameResult each =
+            render_cut({path, per_material({{kRamp, 0.7f}, {kLeaf, 0.7f}}), "count_discards=on"});
+        EXPECT_EQ(each.rgba8, global.rgba8);
+        EXPECT_EQ(each.covered_pixels, global.covered_pixels);
+        ASSERT_EQ(each.masked_discards.has_value(), global.masked_discards.has_value());
+        if (global.masked_discards) {
+            EXPECT_EQ(each.masked_discards->discarded, global.masked_discards->discarded);
+        }
+        // And it changes the picture against the materials' own 0.5 at all.
+        EXPECT_NE(global.rgba8, render_cut({path}).rgba8);
+    }
+}
+
+// Precedence: the per-material value beats the global alpha_cutoff, which still applies to
+// the materials not named.
+TEST_F(Alpha, PerMaterialValueBeatsTheGlobalOne) {
+    const FrameResult both =
+        render_cut({cutoff(0.9f), per_material({{kRamp, 0.1f}}), "count_discards=on"});
+    const FrameResult spelled_out =
+        render_cut({per_material({{kRamp, 0.1f}, {kLeaf, 0.9f}}), "count_discards=on"});
+    const FrameResult global = render_cut({cutoff(0.9f), "count_discards=on"});
+    ASSERT_TRUE(both.masked_discards && spelled_out.masked_discards && global.masked_discards);
+    std::printf("discarded: alpha_cutoff=0.9 %llu; with %s=0.1 %llu\n",
+                (unsigned long long)global.masked_discards->discarded, kRamp,
+                (unsigned long long)both.masked_discards->discarded);
+    EXPECT_EQ(both.rgba8, spelled_out.rgba8);
+    EXPECT_EQ(both.masked_discards->discarded, spelled_out.masked_discards->discarded);
+    EXPECT_LT(both.masked_discards->discarded, global.masked_discards->discarded);
+}
+
+// A name that is no MASK material of the scene (unknown, or an opaque one) is one clear
+// UsageError listing the masked materials, thrown before the frame begins: the next frame
+// renders normally.
+TEST_F(Alpha, UnknownMaterialNameIsAClearError) {
+    for (const char* name : {"bogus", "ground"}) {
+        SCOPED_TRACE(name);
+        try {
+            render_cut({std::string("material_alpha_cutoff=") + name + "=0.5"});
+            ADD_FAILURE() << "no error";
+        } catch (const UsageError& e) {
+            EXPECT_EQ(std::string(e.what()),
+                      std::string("material_alpha_cutoff: no masked material \"") + name +
+                          "\" in foliage (masked: alpha_ramp, alpha_ramp_leaf)");
+        }
+    }
+    const FrameResult f = render_cut({per_material({{kRamp, 0.5f}})});
+    EXPECT_EQ(f.rgba8, render_cut({}).rgba8);  // 0.5 is the ramp's own cutoff
 }
 
 }  // namespace

@@ -114,3 +114,61 @@ TEST(Settings, EnumsAndBools) {
               std::string::npos);
     EXPECT_NE(usage_error_of([&] { s.set("sky", "maybe"); }).find("on|off"), std::string::npos);
 }
+
+// material_alpha_cutoff: a Map (NAME=V pairs); the names are checked by the renderer against
+// the scene, the syntax and values here.
+TEST(Settings, MapIsCanonicalised) {
+    Settings s;
+    const auto& def = SettingsRegistry::instance().at("material_alpha_cutoff");
+    EXPECT_EQ(def.type_name(), "map");
+    EXPECT_EQ(def.range_text(), "NAME=0..1,...");
+    EXPECT_EQ(s.get("material_alpha_cutoff"), "");
+    EXPECT_TRUE(s.get_map("material_alpha_cutoff").empty());
+    // Trimmed, sorted by name, numbers as floats are written; a name may hold spaces and '='.
+    s.set("material_alpha_cutoff", " leaves = 0.30 , bark=1,material 3=.5e0 , a=b=0 ");
+    EXPECT_EQ(s.get("material_alpha_cutoff"), "a=b=0,bark=1,leaves=0.3,material 3=0.5");
+    const auto map = s.get_map("material_alpha_cutoff");
+    ASSERT_EQ(map.size(), 4u);
+    EXPECT_FLOAT_EQ(map.at("leaves"), 0.3f);
+    EXPECT_FLOAT_EQ(map.at("material 3"), 0.5f);
+    EXPECT_FLOAT_EQ(map.at("a=b"), 0.0f);
+    // The canonical text reads back to itself (report.json -> --set reproduces a capture).
+    Settings again;
+    again.set("material_alpha_cutoff", s.get("material_alpha_cutoff"));
+    EXPECT_TRUE(again.diff(s).empty());
+    s.set("material_alpha_cutoff", "  ");
+    EXPECT_EQ(s.get("material_alpha_cutoff"), "");
+    // Through apply, as `--set material_alpha_cutoff=leaves=0.3` gives it: split at the first
+    // '=' only.
+    s.apply("material_alpha_cutoff=leaves=0.3");
+    EXPECT_EQ(s.get("material_alpha_cutoff"), "leaves=0.3");
+    EXPECT_THROW(s.get_map("alpha_cutoff"), UsageError);
+}
+
+TEST(Settings, MapRejectsBadEntriesInOneLine) {
+    Settings s;
+    s.set("material_alpha_cutoff", "leaves=0.25");
+    const struct {
+        const char* value;
+        const char* mention;
+    } cases[] = {
+        {"leaves", "'leaves' is not NAME=V (expected NAME=V[,NAME=V...] with V in 0..1)"},
+        {"leaves=0.3,", "empty entry in 'leaves=0.3,'"},
+        {",leaves=0.3", "empty entry"},
+        {"=0.3", "'=0.3' has no name"},
+        {" =0.3", "has no name"},
+        {"leaves=", "leaves: '' is not a number (map in 0..1)"},
+        {"leaves=half", "leaves: 'half' is not a number (map in 0..1)"},
+        {"leaves=nan", "not a number"},
+        {"leaves=1.5", "leaves: 1.5 is out of range 0..1"},
+        {"leaves=-0.1", "out of range 0..1"},
+        {"leaves=0.3, leaves =0.4", "leaves is given twice"},
+    };
+    for (const auto& c : cases) {
+        const std::string msg = usage_error_of([&] { s.set("material_alpha_cutoff", c.value); });
+        EXPECT_EQ(msg.rfind("setting material_alpha_cutoff: ", 0), 0u) << c.value << ": " << msg;
+        EXPECT_NE(msg.find(c.mention), std::string::npos) << c.value << ": " << msg;
+        EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    }
+    EXPECT_EQ(s.get("material_alpha_cutoff"), "leaves=0.25");  // a rejected value leaves the old
+}

@@ -1,0 +1,115 @@
+#pragma once
+// The inspector viewer's CPU decoding: turns an InspectedImage (the floats a shader sampling a
+// graph image sees) into 8-bit pixels to show, and one texel into a readout a graphics engineer
+// can read (linear depth, decoded normal, counts...). Pure functions: no Vulkan calls, no ImGui.
+//
+// How each semantic is shown (decode):
+// - ReverseZDepth / ForwardZDepth: DepthView::Linear shows the linear view distance, near dark
+//   and far bright (like distance); DepthView::Raw shows the stored value (so reverse-Z is near
+//   bright). Sky texels (stored depth at the far value: 0 reverse-Z, 1 forward-Z) are kSkyColor
+//   in both views and never take part in auto-fit. The convention comes from the semantic
+//   (InspectedImage::reverse_z is the camera's and agrees with it).
+// - ShadowDepth: orthographic, always the raw stored value.
+// - EncodedNormal: rgb as stored (n * 0.5 + 0.5); the range is not applied.
+// - UnormScalar, AO: r as grey over the range.
+// - HdrColor: rgb * 2^exposure, clamped to 0..1, sRGB-encoded; the range is not applied.
+// - LdrColor: as stored (already sRGB-encoded); an *_SRGB format samples as linear, so it is
+//   encoded again to show what is stored.
+// - Count: heat map (count_color) over black..white; a count <= black is black. Auto-fit uses
+//   0..max, so zero is always black.
+// - Other: the format's first channels as rgb (one channel as grey) over the range.
+// `channel` 0..3 shows that channel as grey, through the same transform (range, exposure...),
+// for the multi-channel semantics (normals, colours, Other); depth, scalars, AO and counts have
+// one quantity in r and ignore it. A texel whose shown quantity is NaN or infinite is
+// kNonFiniteColor (magenta), and auto-fit skips it.
+// Auto-fit: black/white = the finite min/max of the shown quantity over the image (depth:
+// excluding sky; counts: black 0, white max). A flat image (min == max) shows mid grey; an
+// image with nothing to fit (all sky, all NaN, no count above 0) uses the default range:
+// znear..zfar for linear depth, 0..1 otherwise. A manual range with black == white is a
+// threshold: at or below black shows 0, above 1; black > white inverts. A colour's alpha
+// (channel 3 of HdrColor, LdrColor) shows as stored, clamped to 0..1: no exposure, no encode.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/renderer.h"
+
+namespace ds::ui {
+
+enum class DepthView : uint8_t { Linear, Raw };
+
+struct ViewParams {
+    DepthView depth = DepthView::Linear;  // depth semantics (not ShadowDepth: always raw)
+    bool auto_fit = true;                 // black/white from the image (see above)
+    // Range when !auto_fit, in the shown quantity's units (linear depth: scene units; raw
+    // depth, scalars, Other: stored value; counts: count).
+    float black = 0.0f, white = 1.0f;
+    int channel = -1;       // -1 all, 0..3 isolate r/g/b/a as grey
+    float exposure = 0.0f;  // HdrColor: EV stops, before the clamp and sRGB encode
+};
+
+struct DecodedView {
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgba8;        // tightly packed, row 0 = top, alpha 255
+    float black = 0.0f, white = 1.0f;  // the range actually used (after auto-fit); 0..1 where
+                                       // the semantic ignores the range
+    std::string unit;                  // "scene units", "raw depth", "count", "" (stored values)
+};
+
+// Colours with a meaning of their own.
+inline constexpr std::array<uint8_t, 3> kSkyColor{24, 32, 96};         // depth: nothing drawn
+inline constexpr std::array<uint8_t, 3> kNonFiniteColor{255, 0, 255};  // NaN / infinity
+
+// Decodes the whole image. decode_into reuses `out`'s buffer (call it every frame with the
+// same DecodedView to avoid reallocating). An image whose texels do not hold width * height * 4
+// floats decodes to an empty view (width = height = 0).
+DecodedView decode(const InspectedImage& image, const ViewParams& params);
+void decode_into(const InspectedImage& image, const ViewParams& params, DecodedView& out);
+
+// Linear view distance of a stored depth (finite far plane):
+// reverse-Z d = n f / (depth (f - n) + n), forward-Z d = n f / (f - depth (f - n)).
+float linear_depth(float stored, bool reverse_z, float znear, float zfar);
+// A stored depth at (or beyond) the far value: nothing was drawn there.
+bool is_sky_depth(float stored, bool reverse_z);
+// ReverseZDepth or ForwardZDepth (perspective depth that linearises; not ShadowDepth).
+bool is_perspective_depth(graph::Semantic semantic);
+
+// Meaningful channels of a format: 1 for depth, stencil and R formats, 2 for RG, 3 for RGB
+// and B10G11R11, 4 otherwise (A2B10G10R10 included).
+uint32_t format_channels(VkFormat format);
+
+// The count heat map: t in 0..1 over black -> blue -> cyan -> green -> yellow -> red -> white;
+// t <= 0 is black; quantised to the 256 steps decode uses. count_color maps a count over a
+// black..white range exactly as decode does.
+std::array<uint8_t, 3> heat_color(float t);
+std::array<uint8_t, 3> count_color(float count, float black, float white);
+struct LegendStop {
+    float count = 0;  // the count this colour means
+    std::array<uint8_t, 3> rgb{};
+};
+// Stops for a legend of a Count view's range (DecodedView::black/white): the first is black
+// (counts <= black); then every count when the range is at most 8 whole counts, else the
+// first colour above black and five evenly spaced counts ending at white (whole counts when
+// black and white are).
+std::vector<LegendStop> count_legend(float black, float white);
+
+struct Readout {
+    uint32_t x = 0, y = 0;
+    std::array<float, 4> raw{};  // the texel as read
+    uint32_t channels = 4;       // meaningful channels of the format
+    std::string raw_text;        // "0.0123400" / "(0.512, 0.998, 0.497, 1.000)" / "17"
+    // "linear depth 12.345 (scene units)", "sky (far plane)", "normal (0.02, 1.00, -0.01)",
+    // "roughness 0.500", "AO 0.830", "17 fragments", "linear rgb (...), luminance 0.5", ...
+    std::string decoded_text;
+    std::optional<float> linear_depth;           // perspective depth semantics, not sky
+    std::optional<std::array<float, 3>> normal;  // EncodedNormal, normalised (none if zero)
+    bool sky = false;                            // perspective depth at the far value
+};
+// The texel at (x, y), row 0 = top; none outside the image (or for malformed texel data).
+// UnormScalar is labelled from the image name: "roughness" (name contains "rough"), "shadow"
+// (contains "shadow"), else "value". Other has raw_text only.
+std::optional<Readout> readout(const InspectedImage& image, uint32_t x, uint32_t y);
+
+}  // namespace ds::ui

@@ -1,0 +1,224 @@
+#include "ui/inspector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+#include <imgui.h>
+
+#include "renderer/scene/loader.h"
+#include "renderer/shader/compiler.h"
+#include "ui/panels/panels.h"
+
+namespace ds::ui {
+namespace {
+
+template <class... Ts>
+struct Overloaded : Ts... {
+    using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+SceneSummary summarize(const scene::Scene& s) {
+    SceneSummary out;
+    out.name = s.name;
+    out.source = s.source;
+    out.draw_groups = s.draw_groups.size();
+    out.instances = s.instances.size();
+    out.meshes = s.meshes.size();
+    out.triangles = s.triangle_count();
+    for (const scene::Material& m : s.materials) {
+        switch (m.alpha_mode) {
+            case scene::AlphaMode::Opaque:
+                ++out.opaque;
+                break;
+            case scene::AlphaMode::Mask:
+                ++out.masked;
+                out.masked_names.push_back(m.name);
+                break;
+            case scene::AlphaMode::Blend:
+                ++out.blend;
+                break;
+        }
+    }
+    return out;
+}
+
+float render_scale(const Settings& settings) {
+    const auto it = settings.values().find("render_scale");
+    return it == settings.values().end() ? 1.0f : settings.get_float("render_scale");
+}
+
+}  // namespace
+
+void PassHistory::add(const FrameResult& frame) {
+    auto push = [](std::deque<double>& d, double v) {
+        d.push_back(v);
+        while (d.size() > kHistory) d.pop_front();
+    };
+    push(frame_ms, frame.gpu_ms);
+    for (const PassResult& p : frame.passes) push(pass_ms[p.name], p.gpu_ms);
+}
+
+double PassHistory::median(const std::string& pass) const {
+    const auto it = pass_ms.find(pass);
+    if (it == pass_ms.end() || it->second.empty()) return 0.0;
+    std::vector<double> v(it->second.begin(), it->second.end());
+    const size_t mid = v.size() / 2;
+    std::nth_element(v.begin(), v.begin() + long(mid), v.end());
+    if (v.size() % 2) return v[mid];
+    const double upper = v[mid];
+    return 0.5 * (upper + *std::max_element(v.begin(), v.begin() + long(mid)));
+}
+
+Inspector::Inspector(Renderer& renderer, Settings settings, scene::Scene scene, Options options)
+    : renderer_(renderer),
+      settings_(std::move(settings)),
+      last_good_(settings_),
+      options_(options),
+      auto_reload_(options.watch_shaders),
+      watch_(shader::Compiler::default_shader_root()) {
+    set_scene(std::move(scene));
+}
+
+void Inspector::set_scene(scene::Scene scene) {
+    renderer_.set_scene(scene);  // throws before anything changes here
+    scene_ = std::move(scene);
+    summary_ = summarize(scene_);
+    camera_.reset(scene_.camera, scene_.bounds);
+}
+
+VkExtent2D Inspector::render_size() const {
+    if (options_.render_size) return *options_.render_size;
+    float w = viewer_.w, h = viewer_.h;
+    if (w < 1 || h < 1) {
+        w = float(options_.fallback_width);
+        h = float(options_.fallback_height);
+    }
+    const float scale = render_scale(settings_);
+    return {std::max(1u, uint32_t(std::lround(w * scale))),
+            std::max(1u, uint32_t(std::lround(h * scale)))};
+}
+
+void Inspector::draw() {
+    const ImGuiIO& io = ImGui::GetIO();
+    const PanelLayout layout{io.DisplaySize.x, io.DisplaySize.y};
+    PanelIo panel{*this, viewer_, camera_input_, pending_};
+    settings_panel(panel, layout);
+    scene_panel(panel, layout);
+    shaders_panel(panel, layout);
+    passes_panel(panel, layout);
+    resources_panel(panel, layout);
+    viewer_panel(panel, layout);  // last: it takes the camera input the others left
+}
+
+void Inspector::apply(const Action& action) {
+    std::visit(
+        Overloaded{
+            [&](const SetSetting& a) {
+                try {
+                    const std::string before = settings_.get(a.name);
+                    settings_.set(a.name, a.value);
+                    const SettingDef& def = SettingsRegistry::instance().at(a.name);
+                    // Built-in scenes built from settings (overdraw_layers ...) are rebuilt.
+                    if (def.invalidates == Invalidates::Scene && before != settings_.get(a.name) &&
+                        scene_.source.rfind("builtin:", 0) == 0)
+                        set_scene(scene::load_scene(scene_.name, settings_));
+                    message_.clear();
+                } catch (const std::exception& e) {
+                    message_ = e.what();
+                }
+            },
+            [&](const SelectResource& a) {
+                viewer_.resource = a.name;
+                viewer_.sample = 0;
+                viewer_.hover.reset();
+            },
+            [&](const SelectPass& a) { selected_pass_ = a.name; },
+            [&](const LoadScene& a) {
+                try {
+                    scene::Scene loaded = scene::load_scene(a.name_or_path, settings_);
+                    set_scene(std::move(loaded));
+                    history_ = {};
+                    message_.clear();
+                } catch (const std::exception& e) {
+                    message_ = e.what();  // the current scene stays
+                }
+            },
+            [&](const ReloadShaders&) {
+                try {
+                    renderer_.rebuild_pipelines();
+                    shader_status_ = "shaders reloaded";
+                    shader_error_ = false;
+                } catch (const std::exception& e) {
+                    shader_status_ = e.what();  // file:line; the last good pipelines keep running
+                    shader_error_ = true;
+                }
+            },
+            [&](const SetAutoReload& a) { auto_reload_ = a.on; },
+            [&](const ResetSettings&) { settings_ = Settings(); },
+        },
+        action);
+}
+
+void Inspector::update() {
+    if (auto_reload_ && watch_.changed()) pending_.push_back(ReloadShaders{});
+    std::vector<Action> actions;
+    actions.swap(pending_);
+    for (const Action& a : actions) apply(a);
+    camera_input_.dt =
+        std::clamp(ImGui::GetCurrentContext() ? ImGui::GetIO().DeltaTime : 0.016f, 0.0f, 0.25f);
+    camera_input_.viewport_height = std::max(viewer_.h, 1.0f);
+    camera_.update(camera_input_);
+    camera_input_ = CameraInput{};
+    render();
+}
+
+void Inspector::render() {
+    const VkExtent2D size = render_size();
+    const InspectRequest request{viewer_.resource, viewer_.sample};
+    try {
+        frame_ = renderer_.render(camera_.camera(), settings_, size.width, size.height,
+                                  ReadBack::No, request);
+        last_good_ = settings_;
+    } catch (const std::exception& e) {
+        // A setting the device refuses (msaa=8 on lavapipe ...): say so, go back to what worked.
+        message_ = e.what();
+        settings_ = last_good_;
+        frame_ = renderer_.render(camera_.camera(), settings_, size.width, size.height,
+                                  ReadBack::No, request);
+    }
+    ++frames_rendered_;
+    history_.add(frame_);
+    if (frame_.inspected)
+        decode_into(*frame_.inspected, viewer_.params, view_);
+    else
+        view_ = DecodedView{};
+}
+
+std::optional<Readout> Inspector::readout_at(uint32_t x, uint32_t y) const {
+    if (!frame_.inspected) return std::nullopt;
+    return readout(*frame_.inspected, x, y);
+}
+
+ViewerBlit Inspector::viewer_blit() const {
+    ViewerBlit b;
+    if (view_.rgba8.empty() || viewer_.w < 1 || viewer_.h < 1) return b;
+    b.rgba8 = &view_.rgba8;
+    b.width = view_.width;
+    b.height = view_.height;
+    b.dst_x = viewer_.x;
+    b.dst_y = viewer_.y;
+    b.dst_w = viewer_.w;
+    b.dst_h = viewer_.h;
+    const float zoom = std::max(viewer_.zoom, 1e-3f);
+    b.src_w = viewer_.w / zoom;
+    b.src_h = viewer_.h / zoom;
+    b.src_x = viewer_.centre.x * float(view_.width) - 0.5f * b.src_w;
+    b.src_y = viewer_.centre.y * float(view_.height) - 0.5f * b.src_h;
+    b.nearest = zoom >= 1.0f;
+    return b;
+}
+
+}  // namespace ds::ui

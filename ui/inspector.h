@@ -1,0 +1,147 @@
+#pragma once
+// The inspector's model and one UI frame's logic, without Vulkan: the settings, the scene, the
+// camera, what the user selected, the last FrameResult and its decoded view. Each frame:
+//   ImGui::NewFrame();
+//   inspector.draw();    // the panels (ui/panels): read this state, return actions
+//   inspector.update();  // apply the actions and the camera input, render one frame
+//   ImGui::Render();     // then ui::Presenter draws viewer_blit() and ImGui's draw data
+// Tests drive it the same way, or call apply() with the actions a panel would return.
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "renderer/renderer.h"
+#include "renderer/scene/scene.h"
+#include "renderer/settings/settings.h"
+#include "ui/camera_controller.h"
+#include "ui/decode.h"
+#include "ui/presenter.h"
+#include "ui/shader_watch.h"
+
+namespace ds::ui {
+
+// What panels ask for; Inspector::apply() carries it out.
+struct SetSetting {
+    std::string name, value;
+};
+struct SelectResource {
+    std::string name;
+};
+struct SelectPass {
+    std::string name;
+};
+struct LoadScene {
+    std::string name_or_path;  // a built-in name or a .gltf / .glb path
+};
+struct ReloadShaders {};
+struct SetAutoReload {
+    bool on = true;
+};
+struct ResetSettings {};
+using Action = std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders,
+                            SetAutoReload, ResetSettings>;
+
+enum class MouseTarget : uint8_t { Camera, Image };
+
+// The viewer's state: what is shown and how (panels change it directly: it is view state).
+struct ViewerState {
+    std::string resource = "final";
+    uint32_t sample = 0;
+    ViewParams params;
+    float zoom = 1.0f;             // screen pixels per image texel
+    glm::vec2 centre{0.5f, 0.5f};  // the image point at the viewport's centre (0..1)
+    MouseTarget mouse = MouseTarget::Camera;
+    // Filled by the viewer panel.
+    float x = 0, y = 0, w = 0, h = 0;  // the image area, in framebuffer pixels
+    std::optional<Readout> hover;
+};
+
+// Per-pass GPU ms of the last kHistory frames.
+struct PassHistory {
+    static constexpr size_t kHistory = 120;
+    std::map<std::string, std::deque<double>> pass_ms;
+    std::deque<double> frame_ms;
+    void add(const FrameResult& frame);
+    double median(const std::string& pass) const;
+};
+
+struct SceneSummary {
+    std::string name, source;
+    size_t draw_groups = 0, instances = 0, meshes = 0;
+    uint64_t triangles = 0;
+    size_t opaque = 0, masked = 0, blend = 0;  // materials by alpha mode
+    std::vector<std::string> masked_names;
+};
+
+class Inspector {
+  public:
+    struct Options {
+        uint32_t fallback_width = 1280, fallback_height = 720;  // before the first layout
+        bool watch_shaders = true;
+        std::optional<VkExtent2D> render_size;  // fixed scene size (bench --ui)
+    };
+    Inspector(Renderer& renderer, Settings settings, scene::Scene scene, Options options);
+
+    void draw();    // inside an ImGui frame
+    void update();  // after draw(): actions, camera, one rendered frame, decode
+    void apply(const Action& action);
+    void queue(Action action) { pending_.push_back(std::move(action)); }
+
+    // What the presenter draws under ImGui.
+    ViewerBlit viewer_blit() const;
+
+    // State, for the panels and tests.
+    Renderer& renderer() { return renderer_; }
+    const Settings& settings() const { return settings_; }
+    const scene::Scene& scene() const { return scene_; }
+    const SceneSummary& scene_summary() const { return summary_; }
+    const FrameResult& frame() const { return frame_; }
+    const DecodedView& view() const { return view_; }
+    const PassHistory& history() const { return history_; }
+    ViewerState& viewer() { return viewer_; }
+    const ViewerState& viewer() const { return viewer_; }
+    const std::string& selected_pass() const { return selected_pass_; }
+    const std::string& message() const { return message_; }  // last error, "" = none
+    const std::string& shader_status() const { return shader_status_; }
+    bool shader_error() const { return shader_error_; }
+    bool auto_reload() const { return auto_reload_; }
+    uint64_t frames_rendered() const { return frames_rendered_; }
+    const scene::Camera& camera() const { return camera_.camera(); }
+    CameraInput& camera_input() { return camera_input_; }
+    // The render size the next frame uses: the viewer's area times render_scale.
+    VkExtent2D render_size() const;
+    // Hover readout of the shown resource at image texel (x, y).
+    std::optional<Readout> readout_at(uint32_t x, uint32_t y) const;
+
+  private:
+    void set_scene(scene::Scene scene);
+    void render();
+
+    Renderer& renderer_;
+    Settings settings_;
+    Settings last_good_;  // the settings of the last frame that rendered
+    scene::Scene scene_;
+    SceneSummary summary_;
+    Options options_;
+    CameraController camera_;
+    CameraInput camera_input_;
+    ViewerState viewer_;
+    std::string selected_pass_;
+    std::vector<Action> pending_;
+    FrameResult frame_;
+    DecodedView view_;
+    PassHistory history_;
+    std::string message_;
+    std::string shader_status_ = "shaders compiled";
+    bool shader_error_ = false;
+    bool auto_reload_ = true;
+    ShaderWatch watch_;
+    uint64_t frames_rendered_ = 0;
+};
+
+}  // namespace ds::ui

@@ -1,0 +1,34 @@
+#pragma once
+// The inspector's panels, one file each. A panel reads the inspector's state and returns what
+// the user asked for as actions (Inspector::apply carries them out); view-only state (the
+// viewer's zoom and decode range, the camera input) it writes directly. No Vulkan calls.
+#include <vector>
+
+#include "ui/inspector.h"
+
+namespace ds::ui {
+
+struct PanelIo {
+    const Inspector& inspector;
+    ViewerState& viewer;
+    CameraInput& camera;
+    std::vector<Action>& actions;
+};
+
+// Window placement on first use (later runs take imgui.ini's).
+struct PanelLayout {
+    float width = 1600, height = 900;
+    static constexpr float kLeft = 340, kRight = 460;
+};
+
+void passes_panel(PanelIo& io, const PanelLayout& layout);
+void resources_panel(PanelIo& io, const PanelLayout& layout);
+void viewer_panel(PanelIo& io, const PanelLayout& layout);
+void settings_panel(PanelIo& io, const PanelLayout& layout);
+void scene_panel(PanelIo& io, const PanelLayout& layout);
+void shaders_panel(PanelIo& io, const PanelLayout& layout);
+
+// Shared widgets.
+void help_marker(const char* text);  // "(?)" with a tooltip
+
+}  // namespace ds::ui

@@ -1,0 +1,102 @@
+// Passes: the frame's passes in execution order with their GPU cost (this frame and the
+// median of the last 120), shader invocations and a bar each; the selected pass's reads and
+// writes (click one to view it); the frame-time history.
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include <imgui.h>
+
+#include "ui/panels/panels.h"
+
+namespace ds::ui {
+namespace {
+
+void declarations(PanelIo& io, const PassResult& pass) {
+    auto list = [&](const char* label, const std::vector<std::string>& names) {
+        ImGui::TextDisabled("%s", label);
+        for (const std::string& name : names) {
+            ImGui::SameLine();
+            if (ImGui::SmallButton(name.c_str())) io.actions.push_back(SelectResource{name});
+        }
+        if (names.empty()) {
+            ImGui::SameLine();
+            ImGui::TextDisabled("-");
+        }
+    };
+    list("reads ", pass.reads);
+    list("writes", pass.writes);
+}
+
+}  // namespace
+
+void passes_panel(PanelIo& io, const PanelLayout& layout) {
+    ImGui::SetNextWindowPos(ImVec2(layout.width - PanelLayout::kRight, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(PanelLayout::kRight, layout.height * 0.55f),
+                             ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Passes")) {
+        ImGui::End();
+        return;
+    }
+    const Inspector& in = io.inspector;
+    const FrameResult& frame = in.frame();
+    const PassHistory& history = in.history();
+    ImGui::Text("frame %.2f ms GPU, %.2f ms CPU record, %ux%u", frame.gpu_ms, frame.cpu_ms,
+                frame.width, frame.height);
+    double worst = 0.0;
+    for (const PassResult& p : frame.passes) worst = std::max(worst, p.gpu_ms);
+
+    const ImGuiTableFlags flags =
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
+    if (ImGui::BeginTable("passes", 6, flags)) {
+        ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn("ms");
+        ImGui::TableSetupColumn("median");
+        ImGui::TableSetupColumn("VS inv");
+        ImGui::TableSetupColumn("FS inv");
+        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableHeadersRow();
+        for (const PassResult& p : frame.passes) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            const bool selected = p.name == in.selected_pass();
+            if (ImGui::Selectable(p.name.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns))
+                io.actions.push_back(SelectPass{selected ? std::string() : p.name});
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", p.gpu_ms);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", history.median(p.name));
+            ImGui::TableNextColumn();
+            ImGui::Text("%llu", static_cast<unsigned long long>(p.vertex_shader_invocations));
+            ImGui::TableNextColumn();
+            ImGui::Text("%llu", static_cast<unsigned long long>(p.fragment_shader_invocations));
+            ImGui::TableNextColumn();
+            const float fraction = worst > 0 ? float(p.gpu_ms / worst) : 0.0f;
+            ImGui::ProgressBar(fraction, ImVec2(-1, ImGui::GetTextLineHeight()), "");
+        }
+        ImGui::EndTable();
+    }
+    if (!frame.skipped.empty()) {
+        for (const std::string& s : frame.skipped) ImGui::TextDisabled("%s", s.c_str());
+    }
+    for (const PassResult& p : frame.passes) {
+        if (p.name != in.selected_pass()) continue;
+        ImGui::Separator();
+        ImGui::Text("%s", p.name.c_str());
+        declarations(io, p);
+        if (p.shaded_fragments)
+            ImGui::Text("shaded fragments %llu",
+                        static_cast<unsigned long long>(*p.shaded_fragments));
+    }
+    ImGui::Separator();
+    std::vector<float> plot(history.frame_ms.begin(), history.frame_ms.end());
+    float top = 0.0f;
+    for (float v : plot) top = std::max(top, v);
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "frame GPU ms, last %zu (max %.1f)", plot.size(), top);
+    ImGui::PlotLines("##frame", plot.data(), int(plot.size()), 0, overlay, 0.0f,
+                     top * 1.2f + 0.001f, ImVec2(ImGui::GetContentRegionAvail().x, 70));
+    ImGui::End();
+}
+
+}  // namespace ds::ui

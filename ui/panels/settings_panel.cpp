@@ -1,0 +1,143 @@
+// Settings: every knob of the registry (renderer/settings), grouped as the registry groups
+// them, a widget by type, the registry's help text as tooltip. A change is an action: it
+// applies on the next frame (the renderer rebuilds what the knob invalidates).
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+
+#include "ui/panels/panels.h"
+
+namespace ds::ui {
+namespace {
+
+void tooltip(const SettingDef& def) {
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::Text("%s (%s: %s, default %s)", def.name.c_str(), def.type_name().c_str(),
+                def.range_text().c_str(), def.default_value.c_str());
+    ImGui::TextUnformatted(def.help.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+// The values of a small integer range the registry accepts (msaa: 1, 2, 4, 8).
+std::vector<int> accepted_ints(const SettingDef& def) {
+    std::vector<int> out;
+    Settings probe;
+    for (int v = int(def.min); v <= int(def.max); ++v) {
+        try {
+            probe.set(def.name, std::to_string(v));
+            out.push_back(v);
+        } catch (const std::exception&) {
+        }
+    }
+    return out;
+}
+
+void knob(PanelIo& io, const SettingDef& def) {
+    const Settings& settings = io.inspector.settings();
+    const std::string& value = settings.get(def.name);
+    auto set = [&](std::string v) { io.actions.push_back(SetSetting{def.name, std::move(v)}); };
+    const char* label = def.name.c_str();
+    const bool changed = value != def.default_value;
+    if (changed) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.4f, 1.0f));
+    switch (def.type) {
+        case SettingType::Bool: {
+            bool on = value == "on";
+            if (ImGui::Checkbox(label, &on)) set(on ? "on" : "off");
+            break;
+        }
+        case SettingType::Enum: {
+            if (ImGui::BeginCombo(label, value.c_str())) {
+                for (const std::string& c : def.choices)
+                    if (ImGui::Selectable(c.c_str(), c == value)) set(c);
+                ImGui::EndCombo();
+            }
+            break;
+        }
+        case SettingType::Int: {
+            int v = std::stoi(value);
+            if (def.max - def.min <= 8) {
+                if (ImGui::BeginCombo(label, value.c_str())) {
+                    for (int option : accepted_ints(def)) {
+                        const std::string text = std::to_string(option);
+                        if (ImGui::Selectable(text.c_str(), option == v)) set(text);
+                    }
+                    ImGui::EndCombo();
+                }
+            } else if (ImGui::SliderInt(label, &v, int(def.min), int(def.max))) {
+                set(std::to_string(v));
+            }
+            break;
+        }
+        case SettingType::Float: {
+            // A keyword ("material") or a number.
+            const bool keyword =
+                std::find(def.choices.begin(), def.choices.end(), value) != def.choices.end();
+            if (!def.choices.empty()) {
+                bool use_keyword = keyword;
+                const std::string box = def.choices.front() + "##" + def.name;
+                if (ImGui::Checkbox(box.c_str(), &use_keyword))
+                    set(use_keyword                                ? def.choices.front()
+                        : def.default_value == def.choices.front() ? "0.5"
+                                                                   : def.default_value);
+                tooltip(def);
+                ImGui::SameLine();
+            }
+            float v = keyword ? 0.5f : std::stof(value);
+            if (keyword) ImGui::BeginDisabled();
+            if (ImGui::SliderFloat(label, &v, float(def.min), float(def.max), "%.3g")) {
+                char text[32];
+                std::snprintf(text, sizeof text, "%.4g", v);
+                set(text);
+            }
+            if (keyword) ImGui::EndDisabled();
+            break;
+        }
+        default: {  // free text (lists)
+            char buffer[256];
+            std::snprintf(buffer, sizeof buffer, "%s", value.c_str());
+            if (ImGui::InputText(label, buffer, sizeof buffer,
+                                 ImGuiInputTextFlags_EnterReturnsTrue))
+                set(buffer);
+            break;
+        }
+    }
+    if (changed) ImGui::PopStyleColor();
+    tooltip(def);
+}
+
+}  // namespace
+
+void settings_panel(PanelIo& io, const PanelLayout& layout) {
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(PanelLayout::kLeft, layout.height * 0.55f),
+                             ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Settings")) {
+        ImGui::End();
+        return;
+    }
+    const auto& defs = SettingsRegistry::instance().all();
+    std::vector<std::string> groups;
+    for (const SettingDef& d : defs)
+        if (std::find(groups.begin(), groups.end(), d.group) == groups.end())
+            groups.push_back(d.group);
+    if (ImGui::SmallButton("reset all")) io.actions.push_back(ResetSettings{});
+    ImGui::SameLine();
+    ImGui::TextDisabled("changed knobs are yellow");
+    ImGui::PushItemWidth(-150);
+    for (const std::string& group : groups) {
+        if (!ImGui::CollapsingHeader(group.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) continue;
+        for (const SettingDef& d : defs)
+            if (d.group == group) knob(io, d);
+    }
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
+}  // namespace ds::ui

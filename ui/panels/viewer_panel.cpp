@@ -1,0 +1,233 @@
+// Viewer: the central viewport. Shows the final image or any graph resource decoded by its
+// semantic (ui/decode.h), with the decode controls above and the hover readout below. The
+// mouse drives the camera, or with Ctrl (or the "image" mouse mode) zooms and pans the image.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "renderer/graph/names.h"
+#include "ui/panels/panels.h"
+
+namespace ds::ui {
+namespace {
+
+constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoScrollbar |
+                                    ImGuiWindowFlags_NoScrollWithMouse |
+                                    ImGuiWindowFlags_NoCollapse;
+
+bool is_depth(graph::Semantic s) {
+    return s == graph::Semantic::ReverseZDepth || s == graph::Semantic::ForwardZDepth ||
+           s == graph::Semantic::ShadowDepth;
+}
+
+void controls(PanelIo& io, const FrameResult& frame) {
+    ViewerState& v = io.viewer;
+    const InspectedImage* image = frame.inspected ? &*frame.inspected : nullptr;
+    // Resource picker.
+    ImGui::SetNextItemWidth(190);
+    if (ImGui::BeginCombo("##resource", v.resource.c_str())) {
+        for (const ResourceSummary& r : frame.resources) {
+            if (!r.is_image) continue;
+            if (ImGui::Selectable(r.name.c_str(), r.name == v.resource))
+                io.actions.push_back(SelectResource{r.name});
+        }
+        ImGui::EndCombo();
+    }
+    if (image) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%ux%u %s", image->width, image->height,
+                            graph::semantic_name(image->semantic));
+    }
+    if (image && image->samples > 1) {
+        ImGui::SameLine();
+        int sample = int(v.sample);
+        ImGui::SetNextItemWidth(80);
+        if (ImGui::SliderInt("sample", &sample, 0, int(image->samples) - 1))
+            v.sample = uint32_t(sample);
+    }
+    if (image && graph::Semantic(image->semantic) != graph::Semantic::ShadowDepth &&
+        is_depth(image->semantic)) {
+        ImGui::SameLine();
+        int mode = int(v.params.depth);
+        ImGui::RadioButton("linear", &mode, int(DepthView::Linear));
+        ImGui::SameLine();
+        ImGui::RadioButton("raw", &mode, int(DepthView::Raw));
+        v.params.depth = DepthView(mode);
+    }
+    // Range.
+    ImGui::Checkbox("auto-fit", &v.params.auto_fit);
+    ImGui::SameLine();
+    const DecodedView& view = io.inspector.view();
+    if (v.params.auto_fit) {  // show what auto-fit chose; editing switches to manual
+        v.params.black = view.black;
+        v.params.white = view.white;
+    }
+    ImGui::SetNextItemWidth(240);
+    float range[2] = {v.params.black, v.params.white};
+    const float speed = std::max(std::abs(range[1] - range[0]) * 0.005f, 1e-4f);
+    if (ImGui::DragFloat2("black / white", range, speed, 0, 0, "%.4g")) {
+        v.params.auto_fit = false;
+        v.params.black = range[0];
+        v.params.white = range[1];
+    }
+    if (!view.unit.empty()) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", view.unit.c_str());
+    }
+    ImGui::SameLine();
+    ImGui::TextUnformatted(" channel");
+    static const char* kChannels[] = {"all", "R", "G", "B", "A"};
+    for (int c = -1; c < 4; ++c) {
+        ImGui::SameLine();
+        if (ImGui::RadioButton(kChannels[c + 1], v.params.channel == c)) v.params.channel = c;
+    }
+    if (image && image->semantic == graph::Semantic::HdrColor) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(120);
+        ImGui::SliderFloat("EV", &v.params.exposure, -8.0f, 8.0f, "%.1f");
+    }
+    // Zoom and mouse mode.
+    ImGui::Text("zoom %.3gx", v.zoom);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("1:1")) {
+        v.zoom = 1.0f;
+        v.centre = {0.5f, 0.5f};
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("fit") && view.width && view.height) {
+        v.zoom = std::min(v.w / float(view.width), v.h / float(view.height));
+        v.centre = {0.5f, 0.5f};
+    }
+    ImGui::SameLine();
+    int mouse = int(v.mouse);
+    ImGui::TextUnformatted("  mouse:");
+    ImGui::SameLine();
+    ImGui::RadioButton("camera", &mouse, int(MouseTarget::Camera));
+    ImGui::SameLine();
+    ImGui::RadioButton("image", &mouse, int(MouseTarget::Image));
+    v.mouse = MouseTarget(mouse);
+    ImGui::SameLine();
+    help_marker(
+        "Camera: left drag orbits, middle drag pans, wheel dollies, right drag + WASD/QE flies "
+        "(shift: faster), F frames the scene.\nImage (or hold Ctrl): wheel zooms at the cursor, "
+        "drag pans. Nearest-neighbour when zoomed in.");
+}
+
+void legend(const DecodedView& view) {
+    for (const LegendStop& stop : count_legend(view.black, view.white)) {
+        const ImVec4 c(stop.rgb[0] / 255.0f, stop.rgb[1] / 255.0f, stop.rgb[2] / 255.0f, 1.0f);
+        ImGui::ColorButton("##legend", c, ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
+        ImGui::SameLine();
+        ImGui::Text("%g", stop.count);
+        ImGui::SameLine();
+    }
+    ImGui::NewLine();
+}
+
+// Mouse and keys over the image: camera input, or zoom and pan of the image.
+void input(PanelIo& io, const ImVec2& origin, bool hovered, bool active) {
+    ViewerState& v = io.viewer;
+    const ImGuiIO& imgui = ImGui::GetIO();
+    const DecodedView& view = io.inspector.view();
+    const bool image_mode = v.mouse == MouseTarget::Image || imgui.KeyCtrl;
+    CameraInput& cam = io.camera;
+    if (image_mode) {
+        if (hovered && imgui.MouseWheel != 0.0f && view.width) {
+            // Zoom about the cursor: the texel under it stays under it.
+            const float old_zoom = v.zoom;
+            v.zoom = std::clamp(v.zoom * std::pow(1.25f, imgui.MouseWheel), 1.0f / 32, 64.0f);
+            const glm::vec2 cursor{imgui.MousePos.x - origin.x - 0.5f * v.w,
+                                   imgui.MousePos.y - origin.y - 0.5f * v.h};
+            const glm::vec2 size{float(view.width), float(view.height)};
+            v.centre += cursor * (1.0f / old_zoom - 1.0f / v.zoom) / size;
+        }
+        if (active && view.width &&
+            (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0) ||
+             ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0))) {
+            v.centre.x -= imgui.MouseDelta.x / (v.zoom * float(view.width));
+            v.centre.y -= imgui.MouseDelta.y / (v.zoom * float(view.height));
+        }
+        return;
+    }
+    if (hovered) cam.dolly += imgui.MouseWheel;
+    if (active) {
+        const glm::vec2 delta{imgui.MouseDelta.x, imgui.MouseDelta.y};
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) cam.orbit += delta;
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Middle)) cam.pan += delta;
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) cam.look += delta;
+    }
+    // Keys reach the camera unless a text field has them.
+    if (imgui.WantTextInput) return;
+    const bool flying = active && ImGui::IsMouseDown(ImGuiMouseButton_Right);
+    if (flying) {
+        // ImGui 1.86 indexes io.KeysDown by the backend's key codes: GLFW's are ASCII for
+        // letters (the headless driver uses the same).
+        auto key = [](char k) { return ImGui::IsKeyDown(int(k)) ? 1.0f : 0.0f; };
+        cam.move += glm::vec3(key('D') - key('A'), key('E') - key('Q'), key('W') - key('S'));
+        cam.fast = imgui.KeyShift;
+    }
+    if ((hovered || active) && ImGui::IsKeyPressed(int('F'), false)) cam.frame = true;
+}
+
+}  // namespace
+
+void viewer_panel(PanelIo& io, const PanelLayout& layout) {
+    const float x = PanelLayout::kLeft, w = layout.width - PanelLayout::kLeft - PanelLayout::kRight;
+    ImGui::SetNextWindowPos(ImVec2(x, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(std::max(w, 200.0f), layout.height), ImGuiCond_FirstUseEver);
+    ViewerState& v = io.viewer;
+    if (!ImGui::Begin("Viewer", nullptr, kFlags)) {
+        v.w = v.h = 0;
+        ImGui::End();
+        return;
+    }
+    const FrameResult& frame = io.inspector.frame();
+    controls(io, frame);
+    const DecodedView& view = io.inspector.view();
+    const bool counts = frame.inspected && frame.inspected->semantic == graph::Semantic::Count;
+    if (counts) legend(view);
+    if (!frame.inspected && frame.width)
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "'%s' is not in this frame (its pass is off)",
+                           v.resource.c_str());
+
+    // The image area: what is left above the readout line.
+    const float readout_height = ImGui::GetFrameHeightWithSpacing() * 2;
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImVec2 avail = ImGui::GetContentRegionAvail();
+    avail.y = std::max(avail.y - readout_height, 1.0f);
+    avail.x = std::max(avail.x, 1.0f);
+    ImGui::InvisibleButton("##image", avail,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
+    const bool hovered = ImGui::IsItemHovered();
+    const bool active = ImGui::IsItemActive();
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    v.x = origin.x * scale.x;
+    v.y = origin.y * scale.y;
+    v.w = std::floor(avail.x * scale.x);
+    v.h = std::floor(avail.y * scale.y);
+    input(io, origin, hovered, active);
+
+    // Hover readout: the texel under the cursor.
+    v.hover.reset();
+    if (hovered && view.width && frame.inspected) {
+        const ViewerBlit blit = io.inspector.viewer_blit();
+        const ImVec2 m = ImGui::GetIO().MousePos;
+        const float tx = blit.src_x + (m.x * scale.x - v.x) / v.zoom;
+        const float ty = blit.src_y + (m.y * scale.y - v.y) / v.zoom;
+        if (tx >= 0 && ty >= 0) v.hover = io.inspector.readout_at(uint32_t(tx), uint32_t(ty));
+    }
+    ImGui::Separator();
+    if (v.hover)
+        ImGui::Text("(%u, %u)  raw %s  |  %s", v.hover->x, v.hover->y, v.hover->raw_text.c_str(),
+                    v.hover->decoded_text.c_str());
+    else
+        ImGui::TextDisabled("hover the image for pixel values");
+    if (!io.inspector.message().empty())
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", io.inspector.message().c_str());
+    ImGui::End();
+}
+
+}  // namespace ds::ui

@@ -1,0 +1,308 @@
+#include "ui/presenter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
+
+#include "renderer/common/error.h"
+#include "renderer/vk/barrier.h"
+#include "renderer/vk/check.h"
+#include "renderer/vk/context.h"
+
+namespace ds::ui {
+namespace {
+
+using graph::Access;
+
+constexpr VkFormat kDisplayFormat = VK_FORMAT_R8G8B8A8_UNORM;
+// The viewport's background where no image is: ImGui's dark window colour.
+constexpr VkClearColorValue kBackground{{0.06f, 0.06f, 0.07f, 1.0f}};
+
+void check_result(VkResult result) {
+    if (result != VK_SUCCESS) vk::check(result, "ImGui Vulkan backend");
+}
+
+vk::RenderPass create_render_pass(vk::Context& context, VkFormat format) {
+    // LOAD over what ui_viewer wrote; the graph's barriers do every layout transition, so the
+    // render pass keeps COLOR_ATTACHMENT_OPTIMAL throughout.
+    VkAttachmentDescription colour{};
+    colour.format = format;
+    colour.samples = VK_SAMPLE_COUNT_1_BIT;
+    colour.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    colour.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    colour.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    colour.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    colour.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    const VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription subpass{};
+    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    subpass.colorAttachmentCount = 1;
+    subpass.pColorAttachments = &ref;
+    auto info = vk::make<VkRenderPassCreateInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO);
+    info.attachmentCount = 1;
+    info.pAttachments = &colour;
+    info.subpassCount = 1;
+    info.pSubpasses = &subpass;
+    VkRenderPass pass = VK_NULL_HANDLE;
+    vk::check(vkCreateRenderPass(context.device(), &info, nullptr, &pass), "vkCreateRenderPass");
+    context.set_name(VK_OBJECT_TYPE_RENDER_PASS, pass, "imgui");
+    return vk::RenderPass(context.device(), pass);
+}
+
+// The part of [src] that lands inside [dst] once both are clipped to the image and the
+// viewport; false when nothing is visible.
+struct BlitRegion {
+    int32_t sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1;
+};
+bool clip_blit(const ViewerBlit& v, VkExtent2D target, BlitRegion& out) {
+    if (!v.rgba8 || v.width == 0 || v.height == 0 || v.src_w <= 0 || v.src_h <= 0 || v.dst_w <= 0 ||
+        v.dst_h <= 0)
+        return false;
+    const float scale_x = v.dst_w / v.src_w, scale_y = v.dst_h / v.src_h;
+    // Image rectangle, in target pixels.
+    float x0 = v.dst_x - v.src_x * scale_x, y0 = v.dst_y - v.src_y * scale_y;
+    float x1 = x0 + float(v.width) * scale_x, y1 = y0 + float(v.height) * scale_y;
+    // Clip to the viewport and the target.
+    const float cx0 = std::max({x0, v.dst_x, 0.0f}), cy0 = std::max({y0, v.dst_y, 0.0f});
+    const float cx1 = std::min({x1, v.dst_x + v.dst_w, float(target.width)});
+    const float cy1 = std::min({y1, v.dst_y + v.dst_h, float(target.height)});
+    if (cx1 - cx0 < 1.0f || cy1 - cy0 < 1.0f) return false;
+    // Whole destination pixels, and the source region they show.
+    out.dx0 = int32_t(std::floor(cx0));
+    out.dy0 = int32_t(std::floor(cy0));
+    out.dx1 = int32_t(std::ceil(cx1));
+    out.dy1 = int32_t(std::ceil(cy1));
+    auto src_of = [](float d, float origin, float scale, uint32_t size) {
+        return int32_t(std::clamp(std::lround((d - origin) / scale), 0L, long(size)));
+    };
+    out.sx0 = src_of(float(out.dx0), x0, scale_x, v.width);
+    out.sx1 = src_of(float(out.dx1), x0, scale_x, v.width);
+    out.sy0 = src_of(float(out.dy0), y0, scale_y, v.height);
+    out.sy1 = src_of(float(out.dy1), y0, scale_y, v.height);
+    return out.sx1 > out.sx0 && out.sy1 > out.sy0;
+}
+
+}  // namespace
+
+Presenter::Presenter(vk::Context& context, VkFormat target_format)
+    : context_(context), format_(target_format) {
+    if (!ImGui::GetCurrentContext()) throw Error("presenter: no ImGui context");
+    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4}};
+    imgui_pool_ = vk::DescriptorPool(context_, 4, sizes, "imgui");
+    render_pass_ = create_render_pass(context_, format_);
+    frames_ = std::make_unique<vk::FrameRing>(context_);
+    graph_ = std::make_unique<graph::RenderGraph>(context_);
+
+    ImGui_ImplVulkan_InitInfo info{};
+    info.Instance = context_.instance();
+    info.PhysicalDevice = context_.physical_device();
+    info.Device = context_.device();
+    info.QueueFamily = context_.queue_family();
+    info.Queue = context_.queue();
+    info.DescriptorPool = imgui_pool_.handle();
+    info.MinImageCount = 2;
+    info.ImageCount = vk::FrameRing::kFramesInFlight;
+    info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+    info.CheckVkResultFn = check_result;
+    if (!ImGui_ImplVulkan_Init(&info, render_pass_.handle()))
+        throw Error("ImGui Vulkan backend: initialisation failed");
+    backend_ = true;
+    context_.submit_once([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+Presenter::~Presenter() {
+    vkDeviceWaitIdle(context_.device());
+    if (backend_) ImGui_ImplVulkan_Shutdown();
+    frames_.reset();
+    graph_.reset();
+}
+
+void Presenter::wait_idle() {
+    context_.wait_idle();
+}
+
+void Presenter::forget_targets() {
+    context_.wait_idle();
+    framebuffers_.clear();
+}
+
+VkFramebuffer Presenter::framebuffer(const Target& target) {
+    auto it = framebuffers_.find(target.view);
+    if (it != framebuffers_.end()) return it->second.handle();
+    auto info = vk::make<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
+    info.renderPass = render_pass_.handle();
+    info.attachmentCount = 1;
+    info.pAttachments = &target.view;
+    info.width = target.extent.width;
+    info.height = target.extent.height;
+    info.layers = 1;
+    VkFramebuffer fb = VK_NULL_HANDLE;
+    vk::check(vkCreateFramebuffer(context_.device(), &info, nullptr, &fb), "vkCreateFramebuffer");
+    framebuffers_.emplace(target.view, vk::Framebuffer(context_.device(), fb));
+    return fb;
+}
+
+void Presenter::ensure_display(uint32_t width, uint32_t height, vk::DestroyList& retired) {
+    if (display_ && display_.width() == width && display_.height() == height) return;
+    if (display_) retired.defer(std::move(display_));
+    if (staging_) retired.defer(std::move(staging_));
+    display_ =
+        vk::Image(context_, {width, height, 1, kDisplayFormat,
+                             VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                 VK_IMAGE_USAGE_SAMPLED_BIT,  // views need a view usage
+                             VK_SAMPLE_COUNT_1_BIT, "viewer display"});
+    staging_ =
+        vk::Buffer(context_, {VkDeviceSize(width) * height * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                              vk::MemoryUsage::Upload, "viewer staging"});
+}
+
+void Presenter::record(VkCommandBuffer cmd, const Target& target, const graph::ExternalState& final,
+                       const ViewerBlit& viewer, ImDrawData* draw, vk::DestroyList& retired) {
+    BlitRegion region{};
+    const bool blit = clip_blit(viewer, target.extent, region);
+    graph::RenderGraph& g = *graph_;
+    g.begin_frame(target.extent, retired);
+
+    graph::ExternalImage out;
+    out.image = target.image;
+    out.view = target.view;
+    out.desc = {.format = format_,
+                .size = graph::ImageSize::fixed(target.extent.width, target.extent.height),
+                .semantic = graph::Semantic::LdrColor};
+    out.initial = {};  // UNDEFINED: every UI frame draws the whole target
+    out.final = final;
+    const graph::ImageHandle ui = g.import_image("ui_target", out);
+
+    graph::ImageHandle display;
+    if (blit) {
+        ensure_display(viewer.width, viewer.height, retired);
+        staging_.write(viewer.rgba8->data(), viewer.rgba8->size());
+        graph::ExternalImage d;
+        d.image = display_.handle();
+        d.view = display_.view();
+        d.desc = {.format = kDisplayFormat,
+                  .size = graph::ImageSize::fixed(viewer.width, viewer.height),
+                  .semantic = graph::Semantic::LdrColor};
+        d.initial = {};  // rewritten every frame
+        display = g.import_image("viewer_display", d);
+        graph::ExternalBuffer s;
+        s.buffer = staging_.handle();
+        s.size = staging_.size();
+        s.initial = {VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_HOST_BIT,
+                     VK_ACCESS_2_HOST_WRITE_BIT};
+        const graph::BufferHandle staging = g.import_buffer("viewer_staging", s);
+        g.add_pass("ui_upload", [&](graph::PassBuilder& b) {
+            b.read(staging, Access::TransferSrc);
+            b.write(display, Access::TransferDst);
+            return [=, w = viewer.width, h = viewer.height](graph::PassContext& ctx) {
+                VkBufferImageCopy copy{};
+                copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+                copy.imageExtent = {w, h, 1};
+                vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(staging), ctx.image(display),
+                                       ctx.layout(display), 1, &copy);
+            };
+        });
+    }
+    g.add_pass("ui_viewer", [&](graph::PassBuilder& b) {
+        if (blit) b.read(display, Access::TransferSrc);
+        b.write(ui, Access::TransferDst);
+        return [=, nearest = viewer.nearest](graph::PassContext& ctx) {
+            const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+            vkCmdClearColorImage(ctx.cmd(), ctx.image(ui), ctx.layout(ui), &kBackground, 1, &range);
+            if (!blit) return;
+            // The clear and the blit both write the target: order them.
+            vk::memory_barrier(ctx.cmd(), VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                               VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                               VK_ACCESS_2_TRANSFER_WRITE_BIT);
+            VkImageBlit b{};
+            b.srcSubresource = b.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            b.srcOffsets[0] = {region.sx0, region.sy0, 0};
+            b.srcOffsets[1] = {region.sx1, region.sy1, 1};
+            b.dstOffsets[0] = {region.dx0, region.dy0, 0};
+            b.dstOffsets[1] = {region.dx1, region.dy1, 1};
+            vkCmdBlitImage(ctx.cmd(), ctx.image(display), ctx.layout(display), ctx.image(ui),
+                           ctx.layout(ui), 1, &b, nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
+        };
+    });
+    g.add_pass("ui_imgui", [&](graph::PassBuilder& b) {
+        b.write(ui, Access::ColorAttachment);
+        return [this, draw, fb = framebuffer(target),
+                extent = target.extent](graph::PassContext& ctx) {
+            auto begin = vk::make<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
+            begin.renderPass = render_pass_.handle();
+            begin.framebuffer = fb;
+            begin.renderArea = {{0, 0}, extent};
+            vkCmdBeginRenderPass(ctx.cmd(), &begin, VK_SUBPASS_CONTENTS_INLINE);
+            if (draw) ImGui_ImplVulkan_RenderDrawData(draw, ctx.cmd());
+            vkCmdEndRenderPass(ctx.cmd());
+        };
+    });
+    g.compile();
+    last_graph_frame_ = g.execute(cmd);
+}
+
+UiFrameStats Presenter::collect(uint64_t id) const {
+    UiFrameStats stats;
+    for (const graph::PassResult& p : graph_->collect(id)) stats.gpu_ms += p.gpu_ms;
+    return stats;
+}
+
+UiFrameStats Presenter::present(const Target& target, const ViewerBlit& viewer, ImDrawData* draw,
+                                VkSemaphore acquired, VkSemaphore rendered) {
+    vk::Frame& frame = frames_->begin();
+    record(frame.cmd, target, graph::ExternalState::present(), viewer, draw, frame.retired);
+    frames_->submit(frame, {.wait = acquired,
+                            .wait_stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                            .signal = rendered});
+    frames_->wait(frame);
+    return collect(last_graph_frame_);
+}
+
+std::vector<uint8_t> Presenter::render_offscreen(VkExtent2D extent, const ViewerBlit& viewer,
+                                                 ImDrawData* draw, UiFrameStats* stats) {
+    vk::Frame& frame = frames_->begin();
+    if (!offscreen_ || offscreen_.width() != extent.width || offscreen_.height() != extent.height) {
+        if (offscreen_) {
+            framebuffers_.erase(offscreen_.view());
+            frame.retired.defer(std::move(offscreen_));
+        }
+        if (offscreen_readback_) frame.retired.defer(std::move(offscreen_readback_));
+        offscreen_ = vk::Image(
+            context_, {extent.width, extent.height, 1, kOffscreenFormat,
+                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                       VK_SAMPLE_COUNT_1_BIT, "ui offscreen"});
+        offscreen_readback_ = vk::Buffer(context_, {VkDeviceSize(extent.width) * extent.height * 4,
+                                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                    vk::MemoryUsage::Readback, "ui read-back"});
+    }
+    const Target target{offscreen_.handle(), offscreen_.view(), extent};
+    record(frame.cmd, target, graph::ExternalState::transfer_src(), viewer, draw, frame.retired);
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    copy.imageExtent = {extent.width, extent.height, 1};
+    vkCmdCopyImageToBuffer(frame.cmd, offscreen_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           offscreen_readback_.handle(), 1, &copy);
+    vk::memory_barrier(frame.cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    frames_->submit(frame);
+    frames_->wait(frame);
+    if (stats) *stats = collect(last_graph_frame_);
+    offscreen_readback_.invalidate();
+    std::vector<uint8_t> rgba(size_t(extent.width) * extent.height * 4);
+    const std::byte* bgra = offscreen_readback_.mapped();
+    for (size_t i = 0; i < rgba.size(); i += 4) {  // B8G8R8A8 -> RGBA
+        rgba[i + 0] = uint8_t(bgra[i + 2]);
+        rgba[i + 1] = uint8_t(bgra[i + 1]);
+        rgba[i + 2] = uint8_t(bgra[i + 0]);
+        rgba[i + 3] = 255;
+    }
+    return rgba;
+}
+
+}  // namespace ds::ui

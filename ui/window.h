@@ -1,0 +1,70 @@
+#pragma once
+// The inspector's window: GLFW (no client API), its Vulkan surface and swapchain. Resizes
+// recreate the swapchain; a minimised window (0x0 framebuffer) draws nothing until restored.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/vk/handle.h"
+
+struct GLFWwindow;
+
+namespace ds::vk {
+class Context;
+}
+
+namespace ds::ui {
+
+class Window {
+  public:
+    // glfwInit and the instance extensions a surface needs. Throws ds::Error (one line) when
+    // there is no display or no Vulkan support in GLFW.
+    static std::vector<std::string> instance_extensions();
+
+    Window(uint32_t width, uint32_t height, const std::string& title);
+    ~Window();  // destroys the swapchain and surface (after the device is idle), then GLFW
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    GLFWwindow* handle() const { return window_; }
+    bool should_close() const;
+    void poll_events() const;
+    void wait_events() const;  // while minimised
+    VkExtent2D framebuffer_size() const;
+
+    // After the Renderer's context exists: the surface and a first swapchain.
+    void attach(vk::Context& context);
+    VkFormat format() const { return format_; }
+
+    struct Acquired {
+        uint32_t index = 0;
+        VkImage image = VK_NULL_HANDLE;
+        VkImageView view = VK_NULL_HANDLE;
+        VkExtent2D extent{0, 0};
+        VkSemaphore acquired = VK_NULL_HANDLE;  // the presenter's submit waits on it
+        VkSemaphore rendered = VK_NULL_HANDLE;  // and signals this one; present waits on it
+    };
+    // False when the swapchain had to be recreated (or the window is minimised): skip this
+    // frame. `swapchain_changed` is set whenever image views were replaced.
+    bool acquire(Acquired& out, bool& swapchain_changed);
+    void present(const Acquired& acquired, bool& swapchain_changed);
+
+  private:
+    void create_swapchain();
+    void destroy_swapchain();
+
+    GLFWwindow* window_ = nullptr;
+    vk::Context* context_ = nullptr;
+    VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+    VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
+    VkFormat format_ = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent_{0, 0};
+    std::vector<VkImage> images_;
+    std::vector<vk::ImageView> views_;
+    std::vector<vk::Semaphore> rendered_;  // one per swapchain image
+    vk::Semaphore acquired_;               // reused: the presenter waits for each frame's fence
+};
+
+}  // namespace ds::ui
