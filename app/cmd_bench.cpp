@@ -1,6 +1,7 @@
 // bench: render N frames per settings combination in one process; print per-pass medians.
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -19,10 +20,12 @@ namespace {
 
 struct RunResult {
     std::vector<Assignment> assignments;
-    Summary frame;  // GPU: the frame's graph (+ the UI's with --ui)
-    Summary wall;   // host: the whole frame, submit to result (+ ImGui, decode, composite)
+    Summary frame;         // GPU: the frame's graph (+ the UI's with --ui)
+    Summary wall;          // host: the whole frame, submit to result (+ ImGui, decode, composite)
+    Summary beyond_scene;  // wall minus the scene graph's GPU ms: what is not the scene
     std::vector<std::pair<std::string, Summary>> passes;  // execution order
     std::vector<std::string> skipped;
+    bool ui = false;  // the inspector drawn over each frame (bench --ui)
 };
 
 // One measured frame: the renderer's result and, with --ui, the UI composite's GPU ms.
@@ -31,40 +34,60 @@ struct Measured {
     std::optional<double> ui_gpu_ms;
 };
 
-template <typename RenderFrame>
-RunResult measure(RenderFrame&& render_frame, const Options& o) {
-    for (int i = 0; i < o.bench_warmup; ++i) render_frame();
-    std::vector<double> frame_ms, wall_ms;
-    std::vector<std::string> order;
-    std::map<std::string, std::vector<double>> pass_ms;
-    std::vector<std::string> last_skipped;
-    auto add = [&](const std::string& name, double ms) {
-        if (!pass_ms.count(name)) order.push_back(name);
-        pass_ms[name].push_back(ms);
+using FrameSource = std::function<Measured()>;
+
+// Frames from each source in turn (warm-up, then measured): with --ui the plain frame and the
+// inspector's alternate, so both see the same machine and the ratio holds within one run.
+std::vector<RunResult> measure(const std::vector<FrameSource>& sources, const Options& o) {
+    struct Samples {
+        std::vector<double> frame_ms, wall_ms, beyond_ms;
+        std::vector<std::string> order;
+        std::map<std::string, std::vector<double>> pass_ms;
+        std::vector<std::string> skipped;
+        void add(const std::string& name, double ms) {
+            if (!pass_ms.count(name)) order.push_back(name);
+            pass_ms[name].push_back(ms);
+        }
     };
+    for (int i = 0; i < o.bench_warmup; ++i)
+        for (const FrameSource& source : sources) source();
+    std::vector<Samples> samples(sources.size());
     for (int i = 0; i < o.bench_frames; ++i) {
-        const auto start = std::chrono::steady_clock::now();
-        const Measured m = render_frame();
-        wall_ms.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count());
-        frame_ms.push_back(m.frame->gpu_ms + m.ui_gpu_ms.value_or(0.0));
-        last_skipped = m.frame->skipped;
-        for (const PassResult& p : m.frame->passes) add(p.name, p.gpu_ms);
-        if (m.ui_gpu_ms) add("ui", *m.ui_gpu_ms);
+        for (size_t k = 0; k < sources.size(); ++k) {
+            Samples& s = samples[k];
+            const auto start = std::chrono::steady_clock::now();
+            const Measured m = sources[k]();
+            s.wall_ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count());
+            s.frame_ms.push_back(m.frame->gpu_ms + m.ui_gpu_ms.value_or(0.0));
+            s.beyond_ms.push_back(s.wall_ms.back() - m.frame->gpu_ms);
+            s.skipped = m.frame->skipped;
+            for (const PassResult& p : m.frame->passes) s.add(p.name, p.gpu_ms);
+            if (m.ui_gpu_ms) s.add("ui", *m.ui_gpu_ms);
+        }
     }
-    RunResult run;
-    run.skipped = last_skipped;
-    run.frame = summarize(frame_ms);
-    run.wall = summarize(wall_ms);
-    for (const auto& name : order) run.passes.emplace_back(name, summarize(pass_ms[name]));
-    return run;
+    std::vector<RunResult> runs;
+    for (size_t k = 0; k < sources.size(); ++k) {
+        RunResult run;
+        run.skipped = samples[k].skipped;
+        run.frame = summarize(samples[k].frame_ms);
+        run.wall = summarize(samples[k].wall_ms);
+        run.beyond_scene = summarize(samples[k].beyond_ms);
+        for (const auto& name : samples[k].order)
+            run.passes.emplace_back(name, summarize(samples[k].pass_ms[name]));
+        run.ui = k > 0;
+        runs.push_back(std::move(run));
+    }
+    return runs;
 }
 
 void print_run(const RunResult& run, size_t index) {
     std::string label;
     for (const auto& [name, value] : run.assignments) label += " " + name + "=" + value;
-    std::printf("\nrun %zu:%s\n", index + 1, label.empty() ? " (defaults)" : label.c_str());
+    if (label.empty()) label = " (defaults)";
+    if (run.ui) label += " + inspector";
+    std::printf("\nrun %zu:%s\n", index + 1, label.c_str());
     std::printf("  %-18s %9s %9s %9s   (GPU ms)\n", "pass", "median", "min", "max");
     for (const auto& [name, s] : run.passes) {
         std::printf("  %-18s %9.3f %9.3f %9.3f\n", name.c_str(), s.median, s.min, s.max);
@@ -92,6 +115,7 @@ nlohmann::json runs_json(const std::vector<RunResult>& runs, const Settings& bas
         out.push_back({{"settings", settings.values()},
                        {"frame_ms", summary_json(run.frame)},
                        {"wall_ms", summary_json(run.wall)},
+                       {"ui", run.ui},
                        {"passes", passes},
                        {"skipped", run.skipped}});
     }
@@ -131,26 +155,36 @@ int run_bench(const Options& o) {
         Settings settings = base;
         for (const auto& [name, value] : combination) settings.set(name, value);
         FrameResult last;
+        std::vector<FrameSource> sources{[&] {
+            last =
+                renderer.render(scene.camera, settings, o.size.width, o.size.height, ReadBack::No);
+            return Measured{&last, std::nullopt};
+        }};
         if (ui) {
             for (const auto& [name, value] : combination)
                 ui->inspector().apply(ui::SetSetting{name, value});
-            runs.push_back(measure(
-                [&] {
-                    ui->frame();
-                    return Measured{&ui->inspector().frame(), ui->last_stats().gpu_ms};
-                },
-                o));
-        } else {
-            runs.push_back(measure(
-                [&] {
-                    last = renderer.render(scene.camera, settings, o.size.width, o.size.height,
-                                           ReadBack::No);
-                    return Measured{&last, std::nullopt};
-                },
-                o));
+            sources.push_back([&] {
+                ui->frame();
+                return Measured{&ui->inspector().frame(), ui->last_stats().gpu_ms};
+            });
         }
-        runs.back().assignments = combination;
-        print_run(runs.back(), runs.size() - 1);
+        for (RunResult& run : measure(sources, o)) {
+            run.assignments = combination;
+            runs.push_back(std::move(run));
+            print_run(runs.back(), runs.size() - 1);
+        }
+        if (ui) {
+            const RunResult& plain = runs[runs.size() - 2];
+            const RunResult& with_ui = runs.back();
+            // Frame times swing more than the UI costs on a CPU device: the UI's cost is what a
+            // frame spends beyond its scene graph's GPU time, against the same for plain frames.
+            const double cost = with_ui.beyond_scene.median - plain.beyond_scene.median;
+            std::printf(
+                "\ninspector: wall median %.1f -> %.1f ms; beyond the scene's GPU time "
+                "%.1f -> %.1f ms: the UI costs %.1f ms, %.1f %% of the frame\n",
+                plain.wall.median, with_ui.wall.median, plain.beyond_scene.median,
+                with_ui.beyond_scene.median, cost, 100.0 * cost / with_ui.wall.median);
+        }
     }
     if (!o.out.empty()) {
         capture::write_json_atomically(o.out, {{"scene", scene.name},

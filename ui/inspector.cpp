@@ -35,7 +35,7 @@ SceneSummary summarize(const scene::Scene& s) {
                 break;
             case scene::AlphaMode::Mask:
                 ++out.masked;
-                out.masked_names.push_back(m.name);
+                out.masked_materials.push_back({m.name, m.alpha_cutoff});
                 break;
             case scene::AlphaMode::Blend:
                 ++out.blend;

@@ -75,7 +75,11 @@ struct SceneSummary {
     size_t draw_groups = 0, instances = 0, meshes = 0;
     uint64_t triangles = 0;
     size_t opaque = 0, masked = 0, blend = 0;  // materials by alpha mode
-    std::vector<std::string> masked_names;
+    struct Masked {
+        std::string name;
+        float own_cutoff = 0.5f;  // the glTF material's alphaCutoff
+    };
+    std::vector<Masked> masked_materials;
 };
 
 class Inspector {

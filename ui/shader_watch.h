@@ -14,7 +14,8 @@ class ShaderWatch {
 
   private:
     struct Stamp {
-        std::filesystem::file_time_type newest{};
+        // min(), not {}: libstdc++'s file_clock epoch lies in the future (today is negative).
+        std::filesystem::file_time_type newest = std::filesystem::file_time_type::min();
         size_t files = 0;
         bool operator==(const Stamp&) const = default;
     };

@@ -40,3 +40,24 @@ TEST(Bench, BadMatrixIsAUsageErrorBeforeAnyFrame) {
         EXPECT_TRUE(r.out.empty()) << "nothing rendered for " << spec << ": " << r.out;
     }
 }
+
+TEST(Bench, UiDrawsTheInspectorEveryFrameBesideThePlainFrame) {
+    const auto json_path = ds::test::fresh_dir("bench_ui") / "bench.json";
+    auto r = run_depthscope(
+        "bench --validate --ui --scene edges --size 320x180 --frames 2 "
+        "--warmup 1 --matrix msaa=1,4 --json " +
+        json_path.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("run 4: msaa=4 + inspector"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("the UI costs"), std::string::npos) << r.out;
+    auto json = nlohmann::json::parse(ds::test::read_file(json_path));
+    ASSERT_EQ(json["runs"].size(), 4u);  // per combination: plain, then with the inspector
+    for (size_t i = 0; i < 4; ++i) {
+        const auto& run = json["runs"][i];
+        EXPECT_EQ(run["ui"].get<bool>(), i % 2 == 1);
+        bool ui_row = false;
+        for (const auto& p : run["passes"]) ui_row = ui_row || p["name"] == "ui";
+        EXPECT_EQ(ui_row, i % 2 == 1) << run.dump();
+    }
+    EXPECT_EQ(json["runs"][3]["settings"]["msaa"], "4");
+}

@@ -139,3 +139,29 @@ TEST(Cli, MaterialAlphaCutoffErrorsAndReport) {
     EXPECT_NE(line.find(" map "), std::string::npos) << line;
     EXPECT_NE(line.find("NAME=0..1,..."), std::string::npos) << line;
 }
+
+// capture --ui: the inspector drawn offscreen over the frame, every panel populated.
+TEST(Cli, CaptureUiDrawsTheInspectorWithTheTenPasses) {
+    const auto dir = ds::test::fresh_dir("capture_ui");
+    auto r = run_depthscope("capture --ui --validate --scene atrium --size 1280x720 --out " +
+                            (dir / "out").string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto png = ds::test::read_png(dir / "out" / "final.png");
+    EXPECT_EQ(png.width, 1280u);
+    EXPECT_EQ(png.height, 720u);
+    // The report is the frame the viewer showed: smaller than the UI, ten passes with timings.
+    auto json = nlohmann::json::parse(ds::test::read_file(dir / "out" / "report.json"));
+    EXPECT_LT(json["size"]["width"].get<unsigned>(), 1280u);
+    ASSERT_EQ(json["passes"].size(), 10u);
+    for (const auto& p : json["passes"]) EXPECT_GT(p["gpu_ms"].get<double>(), 0.0) << p.dump();
+    // A plain capture of the same size differs almost everywhere: panels are drawn over it.
+    auto plain =
+        run_depthscope("capture --scene atrium --size 1280x720 --out " + (dir / "plain").string());
+    ASSERT_EQ(plain.exit_code, 0) << plain.err;
+    const auto plain_png = ds::test::read_png(dir / "plain" / "final.png");
+    EXPECT_GT(ds::test::differing_pixels(png, plain_png, 8), size_t(1280 * 720 / 2));
+    // Any resource can be the one shown.
+    auto other = run_depthscope("capture --ui --scene edges --size 640x360 --view normals --out " +
+                                (dir / "normals").string());
+    EXPECT_EQ(other.exit_code, 0) << other.err;
+}

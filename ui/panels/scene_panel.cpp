@@ -1,6 +1,8 @@
 // Scene: the built-in scenes, a .gltf / .glb by path (a bad file shows its error and the
 // current scene stays), and what the scene holds.
 #include <cstdio>
+#include <map>
+#include <string>
 
 #include <imgui.h>
 
@@ -8,6 +10,48 @@
 #include "ui/panels/panels.h"
 
 namespace ds::ui {
+namespace {
+
+// One slider per MASK material: its alpha cutoff through material_alpha_cutoff (which wins
+// over alpha_cutoff); right-click a slider to go back to the material's own value.
+void masked_cutoffs(PanelIo& io, const SceneSummary& s) {
+    if (s.masked_materials.empty()) return;
+    const Settings& settings = io.inspector.settings();
+    const auto overrides = settings.get_map("material_alpha_cutoff");
+    const std::string& global = settings.get("alpha_cutoff");
+    ImGui::TextDisabled("alpha cutoff per masked material (right-click: the material's own)");
+    auto text_of = [](const std::map<std::string, float, std::less<>>& map) {
+        std::string out;
+        char value[32];
+        for (const auto& [name, v] : map) {
+            std::snprintf(value, sizeof value, "%.4g", v);
+            out += (out.empty() ? "" : ",") + name + "=" + value;
+        }
+        return out;
+    };
+    for (const SceneSummary::Masked& m : s.masked_materials) {
+        const auto it = overrides.find(m.name);
+        float v = it != overrides.end()  ? it->second
+                  : global == "material" ? m.own_cutoff
+                                         : settings.get_float("alpha_cutoff");
+        ImGui::SetNextItemWidth(-120);
+        if (ImGui::SliderFloat(m.name.c_str(), &v, 0.0f, 1.0f, "%.3f")) {
+            auto changed = overrides;
+            changed[m.name] = v;
+            io.actions.push_back(SetSetting{"material_alpha_cutoff", text_of(changed)});
+        }
+        if (ImGui::IsItemClicked(ImGuiMouseButton_Right) && it != overrides.end()) {
+            auto changed = overrides;
+            changed.erase(m.name);
+            io.actions.push_back(SetSetting{"material_alpha_cutoff", text_of(changed)});
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s: own %.3f%s", m.name.c_str(), m.own_cutoff,
+                              it != overrides.end() ? ", overridden" : "");
+    }
+}
+
+}  // namespace
 
 void scene_panel(PanelIo& io, const PanelLayout& layout) {
     ImGui::SetNextWindowPos(ImVec2(0, layout.height * 0.55f), ImGuiCond_FirstUseEver);
@@ -37,6 +81,7 @@ void scene_panel(PanelIo& io, const PanelLayout& layout) {
     ImGui::Text("%zu draw groups, %zu instances, %zu meshes", s.draw_groups, s.instances, s.meshes);
     ImGui::Text("%llu triangles", static_cast<unsigned long long>(s.triangles));
     ImGui::Text("materials: %zu opaque, %zu masked, %zu blend", s.opaque, s.masked, s.blend);
+    masked_cutoffs(io, s);
     ImGui::End();
 }
 

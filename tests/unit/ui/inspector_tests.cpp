@@ -4,19 +4,30 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <sstream>
 
 #include "renderer/scene/loader.h"
 #include "tests/unit/passes/shared_renderer.h"
 #include "ui/config.h"
 #include "ui/headless.h"
+#include "ui/shader_watch.h"
 
 namespace ds::test {
 namespace {
 
 using ui::HeadlessInput;
+
+std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
 using ui::HeadlessUi;
 
 class Inspector : public SharedRenderer {
@@ -219,6 +230,63 @@ TEST(InspectorConfig, SettingsRoundTripThroughTheConfigFile) {
         out << "no_such_knob=1\nmsaa=banana\n";
     }
     EXPECT_EQ(ui::load_state(file).ignored.size(), 2u);
+}
+
+}  // namespace
+}  // namespace ds::test
+
+namespace ds::test {
+namespace {
+
+// Shader reload from the Shaders panel, on a renderer of its own reading a copy of shaders/:
+// a compile error shows file:line and frames keep coming on the last good pipelines.
+TEST(InspectorShaders, ACompileErrorIsShownAndTheLastGoodPipelinesKeepRunning) {
+    namespace fs = std::filesystem;
+    const fs::path root = fs::path(::testing::TempDir()) / "ds_ui_shaders";
+    fs::remove_all(root);
+    fs::copy(DS_SHADER_DIR, root, fs::copy_options::recursive);
+    ASSERT_EQ(setenv("DEPTHSCOPE_SHADER_DIR", root.c_str(), 1), 0);
+    {
+        RendererOptions options;
+        options.validate = true;
+        Renderer renderer(options);
+        ui::HeadlessUi ui(renderer, Settings{}, scene::load_scene("edges", Settings{}), {640, 360});
+        ui.frame();
+        ui::Inspector& in = ui.inspector();
+        const std::string good = ds::test::read_text(root / "tonemap.frag");
+        { std::ofstream(root / "tonemap.frag", std::ios::app) << "\nthis is not glsl;\n"; }
+        in.queue(ui::ReloadShaders{});
+        const uint64_t before = in.frames_rendered();
+        ui.frame();
+        EXPECT_TRUE(in.shader_error());
+        EXPECT_NE(in.shader_status().find("tonemap.frag:"), std::string::npos)
+            << in.shader_status();
+        ui.frame();
+        EXPECT_EQ(in.frames_rendered(), before + 2);
+        EXPECT_FALSE(in.frame().passes.empty());
+        { std::ofstream(root / "tonemap.frag", std::ios::trunc) << good; }
+        in.queue(ui::ReloadShaders{});
+        ui.frame();
+        EXPECT_FALSE(in.shader_error()) << in.shader_status();
+        EXPECT_EQ(renderer.validation_message_count(), 0u);
+    }
+    unsetenv("DEPTHSCOPE_SHADER_DIR");
+}
+
+TEST(InspectorShaders, TheWatchSeesAnEditedFile) {
+    namespace fs = std::filesystem;
+    const fs::path root = fs::path(::testing::TempDir()) / "ds_ui_watch";
+    fs::remove_all(root);
+    fs::create_directories(root / "common");
+    std::ofstream(root / "common" / "a.glsl") << "// a\n";
+    ui::ShaderWatch watch(root, std::chrono::milliseconds(0));
+    EXPECT_FALSE(watch.changed());
+    const auto later = fs::last_write_time(root / "common" / "a.glsl") + std::chrono::seconds(2);
+    fs::last_write_time(root / "common" / "a.glsl", later);
+    EXPECT_TRUE(watch.changed());
+    EXPECT_FALSE(watch.changed());
+    std::ofstream(root / "b.frag") << "// new\n";
+    EXPECT_TRUE(watch.changed());
 }
 
 }  // namespace
