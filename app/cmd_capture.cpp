@@ -85,6 +85,13 @@ int run_capture(const Options& o) {
         capture::write_png_rgba8(out.staging_path("final.png"), o.size.width, o.size.height,
                                  pixels);
         frame = headless.inspector().frame();
+        if (!frame.inspected) {
+            std::string images;
+            for (const ResourceSummary& r : frame.resources)
+                if (r.is_image) images += (images.empty() ? "" : ", ") + r.name;
+            throw UsageError("--view " + o.view_resource + ": this frame has no such image (" +
+                             images + ")");
+        }
     } else {
         if (renderdoc) renderdoc->start(device_pointer, out.staging_path("frame"));
         frame = renderer.render(scene.camera, settings, o.size.width, o.size.height);

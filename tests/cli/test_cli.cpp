@@ -164,4 +164,13 @@ TEST(Cli, CaptureUiDrawsTheInspectorWithTheTenPasses) {
     auto other = run_depthscope("capture --ui --scene edges --size 640x360 --view normals --out " +
                                 (dir / "normals").string());
     EXPECT_EQ(other.exit_code, 0) << other.err;
+    // One that this frame does not have is a usage error, and nothing is written.
+    auto bad = run_depthscope(
+        "capture --ui --scene edges --size 320x180 --view forward_counts "
+        "--out " +
+        (dir / "bad").string());
+    EXPECT_EQ(bad.exit_code, 2) << bad.err;
+    EXPECT_EQ(ds::test::count_lines(bad.err), 1u) << bad.err;
+    EXPECT_NE(bad.err.find("depthscope: error: --view forward_counts"), std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
 }
