@@ -108,6 +108,16 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
         throw UsageError(std::string(e.what()) + " (see --help)");
     }
 
+    // The inspector's options are also the top level's (`depthscope --scene x`); before a
+    // command they would be lost or merged by surprise, so they must follow it.
+    if (app.get_subcommands().size() == 1) {
+        for (const char* name :
+             {"--validate", "--device", "--scene", "--set", "--frames", "--size"})
+            if (app.count(name))
+                throw UsageError(std::string(name) + " before the command '" +
+                                 app.get_subcommands().front()->get_name() +
+                                 "': put options after the command (see --help)");
+    }
     if (view->parsed()) o.command = Command::View;
     if (info->parsed()) o.command = Command::Info;
     if (app.got_subcommand("scenes")) o.command = Command::Scenes;

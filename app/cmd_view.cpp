@@ -85,8 +85,19 @@ int run_view(const Options& o) {
         std::fflush(stdout);
     }
     ImGuiContext* imgui = ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = ini_file.empty() ? nullptr : ini_file.c_str();
-    if (!ini_file.empty()) std::filesystem::create_directories(dir);
+    // An unusable config folder costs persistence, not the session.
+    bool persist = !dir.empty();
+    if (persist) {
+        std::error_code ec;
+        std::filesystem::create_directories(dir, ec);
+        if (ec || !std::filesystem::is_directory(dir)) {
+            std::fprintf(stderr,
+                         "depthscope: warning: %s: %s; layout and settings will not be saved\n",
+                         dir.c_str(), ec ? ec.message().c_str() : "not a folder");
+            persist = false;
+        }
+    }
+    ImGui::GetIO().IniFilename = persist ? ini_file.c_str() : nullptr;
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 0.0f;
     ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
@@ -106,6 +117,7 @@ int run_view(const Options& o) {
             bool changed = false;
             if (!window.acquire(target, changed)) {
                 if (changed) presenter.forget_targets();
+                window.wait_events();  // no swapchain to draw into yet
                 continue;
             }
             if (changed) presenter.forget_targets();
@@ -121,14 +133,14 @@ int run_view(const Options& o) {
             ++frames;
         }
         presenter.wait_idle();
-        if (!state_file.empty()) {
+        if (persist) {
             try {
                 ui::save_state(state_file, scene_spec(inspector.scene()), inspector.settings());
             } catch (const std::exception& e) {
                 std::fprintf(stderr, "depthscope: warning: %s\n", e.what());
             }
         }
-        if (!ini_file.empty()) ImGui::SaveIniSettingsToDisk(ini_file.c_str());
+        if (persist) ImGui::SaveIniSettingsToDisk(ini_file.c_str());
         const VkExtent2D last = window.framebuffer_size();
         std::printf("depthscope: %llu frames (window %ux%u)\n",
                     static_cast<unsigned long long>(frames), last.width, last.height);

@@ -321,13 +321,14 @@ void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::Fra
         if (auto ticks = slot.timestamps.results())
             result.gpu_ms = slot.timestamps.ticks_to_ms((*ticks)[0], (*ticks)[1]);
     }
-    if (read_back != ReadBack::No || options.count_fragments)
+    const bool full = read_back == ReadBack::Yes || read_back == ReadBack::WithMsaaDepth;
+    if (full || options.count_fragments)
         result.covered_pixels = targets->covered_pixels(options.far_depth());
     if (read_back != ReadBack::No) result.rgba8 = targets->rgba8();
     result.msaa.samples = uint32_t(options.samples);
     if (!options.msaa()) return;
     result.msaa.depth_resolve = passes::depth_resolve_name(context->report(), options.reverse_z);
-    if (read_back == ReadBack::No) return;
+    if (!full) return;
     result.msaa.edge_pixels = probe->edge_pixels();
     if (read_back == ReadBack::WithMsaaDepth) {
         result.msaa.depth_samples = probe->depth_samples();
@@ -423,7 +424,7 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     const passes::FrameResources res = r.build_graph(in, slot);
     // "final" is read back as it is (sRGB-encoded); any other image through the inspect pass.
     const bool inspect_final = inspect.resource == kFinalImageName;
-    if (inspect_final && read_back == ReadBack::No) read_back = ReadBack::Yes;
+    if (inspect_final && read_back == ReadBack::No) read_back = ReadBack::Color;
     const std::vector<ResourceSummary> resources = summarize(*r.graph);
     bool inspecting = false;
     if (!inspect.resource.empty() && !inspect_final) {
@@ -441,11 +442,11 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     const uint64_t graph_frame = r.graph->execute(cmd);
     if (slot.timestamps.count())
         slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 1);
-    const bool depth = read_back != ReadBack::No || options.count_fragments;
-    r.targets->record_read_back(cmd, read_back != ReadBack::No, depth);
+    const bool full = read_back == ReadBack::Yes || read_back == ReadBack::WithMsaaDepth;
+    r.targets->record_read_back(cmd, read_back != ReadBack::No, full || options.count_fragments);
     if (inspecting) r.inspector->record_read_back(cmd);
     // The exact edge count reads every sample: only frames that are read back pay for it.
-    if (options.msaa() && read_back != ReadBack::No)
+    if (options.msaa() && full)
         r.probe->record(cmd, r.targets->msaa_depth(), r.targets->msaa_hdr(),
                         read_back == ReadBack::WithMsaaDepth);
     r.frames->submit(frame);

@@ -126,7 +126,8 @@ struct InspectRequest {
 };
 
 // Benchmarks skip the copy to host memory; WithMsaaDepth is Yes plus MsaaResult's depth.
-enum class ReadBack { Yes, No, WithMsaaDepth };
+// Color reads back the final image only (no covered pixels, no MSAA probe: the inspector).
+enum class ReadBack { Yes, No, WithMsaaDepth, Color };
 
 class Renderer {
   public:

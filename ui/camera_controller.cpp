@@ -22,7 +22,10 @@ glm::vec3 rotate(glm::vec3 forward, float yaw, float pitch) {
 }
 
 glm::vec3 up_for(const glm::vec3& forward) {
-    const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
+    // Looking straight up or down (a top-down glTF camera): +Y cannot give a right axis.
+    const glm::vec3 reference =
+        std::abs(forward.y) > 0.999f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, reference));
     return glm::normalize(glm::cross(right, forward));
 }
 

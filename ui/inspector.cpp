@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 
 #include <imgui.h>
@@ -87,6 +88,27 @@ void Inspector::set_scene(scene::Scene scene) {
     scene_ = std::move(scene);
     summary_ = summarize(scene_);
     camera_.reset(scene_.camera, scene_.bounds);
+    // Per-material cutoffs name the previous scene's materials: keep those this one has.
+    auto cutoffs = settings_.get_map("material_alpha_cutoff");
+    std::erase_if(cutoffs, [&](const auto& entry) {
+        return std::none_of(summary_.masked_materials.begin(), summary_.masked_materials.end(),
+                            [&](const SceneSummary::Masked& m) { return m.name == entry.first; });
+    });
+    const std::string kept = cutoff_text(cutoffs);
+    if (kept != settings_.get("material_alpha_cutoff")) {
+        settings_.set("material_alpha_cutoff", kept);
+        last_good_.set("material_alpha_cutoff", kept);
+    }
+}
+
+std::string cutoff_text(const std::map<std::string, float, std::less<>>& cutoffs) {
+    std::string out;
+    char value[32];
+    for (const auto& [name, v] : cutoffs) {
+        std::snprintf(value, sizeof value, "%.4g", v);
+        out += (out.empty() ? "" : ",") + name + "=" + value;
+    }
+    return out;
 }
 
 VkExtent2D Inspector::render_size() const {
@@ -114,52 +136,71 @@ void Inspector::draw() {
 }
 
 void Inspector::apply(const Action& action) {
-    std::visit(
-        Overloaded{
-            [&](const SetSetting& a) {
-                try {
-                    const std::string before = settings_.get(a.name);
-                    settings_.set(a.name, a.value);
-                    const SettingDef& def = SettingsRegistry::instance().at(a.name);
-                    // Built-in scenes built from settings (overdraw_layers ...) are rebuilt.
-                    if (def.invalidates == Invalidates::Scene && before != settings_.get(a.name) &&
-                        scene_.source.rfind("builtin:", 0) == 0)
-                        set_scene(scene::load_scene(scene_.name, settings_));
-                    message_.clear();
-                } catch (const std::exception& e) {
-                    message_ = e.what();
-                }
-            },
-            [&](const SelectResource& a) {
-                viewer_.resource = a.name;
-                viewer_.sample = 0;
-                viewer_.hover.reset();
-            },
-            [&](const SelectPass& a) { selected_pass_ = a.name; },
-            [&](const LoadScene& a) {
-                try {
-                    scene::Scene loaded = scene::load_scene(a.name_or_path, settings_);
-                    set_scene(std::move(loaded));
-                    history_ = {};
-                    message_.clear();
-                } catch (const std::exception& e) {
-                    message_ = e.what();  // the current scene stays
-                }
-            },
-            [&](const ReloadShaders&) {
-                try {
-                    renderer_.rebuild_pipelines();
-                    shader_status_ = "shaders reloaded";
-                    shader_error_ = false;
-                } catch (const std::exception& e) {
-                    shader_status_ = e.what();  // file:line; the last good pipelines keep running
-                    shader_error_ = true;
-                }
-            },
-            [&](const SetAutoReload& a) { auto_reload_ = a.on; },
-            [&](const ResetSettings&) { settings_ = Settings(); },
-        },
-        action);
+    std::visit(Overloaded{
+                   [&](const SetSetting& a) {
+                       Settings changed = settings_;
+                       try {
+                           changed.set(a.name, a.value);
+                           change_settings(changed);
+                       } catch (const std::exception& e) {
+                           message_ = e.what();  // nothing changed
+                       }
+                   },
+                   [&](const SelectResource& a) {
+                       viewer_.resource = a.name;
+                       viewer_.sample = 0;
+                       viewer_.hover.reset();
+                   },
+                   [&](const SelectPass& a) { selected_pass_ = a.name; },
+                   [&](const LoadScene& a) {
+                       try {
+                           scene::Scene loaded = scene::load_scene(a.name_or_path, settings_);
+                           set_scene(std::move(loaded));
+                           history_ = {};
+                           message_.clear();
+                       } catch (const std::exception& e) {
+                           message_ = e.what();  // the current scene stays
+                       }
+                   },
+                   [&](const ReloadShaders&) {
+                       try {
+                           renderer_.rebuild_pipelines();
+                           shader_status_ = "shaders reloaded";
+                           shader_error_ = false;
+                       } catch (const std::exception& e) {
+                           shader_status_ =
+                               e.what();  // file:line; the last good pipelines keep running
+                           shader_error_ = true;
+                       }
+                   },
+                   [&](const SetAutoReload& a) { auto_reload_ = a.on; },
+                   [&](const ResetSettings&) {
+                       try {
+                           change_settings(Settings());
+                       } catch (const std::exception& e) {
+                           message_ = e.what();
+                       }
+                   },
+               },
+               action);
+}
+
+void Inspector::change_settings(const Settings& changed) {
+    // A built-in scene built from settings (overdraw_layers ...) is rebuilt first: if that
+    // throws, nothing has changed.
+    const bool builtin = scene_.source.rfind("builtin:", 0) == 0;
+    bool rebuild = false;
+    for (const std::string& name : changed.diff(settings_))
+        rebuild =
+            rebuild || SettingsRegistry::instance().at(name).invalidates == Invalidates::Scene;
+    if (builtin && rebuild) {
+        scene::Scene rebuilt = scene::load_scene(scene_.name, changed);
+        settings_ = changed;
+        set_scene(std::move(rebuilt));
+    } else {
+        settings_ = changed;
+    }
+    message_.clear();
 }
 
 void Inspector::update() {
@@ -186,8 +227,13 @@ void Inspector::render() {
         // A setting the device refuses (msaa=8 on lavapipe ...): say so, go back to what worked.
         message_ = e.what();
         settings_ = last_good_;
-        frame_ = renderer_.render(camera_.camera(), settings_, size.width, size.height,
-                                  ReadBack::No, request);
+        try {
+            frame_ = renderer_.render(camera_.camera(), settings_, size.width, size.height,
+                                      ReadBack::No, request);
+        } catch (const std::exception& again) {
+            message_ += std::string("; and the last good settings failed too: ") + again.what();
+            return;  // keep showing the previous frame
+        }
     }
     ++frames_rendered_;
     history_.add(frame_);

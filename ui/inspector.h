@@ -6,6 +6,7 @@
 //   inspector.update();  // apply the actions and the camera input, render one frame
 //   ImGui::Render();     // then ui::Presenter draws viewer_blit() and ImGui's draw data
 // Tests drive it the same way, or call apply() with the actions a panel would return.
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <filesystem>
@@ -122,8 +123,17 @@ class Inspector {
     // Hover readout of the shown resource at image texel (x, y).
     std::optional<Readout> readout_at(uint32_t x, uint32_t y) const;
 
+    // Panel state that outlives a frame (text fields).
+    struct PanelState {
+        std::array<char, 512> scene_path{};
+    };
+    PanelState& panel_state() const { return panel_state_; }
+
   private:
     void set_scene(scene::Scene scene);
+    // Applies `changed` (rebuilding a built-in scene whose knobs changed); throws, changing
+    // nothing, when the rebuild fails.
+    void change_settings(const Settings& changed);
     void render();
 
     Renderer& renderer_;
@@ -146,6 +156,10 @@ class Inspector {
     bool auto_reload_ = true;
     ShaderWatch watch_;
     uint64_t frames_rendered_ = 0;
+    mutable PanelState panel_state_;
 };
+
+// material_alpha_cutoff's text for a set of cutoffs ("a=0.3,b=0.7").
+std::string cutoff_text(const std::map<std::string, float, std::less<>>& cutoffs);
 
 }  // namespace ds::ui

@@ -53,11 +53,10 @@ vk::RenderPass create_render_pass(vk::Context& context, VkFormat format) {
     return vk::RenderPass(context.device(), pass);
 }
 
+}  // namespace
+
 // The part of [src] that lands inside [dst] once both are clipped to the image and the
 // viewport; false when nothing is visible.
-struct BlitRegion {
-    int32_t sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1;
-};
 bool clip_blit(const ViewerBlit& v, VkExtent2D target, BlitRegion& out) {
     if (!v.rgba8 || v.width == 0 || v.height == 0 || v.src_w <= 0 || v.src_h <= 0 || v.dst_w <= 0 ||
         v.dst_h <= 0)
@@ -86,7 +85,21 @@ bool clip_blit(const ViewerBlit& v, VkExtent2D target, BlitRegion& out) {
     return out.sx1 > out.sx0 && out.sy1 > out.sy0;
 }
 
-}  // namespace
+std::optional<std::array<uint32_t, 2>> texel_at(const ViewerBlit& viewer, VkExtent2D target,
+                                                float x, float y) {
+    BlitRegion r{};
+    if (!clip_blit(viewer, target, r)) return std::nullopt;
+    const int32_t px = int32_t(std::floor(x)), py = int32_t(std::floor(y));
+    if (px < r.dx0 || px >= r.dx1 || py < r.dy0 || py >= r.dy1) return std::nullopt;
+    // What a NEAREST blit samples for the centre of destination pixel (px, py).
+    const float u =
+        float(r.sx0) + (float(px - r.dx0) + 0.5f) * float(r.sx1 - r.sx0) / float(r.dx1 - r.dx0);
+    const float v =
+        float(r.sy0) + (float(py - r.dy0) + 0.5f) * float(r.sy1 - r.sy0) / float(r.dy1 - r.dy0);
+    const uint32_t tx = std::min(uint32_t(std::max(u, 0.0f)), viewer.width - 1);
+    const uint32_t ty = std::min(uint32_t(std::max(v, 0.0f)), viewer.height - 1);
+    return std::array<uint32_t, 2>{tx, ty};
+}
 
 Presenter::Presenter(vk::Context& context, VkFormat target_format)
     : context_(context), format_(target_format) {

@@ -101,6 +101,7 @@ void Window::attach(vk::Context& context) {
 
 void Window::create_swapchain() {
     const VkExtent2D size = framebuffer_size();
+    requested_ = size;
     if (size.width == 0 || size.height == 0) return;  // minimised
     VkSurfaceCapabilitiesKHR caps{};
     vk::check(
@@ -162,7 +163,8 @@ void Window::destroy_swapchain() {
 bool Window::acquire(Acquired& out, bool& swapchain_changed) {
     const VkExtent2D size = framebuffer_size();
     if (size.width == 0 || size.height == 0) return false;  // minimised
-    if (!swapchain_ || size.width != extent_.width || size.height != extent_.height) {
+    // Recreate for a new framebuffer size (not for a clamped extent that differs from it).
+    if (!swapchain_ || size.width != requested_.width || size.height != requested_.height) {
         context_->wait_idle();
         destroy_swapchain();
         create_swapchain();

@@ -60,7 +60,8 @@ class Window {
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
     VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
     VkFormat format_ = VK_FORMAT_UNDEFINED;
-    VkExtent2D extent_{0, 0};
+    VkExtent2D extent_{0, 0};     // the swapchain's
+    VkExtent2D requested_{0, 0};  // the framebuffer size it was made for
     std::vector<VkImage> images_;
     std::vector<vk::ImageView> views_;
     std::vector<vk::Semaphore> rendered_;  // one per swapchain image

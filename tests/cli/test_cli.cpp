@@ -174,3 +174,14 @@ TEST(Cli, CaptureUiDrawsTheInspectorWithTheTenPasses) {
     EXPECT_NE(bad.err.find("depthscope: error: --view forward_counts"), std::string::npos);
     EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
 }
+
+// The inspector's options live at the top level too; before another command they are refused.
+TEST(Cli, InspectorOptionsBeforeACommandAreRefused) {
+    for (const char* args : {"--size 64x48 capture", "--set exposure=2 capture --set prepass=on",
+                             "--frames 2 bench", "--scene edges capture"}) {
+        auto r = run_depthscope(args);
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+        EXPECT_EQ(ds::test::count_lines(r.err), 1u) << r.err;
+        EXPECT_NE(r.err.find("put options after the command"), std::string::npos) << r.err;
+    }
+}

@@ -2,6 +2,7 @@
 // The inspector's panels, one file each. A panel reads the inspector's state and returns what
 // the user asked for as actions (Inspector::apply carries them out); view-only state (the
 // viewer's zoom and decode range, the camera input) it writes directly. No Vulkan calls.
+#include <algorithm>
 #include <vector>
 
 #include "ui/inspector.h"
@@ -18,7 +19,9 @@ struct PanelIo {
 // Window placement on first use (later runs take imgui.ini's).
 struct PanelLayout {
     float width = 1600, height = 900;
-    static constexpr float kLeft = 340, kRight = 460;
+    // Side columns: 340 and 460 at 1600 wide, narrower in a small window.
+    float left() const { return std::min(340.0f, 0.22f * width); }
+    float right() const { return std::min(460.0f, 0.29f * width); }
 };
 
 void passes_panel(PanelIo& io, const PanelLayout& layout);

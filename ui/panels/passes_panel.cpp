@@ -15,10 +15,12 @@ namespace {
 void declarations(PanelIo& io, const PassResult& pass) {
     auto list = [&](const char* label, const std::vector<std::string>& names) {
         ImGui::TextDisabled("%s", label);
+        ImGui::PushID(label);  // a resource may be both read and written
         for (const std::string& name : names) {
             ImGui::SameLine();
             if (ImGui::SmallButton(name.c_str())) io.actions.push_back(SelectResource{name});
         }
+        ImGui::PopID();
         if (names.empty()) {
             ImGui::SameLine();
             ImGui::TextDisabled("-");
@@ -31,9 +33,8 @@ void declarations(PanelIo& io, const PassResult& pass) {
 }  // namespace
 
 void passes_panel(PanelIo& io, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(layout.width - PanelLayout::kRight, 0), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(PanelLayout::kRight, layout.height * 0.55f),
-                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(layout.width - layout.right(), 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(layout.right(), layout.height * 0.55f), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Passes")) {
         ImGui::End();
         return;

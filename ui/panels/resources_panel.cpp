@@ -8,10 +8,9 @@
 namespace ds::ui {
 
 void resources_panel(PanelIo& io, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(layout.width - PanelLayout::kRight, layout.height * 0.55f),
+    ImGui::SetNextWindowPos(ImVec2(layout.width - layout.right(), layout.height * 0.55f),
                             ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(PanelLayout::kRight, layout.height * 0.45f),
-                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(layout.right(), layout.height * 0.45f), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Resources")) {
         ImGui::End();
         return;

@@ -20,16 +20,14 @@ void masked_cutoffs(PanelIo& io, const SceneSummary& s) {
     const auto overrides = settings.get_map("material_alpha_cutoff");
     const std::string& global = settings.get("alpha_cutoff");
     ImGui::TextDisabled("alpha cutoff per masked material (right-click: the material's own)");
-    auto text_of = [](const std::map<std::string, float, std::less<>>& map) {
-        std::string out;
-        char value[32];
-        for (const auto& [name, v] : map) {
-            std::snprintf(value, sizeof value, "%.4g", v);
-            out += (out.empty() ? "" : ",") + name + "=" + value;
-        }
-        return out;
-    };
+    int id = 0;
     for (const SceneSummary::Masked& m : s.masked_materials) {
+        ImGui::PushID(id++);                          // material names need not be unique
+        if (m.name.find(',') != std::string::npos) {  // the list could not name it
+            ImGui::TextDisabled("%s: a ',' in the name: use alpha_cutoff", m.name.c_str());
+            ImGui::PopID();
+            continue;
+        }
         const auto it = overrides.find(m.name);
         float v = it != overrides.end()  ? it->second
                   : global == "material" ? m.own_cutoff
@@ -38,16 +36,17 @@ void masked_cutoffs(PanelIo& io, const SceneSummary& s) {
         if (ImGui::SliderFloat(m.name.c_str(), &v, 0.0f, 1.0f, "%.3f")) {
             auto changed = overrides;
             changed[m.name] = v;
-            io.actions.push_back(SetSetting{"material_alpha_cutoff", text_of(changed)});
+            io.actions.push_back(SetSetting{"material_alpha_cutoff", cutoff_text(changed)});
         }
         if (ImGui::IsItemClicked(ImGuiMouseButton_Right) && it != overrides.end()) {
             auto changed = overrides;
             changed.erase(m.name);
-            io.actions.push_back(SetSetting{"material_alpha_cutoff", text_of(changed)});
+            io.actions.push_back(SetSetting{"material_alpha_cutoff", cutoff_text(changed)});
         }
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("%s: own %.3f%s", m.name.c_str(), m.own_cutoff,
                               it != overrides.end() ? ", overridden" : "");
+        ImGui::PopID();
     }
 }
 
@@ -55,8 +54,7 @@ void masked_cutoffs(PanelIo& io, const SceneSummary& s) {
 
 void scene_panel(PanelIo& io, const PanelLayout& layout) {
     ImGui::SetNextWindowPos(ImVec2(0, layout.height * 0.55f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(PanelLayout::kLeft, layout.height * 0.27f),
-                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(layout.left(), layout.height * 0.27f), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Scene")) {
         ImGui::End();
         return;
@@ -70,9 +68,10 @@ void scene_panel(PanelIo& io, const PanelLayout& layout) {
         }
         ImGui::EndCombo();
     }
-    static char path[512] = "";
+    auto& buffer = io.inspector.panel_state().scene_path;  // outlives the frame
+    char* path = buffer.data();
     ImGui::SetNextItemWidth(-60);
-    const bool enter = ImGui::InputTextWithHint("##path", ".gltf / .glb path", path, sizeof path,
+    const bool enter = ImGui::InputTextWithHint("##path", ".gltf / .glb path", path, buffer.size(),
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     if ((ImGui::Button("Open") || enter) && path[0]) io.actions.push_back(LoadScene{path});

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <imgui.h>
+#include <glm/glm.hpp>
 
 #include "ui/panels/panels.h"
 
@@ -37,6 +38,17 @@ std::vector<int> accepted_ints(const SettingDef& def) {
         }
     }
     return out;
+}
+
+// The number a keyword knob starts from when its keyword is unticked: what the keyword means
+// now where the panel can tell (fov: the scene camera's), else the middle of the range.
+std::string number_for_keyword(PanelIo& io, const SettingDef& def) {
+    double v = 0.5 * (def.min + def.max);
+    if (def.name == "fov") v = double(glm::degrees(io.inspector.camera().yfov));
+    if (def.name == "alpha_cutoff") v = 0.5;  // glTF's default alphaCutoff
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", std::clamp(v, def.min, def.max));
+    return text;
 }
 
 void knob(PanelIo& io, const SettingDef& def) {
@@ -83,9 +95,7 @@ void knob(PanelIo& io, const SettingDef& def) {
                 bool use_keyword = keyword;
                 const std::string box = def.choices.front() + "##" + def.name;
                 if (ImGui::Checkbox(box.c_str(), &use_keyword))
-                    set(use_keyword                                ? def.choices.front()
-                        : def.default_value == def.choices.front() ? "0.5"
-                                                                   : def.default_value);
+                    set(use_keyword ? def.choices.front() : number_for_keyword(io, def));
                 tooltip(def);
                 ImGui::SameLine();
             }
@@ -116,8 +126,7 @@ void knob(PanelIo& io, const SettingDef& def) {
 
 void settings_panel(PanelIo& io, const PanelLayout& layout) {
     ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(PanelLayout::kLeft, layout.height * 0.55f),
-                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(layout.left(), layout.height * 0.55f), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Settings")) {
         ImGui::End();
         return;
@@ -132,9 +141,17 @@ void settings_panel(PanelIo& io, const PanelLayout& layout) {
     ImGui::TextDisabled("changed knobs are yellow");
     ImGui::PushItemWidth(-150);
     for (const std::string& group : groups) {
-        if (!ImGui::CollapsingHeader(group.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) continue;
-        for (const SettingDef& d : defs)
-            if (d.group == group) knob(io, d);
+        // IDs by group and knob: a group and a knob may share a name ("msaa").
+        ImGui::PushID(group.c_str());
+        if (ImGui::CollapsingHeader(group.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+            for (const SettingDef& d : defs) {
+                if (d.group != group) continue;
+                ImGui::PushID(d.name.c_str());
+                knob(io, d);
+                ImGui::PopID();
+            }
+        }
+        ImGui::PopID();
     }
     ImGui::PopItemWidth();
     ImGui::End();

@@ -19,8 +19,7 @@ void help_marker(const char* text) {
 
 void shaders_panel(PanelIo& io, const PanelLayout& layout) {
     ImGui::SetNextWindowPos(ImVec2(0, layout.height * 0.82f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(PanelLayout::kLeft, layout.height * 0.18f),
-                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(layout.left(), layout.height * 0.18f), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Shaders")) {
         ImGui::End();
         return;

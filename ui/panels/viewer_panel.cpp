@@ -116,9 +116,12 @@ void controls(PanelIo& io, const FrameResult& frame) {
 }
 
 void legend(const DecodedView& view) {
+    int id = 0;
     for (const LegendStop& stop : count_legend(view.black, view.white)) {
         const ImVec4 c(stop.rgb[0] / 255.0f, stop.rgb[1] / 255.0f, stop.rgb[2] / 255.0f, 1.0f);
+        ImGui::PushID(id++);
         ImGui::ColorButton("##legend", c, ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
+        ImGui::PopID();
         ImGui::SameLine();
         ImGui::Text("%g", stop.count);
         ImGui::SameLine();
@@ -138,16 +141,19 @@ void input(PanelIo& io, const ImVec2& origin, bool hovered, bool active) {
             // Zoom about the cursor: the texel under it stays under it.
             const float old_zoom = v.zoom;
             v.zoom = std::clamp(v.zoom * std::pow(1.25f, imgui.MouseWheel), 1.0f / 32, 64.0f);
-            const glm::vec2 cursor{imgui.MousePos.x - origin.x - 0.5f * v.w,
-                                   imgui.MousePos.y - origin.y - 0.5f * v.h};
+            // v.w, v.h and the zoom are in framebuffer pixels, ImGui's mouse in its units.
+            const ImVec2 fb = imgui.DisplayFramebufferScale;
+            const glm::vec2 cursor{(imgui.MousePos.x - origin.x) * fb.x - 0.5f * v.w,
+                                   (imgui.MousePos.y - origin.y) * fb.y - 0.5f * v.h};
             const glm::vec2 size{float(view.width), float(view.height)};
             v.centre += cursor * (1.0f / old_zoom - 1.0f / v.zoom) / size;
         }
         if (active && view.width &&
             (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0) ||
              ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0))) {
-            v.centre.x -= imgui.MouseDelta.x / (v.zoom * float(view.width));
-            v.centre.y -= imgui.MouseDelta.y / (v.zoom * float(view.height));
+            const ImVec2 fb = imgui.DisplayFramebufferScale;
+            v.centre.x -= imgui.MouseDelta.x * fb.x / (v.zoom * float(view.width));
+            v.centre.y -= imgui.MouseDelta.y * fb.y / (v.zoom * float(view.height));
         }
         return;
     }
@@ -174,7 +180,7 @@ void input(PanelIo& io, const ImVec2& origin, bool hovered, bool active) {
 }  // namespace
 
 void viewer_panel(PanelIo& io, const PanelLayout& layout) {
-    const float x = PanelLayout::kLeft, w = layout.width - PanelLayout::kLeft - PanelLayout::kRight;
+    const float x = layout.left(), w = layout.width - layout.left() - layout.right();
     ImGui::SetNextWindowPos(ImVec2(x, 0), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(std::max(w, 200.0f), layout.height), ImGuiCond_FirstUseEver);
     ViewerState& v = io.viewer;
@@ -213,11 +219,13 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
     // Hover readout: the texel under the cursor.
     v.hover.reset();
     if (hovered && view.width && frame.inspected) {
-        const ViewerBlit blit = io.inspector.viewer_blit();
-        const ImVec2 m = ImGui::GetIO().MousePos;
-        const float tx = blit.src_x + (m.x * scale.x - v.x) / v.zoom;
-        const float ty = blit.src_y + (m.y * scale.y - v.y) / v.zoom;
-        if (tx >= 0 && ty >= 0) v.hover = io.inspector.readout_at(uint32_t(tx), uint32_t(ty));
+        // Through the blit's own integer mapping: the readout names the texel drawn there.
+        const ImGuiIO& imgui = ImGui::GetIO();
+        const VkExtent2D target{uint32_t(imgui.DisplaySize.x * scale.x),
+                                uint32_t(imgui.DisplaySize.y * scale.y)};
+        const auto texel = texel_at(io.inspector.viewer_blit(), target, imgui.MousePos.x * scale.x,
+                                    imgui.MousePos.y * scale.y);
+        if (texel) v.hover = io.inspector.readout_at((*texel)[0], (*texel)[1]);
     }
     ImGui::Separator();
     if (v.hover)

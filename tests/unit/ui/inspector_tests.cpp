@@ -187,6 +187,57 @@ TEST_F(Inspector, HoverReadoutOfTheDepthViewGivesTheLinearDepth) {
     EXPECT_NE(readout->decoded_text.find("2.00"), std::string::npos) << readout->decoded_text;
 }
 
+TEST_F(Inspector, ZoomedInTheReadoutNamesTheTexelDrawnUnderTheCursor) {
+    auto ui = open("atrium");
+    ui::ViewerState& v = ui->inspector().viewer();
+    v.zoom = 4.0f;
+    v.centre = {0.37f, 0.61f};  // a fractional origin: the blit's rounding shows
+    ui->frame();
+    const ui::DecodedView& view = ui->inspector().view();
+    for (const glm::vec2 offset : {glm::vec2(0.13f, 0.21f), glm::vec2(0.5f, 0.5f),
+                                   glm::vec2(0.91f, 0.77f), glm::vec2(0.02f, 0.97f)}) {
+        HeadlessInput hover;
+        hover.mouse = glm::vec2(std::floor(v.x + offset.x * v.w) + 0.5f,
+                                std::floor(v.y + offset.y * v.h) + 0.5f);
+        const std::vector<uint8_t> pixels = ui->frame(hover);
+        const auto& readout = ui->inspector().viewer().hover;
+        ASSERT_TRUE(readout);
+        const size_t shown =
+            (size_t(hover.mouse->y) * ui->size().width + size_t(hover.mouse->x)) * 4;
+        const size_t texel = (size_t(readout->y) * view.width + readout->x) * 4;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_EQ(pixels[shown + c], view.rgba8[texel + c])
+                << "offset " << offset.x << "," << offset.y << " channel " << c;
+    }
+}
+
+TEST_F(Inspector, SwitchingScenesDropsCutoffsOfMaterialsTheNewSceneLacks) {
+    auto ui = open("foliage", settings_of({"material_alpha_cutoff=alpha_ramp=0.3"}));
+    ui::Inspector& in = ui->inspector();
+    EXPECT_EQ(in.settings().get("material_alpha_cutoff"), "alpha_ramp=0.3");
+    in.queue(ui::LoadScene{"atrium"});
+    ui->frame();
+    EXPECT_EQ(in.scene().name, "atrium");
+    EXPECT_EQ(in.settings().get("material_alpha_cutoff"), "");
+    EXPECT_TRUE(in.message().empty()) << in.message();
+    // Started on a scene without those materials (a saved setting): no error either.
+    auto other = open("edges", settings_of({"material_alpha_cutoff=alpha_ramp=0.3"}));
+    EXPECT_EQ(other->inspector().settings().get("material_alpha_cutoff"), "");
+    EXPECT_TRUE(other->inspector().message().empty()) << other->inspector().message();
+}
+
+TEST_F(Inspector, ResetRebuildsABuiltInSceneBuiltFromSettings) {
+    auto ui = open("overdraw");
+    ui::Inspector& in = ui->inspector();
+    in.queue(ui::SetSetting{"overdraw_layers", "3"});
+    ui->frame();
+    EXPECT_EQ(in.scene_summary().opaque, 3u);
+    in.queue(ui::ResetSettings{});
+    ui->frame();
+    EXPECT_EQ(in.settings().get("overdraw_layers"), "8");
+    EXPECT_EQ(in.scene_summary().opaque, 8u);
+}
+
 TEST_F(Inspector, LeftDragOrbitsAndCtrlWheelZoomsTheImage) {
     auto ui = open("atrium");
     const ui::ViewerState& v = ui->inspector().viewer();
