@@ -21,11 +21,7 @@ struct Push {
 }  // namespace
 
 MsaaProbe::MsaaProbe(vk::Context& context, shader::Compiler& compiler) : context_(context) {
-    auto info = vk::make<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
-    info.magFilter = info.minFilter = VK_FILTER_NEAREST;
-    info.addressModeU = info.addressModeV = info.addressModeW =
-        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    nearest_ = vk::Sampler(context, info, "msaa probe nearest");
+    nearest_ = vk::nearest_clamp_sampler(context, "msaa probe nearest");
     const VkDescriptorSetLayoutBinding bindings[] = {
         vk::layout_binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                            VK_SHADER_STAGE_COMPUTE_BIT),

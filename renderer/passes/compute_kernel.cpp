@@ -14,18 +14,6 @@ VkDescriptorType descriptor_type(KernelBinding binding) {
                                              : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 }
 
-// The shaders read with texelFetch (exact texels, their own bounds checks); a combined image
-// sampler still needs a sampler.
-vk::Sampler nearest_sampler(vk::Context& context) {
-    auto info = vk::make<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
-    info.magFilter = info.minFilter = VK_FILTER_NEAREST;
-    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    info.addressModeU = info.addressModeV = info.addressModeW =
-        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.maxLod = 0.0f;
-    return vk::Sampler(context, info, "screen-space nearest");
-}
-
 }  // namespace
 
 vk::Pipeline create_compute_pipeline(vk::Context& context, VkPipelineLayout layout,
@@ -64,7 +52,8 @@ ComputeKernel::ComputeKernel(const PassServices& services, std::string shader,
       push_constant_size_(push_constant_size) {
     if (services.frame_layout == VK_NULL_HANDLE)
         throw Error("compute pass " + shader_ + ": no frame set layout");
-    nearest_ = nearest_sampler(context_);
+    // The shaders read with texelFetch; a combined image sampler still needs a sampler.
+    nearest_ = vk::nearest_clamp_sampler(context_, "screen-space nearest");
 
     std::vector<VkDescriptorSetLayoutBinding> layout_bindings;
     uint32_t samplers = 0, storage = 0;

@@ -16,15 +16,6 @@ constexpr VkPipelineStageFlags2 kDepthTests =
 constexpr VkAccessFlags2 kDepthAccess =
     VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
 
-vk::Sampler nearest_sampler(vk::Context& context) {
-    auto info = vk::make<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
-    info.magFilter = info.minFilter = VK_FILTER_NEAREST;
-    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    info.addressModeU = info.addressModeV = info.addressModeW =
-        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    return vk::Sampler(context, info, "depth resolve nearest");
-}
-
 }  // namespace
 
 VkResolveModeFlagBits native_depth_resolve(const vk::DeviceReport& report, bool reverse_z) {
@@ -40,7 +31,7 @@ const char* depth_resolve_name(const vk::DeviceReport& report, bool reverse_z) {
 
 DepthResolve::DepthResolve(const PassServices& services)
     : services_(services),
-      nearest_(nearest_sampler(services.context)),
+      nearest_(vk::nearest_clamp_sampler(services.context, "depth resolve nearest")),
       sets_(services.context, 1, kPoolSizes, "depth resolve sets"),
       pipelines_([this](uint32_t key) { return compile(key); },
                  [this](uint32_t key, const ShaderStages& s) { return create(key, s); }) {

@@ -58,8 +58,7 @@ LightingSet::LightingSet(vk::Context& context, VkFormat shadow_format)
     shadow_sampler_ = vk::Sampler(context, shadow, "shadow compare sampler");
     linear_ = vk::Sampler(
         context, sampler_info(VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE), "linear");
-    nearest_ = vk::Sampler(
-        context, sampler_info(VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE), "nearest");
+    nearest_ = vk::nearest_clamp_sampler(context, "nearest");
     create_fallbacks(shadow_format);
 }
 

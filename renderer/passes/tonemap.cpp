@@ -23,10 +23,7 @@ TonemapPass::TonemapPass(const PassServices& services)
     hdr_layout_ = vk::DescriptorSetLayout(services.context, {&hdr, 1}, "tonemap set layout");
     const VkDescriptorSetLayout sets[] = {services.frame_layout, hdr_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "tonemap layout");
-    auto info = vk::make<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
-    info.addressModeU = info.addressModeV = info.addressModeW =
-        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    nearest_ = vk::Sampler(services.context, info, "tonemap nearest");
+    nearest_ = vk::nearest_clamp_sampler(services.context, "tonemap nearest");
     pipelines_.get(0);
 }
 

@@ -108,6 +108,16 @@ Sampler::Sampler(Context& context, const VkSamplerCreateInfo& info, const char* 
     context.set_name(VK_OBJECT_TYPE_SAMPLER, sampler_, name);
 }
 
+Sampler nearest_clamp_sampler(Context& context, const char* name) {
+    auto info = make<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    info.magFilter = info.minFilter = VK_FILTER_NEAREST;
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.addressModeU = info.addressModeV = info.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.maxLod = 0.0f;
+    return Sampler(context, info, name);
+}
+
 Sampler& Sampler::operator=(Sampler&& other) noexcept {
     if (this == &other) return *this;
     reset();

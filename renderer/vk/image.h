@@ -72,4 +72,7 @@ class Sampler {
     VkSampler sampler_ = VK_NULL_HANDLE;
 };
 
+// Nearest, clamp to edge, no mips: for shaders that read exact texels (texelFetch, resolves).
+Sampler nearest_clamp_sampler(Context& context, const char* name);
+
 }  // namespace ds::vk
