@@ -36,7 +36,7 @@ MsaaProbe::MsaaProbe(vk::Context& context, shader::Compiler& compiler) : context
     const VkDescriptorSetLayout sets[] = {set_layout_.handle()};
     const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(Push)};
     layout_ = vk::PipelineLayout(context, sets, {&push, 1}, "msaa probe layout");
-    pipeline_ = passes::create_compute_pipeline(
+    pipeline_ = vk::create_compute_pipeline(
         context, layout_.handle(),
         compiler.compile("msaa_probe.comp", shader::Stage::Compute).spirv, "msaa probe");
 }

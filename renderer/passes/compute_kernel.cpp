@@ -16,33 +16,6 @@ VkDescriptorType descriptor_type(KernelBinding binding) {
 
 }  // namespace
 
-vk::Pipeline create_compute_pipeline(vk::Context& context, VkPipelineLayout layout,
-                                     const std::vector<uint32_t>& spirv, const char* name) {
-    VkDevice device = context.device();
-    auto module_info =
-        vk::make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-    module_info.codeSize = spirv.size() * sizeof(uint32_t);
-    module_info.pCode = spirv.data();
-    VkShaderModule module = VK_NULL_HANDLE;
-    vk::check(vkCreateShaderModule(device, &module_info, nullptr, &module), "vkCreateShaderModule");
-
-    auto info =
-        vk::make<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    info.stage = vk::make<VkPipelineShaderStageCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    info.stage.module = module;
-    info.stage.pName = "main";
-    info.layout = layout;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    const VkResult result =
-        vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
-    vkDestroyShaderModule(device, module, nullptr);  // the pipeline keeps what it needs
-    vk::check(result, "vkCreateComputePipelines");
-    context.set_name(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
-    return vk::Pipeline(device, pipeline);
-}
-
 ComputeKernel::ComputeKernel(const PassServices& services, std::string shader,
                              std::vector<KernelBinding> bindings, uint32_t push_constant_size)
     : context_(services.context),
@@ -83,7 +56,7 @@ ComputeKernel::Prepared ComputeKernel::prepare(const std::vector<shader::Define>
     // SPIR-V 1.5 (the compiler's target) states the workgroup size as a literal LocalSize.
     const std::vector<uint32_t> spirv =
         compiler_.compile(shader_, shader::Stage::Compute, defines).spirv;
-    return {create_compute_pipeline(context_, layout_.handle(), spirv, shader_.c_str())};
+    return {vk::create_compute_pipeline(context_, layout_.handle(), spirv, shader_.c_str())};
 }
 
 void ComputeKernel::install(Prepared prepared, vk::DestroyList& retired) {

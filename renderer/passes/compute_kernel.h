@@ -89,10 +89,6 @@ graph::ImageHandle add_depth_normals_pass(graph::RenderGraph& graph, const char*
                                           ComputeKernel& kernel, const void* push_constants,
                                           const FrameInputs& in, const FrameResources& res);
 
-// A compute pipeline from SPIR-V (the module is destroyed once the pipeline exists).
-vk::Pipeline create_compute_pipeline(vk::Context& context, VkPipelineLayout layout,
-                                     const std::vector<uint32_t>& spirv, const char* name);
-
 // Group count covering `extent` with kGroupSize x kGroupSize groups.
 inline uint32_t group_count(uint32_t pixels) {
     return (pixels + ComputeKernel::kGroupSize - 1) / ComputeKernel::kGroupSize;

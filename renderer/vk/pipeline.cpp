@@ -234,4 +234,29 @@ Pipeline GraphicsPipelineBuilder::build(Context& context, const char* name) cons
     return Pipeline(device, pipeline);
 }
 
+Pipeline create_compute_pipeline(Context& context, VkPipelineLayout layout,
+                                 const std::vector<uint32_t>& spirv, const char* name) {
+    VkDevice device = context.device();
+    auto module_info = make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+    module_info.codeSize = spirv.size() * sizeof(uint32_t);
+    module_info.pCode = spirv.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    check(vkCreateShaderModule(device, &module_info, nullptr, &module), "vkCreateShaderModule");
+
+    auto info = make<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    info.stage =
+        make<VkPipelineShaderStageCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module;
+    info.stage.pName = "main";
+    info.layout = layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    const VkResult result =
+        vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+    vkDestroyShaderModule(device, module, nullptr);  // the pipeline keeps what it needs
+    check(result, "vkCreateComputePipelines");
+    context.set_name(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
+    return Pipeline(device, pipeline);
+}
+
 }  // namespace ds::vk

@@ -93,4 +93,8 @@ class GraphicsPipelineBuilder {
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
 };
 
+// A compute pipeline from SPIR-V (the module is destroyed once the pipeline exists).
+Pipeline create_compute_pipeline(Context& context, VkPipelineLayout layout,
+                                 const std::vector<uint32_t>& spirv, const char* name);
+
 }  // namespace ds::vk

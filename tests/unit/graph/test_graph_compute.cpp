@@ -7,6 +7,7 @@
 
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/buffer.h"
+#include "renderer/vk/pipeline.h"
 #include "tests/unit/graph/graph_fixture.h"
 #include "tests/unit/graph/swizzle.h"
 
@@ -36,27 +37,7 @@ struct Pattern {
         pool = vk::DescriptorPool(context, 1, {&size, 1}, "pattern pool");
         set = pool.allocate(set_layout.handle());
 
-        auto module_info =
-            vk::make<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
-        module_info.codeSize = spirv.size() * sizeof(uint32_t);
-        module_info.pCode = spirv.data();
-        VkShaderModule module = VK_NULL_HANDLE;
-        vk::check(vkCreateShaderModule(device, &module_info, nullptr, &module),
-                  "vkCreateShaderModule");
-        auto info =
-            vk::make<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-        info.stage = vk::make<VkPipelineShaderStageCreateInfo>(
-            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-        info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-        info.stage.module = module;
-        info.stage.pName = "main";
-        info.layout = layout.handle();
-        VkPipeline handle = VK_NULL_HANDLE;
-        const VkResult result =
-            vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &handle);
-        vkDestroyShaderModule(device, module, nullptr);
-        vk::check(result, "vkCreateComputePipelines");
-        pipeline = vk::Pipeline(device, handle);
+        pipeline = vk::create_compute_pipeline(context, layout.handle(), spirv, "pattern");
     }
 
     void record(const PassContext& ctx, ImageHandle target) const {

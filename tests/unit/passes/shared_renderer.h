@@ -3,6 +3,7 @@
 // Every test must leave the validation-message count at zero.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,6 +17,25 @@ inline Settings settings_of(const std::vector<std::string>& assignments) {
     Settings settings;
     for (const std::string& a : assignments) settings.apply(a);
     return settings;
+}
+
+// Pass names of a frame, in execution order.
+inline std::vector<std::string> names(const FrameResult& f) {
+    std::vector<std::string> out;
+    for (const PassResult& p : f.passes) out.push_back(p.name);
+    return out;
+}
+
+// Pixels where some colour channel differs by more than `tolerance`.
+inline size_t differing_pixels(const FrameResult& a, const FrameResult& b, int tolerance) {
+    size_t n = 0;
+    for (size_t i = 0; i + 3 < a.rgba8.size(); i += 4)
+        for (size_t c = 0; c < 3; ++c)
+            if (std::abs(int(a.rgba8[i + c]) - int(b.rgba8[i + c])) > tolerance) {
+                ++n;
+                break;
+            }
+    return n;
 }
 
 class SharedRenderer : public ::testing::Test {

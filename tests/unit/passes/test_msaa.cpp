@@ -18,6 +18,8 @@
 namespace {
 
 using namespace ds;
+using test::differing_pixels;
+using test::names;
 
 constexpr uint32_t kWidth = 240, kHeight = 135;
 
@@ -62,23 +64,6 @@ class Msaa : public test::SharedRenderer {
 scene::Scene* Msaa::edges_ = nullptr;
 scene::Scene* Msaa::atrium_ = nullptr;
 const scene::Scene* Msaa::current_ = nullptr;
-
-std::vector<std::string> names(const FrameResult& f) {
-    std::vector<std::string> out;
-    for (const PassResult& p : f.passes) out.push_back(p.name);
-    return out;
-}
-
-size_t differing_pixels(const FrameResult& a, const FrameResult& b, int tolerance) {
-    size_t n = 0;
-    for (size_t i = 0; i + 3 < a.rgba8.size(); i += 4)
-        for (size_t c = 0; c < 3; ++c)
-            if (std::abs(int(a.rgba8[i + c]) - int(b.rgba8[i + c])) > tolerance) {
-                ++n;
-                break;
-            }
-    return n;
-}
 
 // Pixels whose colour is not one of the `dominant` most frequent colours of the image: on a
 // scene of dark rods on a bright backdrop, mostly the blended colours along silhouettes.

@@ -25,6 +25,8 @@
 namespace {
 
 using namespace ds;
+using test::differing_pixels;
+using test::names;
 
 constexpr uint32_t kWidth = 320, kHeight = 180;
 
@@ -67,26 +69,6 @@ uint64_t shaded(const FrameResult& f, const std::string& pass) {
         return 0;
     }
     return *p->shaded_fragments;
-}
-
-std::vector<std::string> names(const FrameResult& f) {
-    std::vector<std::string> out;
-    for (const PassResult& p : f.passes) out.push_back(p.name);
-    return out;
-}
-
-// Pixels where some channel differs by more than `tolerance`.
-size_t differing_pixels(const FrameResult& a, const FrameResult& b, int tolerance) {
-    size_t n = 0;
-    for (size_t i = 0; i + 3 < a.rgba8.size(); i += 4) {
-        for (size_t c = 0; c < 3; ++c) {
-            if (std::abs(int(a.rgba8[i + c]) - int(b.rgba8[i + c])) > tolerance) {
-                ++n;
-                break;
-            }
-        }
-    }
-    return n;
 }
 
 // Where to write images to look at: $DS_TEST_IMAGES, else the temp directory.
