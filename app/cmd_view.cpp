@@ -98,8 +98,7 @@ int run_view(const Options& o) {
         }
     }
     ImGui::GetIO().IniFilename = persist ? ini_file.c_str() : nullptr;
-    ImGui::StyleColorsDark();
-    ImGui::GetStyle().WindowRounding = 0.0f;
+    ui::apply_style();
     ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
     int exit_code = 0;
     {
@@ -121,13 +120,10 @@ int run_view(const Options& o) {
                 continue;
             }
             if (changed) presenter.forget_targets();
-            ImGui_ImplGlfw_NewFrame();
-            ImGui::NewFrame();
-            inspector.draw();
-            inspector.update();
-            ImGui::Render();
+            ImGui_ImplGlfw_NewFrame();  // input, then the frame
+            ImDrawData* draw = inspector.run_frame();
             presenter.present({target.image, target.view, target.extent}, inspector.viewer_blit(),
-                              ImGui::GetDrawData(), target.acquired, target.rendered);
+                              draw, target.acquired, target.rendered);
             window.present(target, changed);
             if (changed) presenter.forget_targets();
             ++frames;

@@ -7,17 +7,6 @@
 #include "renderer/common/error.h"
 
 namespace ds::ui {
-namespace {
-
-// ImGui styling shared with the window.
-void style() {
-    ImGui::StyleColorsDark();
-    ImGuiStyle& s = ImGui::GetStyle();
-    s.WindowRounding = 0.0f;
-    s.FrameRounding = 2.0f;
-}
-
-}  // namespace
 
 HeadlessUi::HeadlessUi(Renderer& renderer, Settings settings, scene::Scene scene, VkExtent2D size,
                        std::optional<VkExtent2D> render_size)
@@ -28,7 +17,7 @@ HeadlessUi::HeadlessUi(Renderer& renderer, Settings settings, scene::Scene scene
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;  // offscreen frames do not read or write the user's layout
     io.DisplaySize = ImVec2(float(size.width), float(size.height));
-    style();
+    apply_style();
     try {
         presenter_ = std::make_unique<Presenter>(renderer.context(), Presenter::kOffscreenFormat);
         inspector_ = std::make_unique<Inspector>(renderer, std::move(settings), std::move(scene),
@@ -66,12 +55,8 @@ std::vector<uint8_t> HeadlessUi::frame(const HeadlessInput& input) {
     for (int k : input.keys)
         if (k >= 0 && k < int(IM_ARRAYSIZE(io.KeysDown))) io.KeysDown[k] = true;
 
-    ImGui::NewFrame();
-    inspector_->draw();
-    inspector_->update();
-    ImGui::Render();
-    return presenter_->render_offscreen(size_, inspector_->viewer_blit(), ImGui::GetDrawData(),
-                                        &stats_);
+    ImDrawData* draw = inspector_->run_frame();
+    return presenter_->render_offscreen(size_, inspector_->viewer_blit(), draw, &stats_);
 }
 
 }  // namespace ds::ui

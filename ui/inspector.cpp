@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <exception>
 
 #include <imgui.h>
@@ -44,11 +43,6 @@ SceneSummary summarize(const scene::Scene& s) {
         }
     }
     return out;
-}
-
-float render_scale(const Settings& settings) {
-    const auto it = settings.values().find("render_scale");
-    return it == settings.values().end() ? 1.0f : settings.get_float("render_scale");
 }
 
 }  // namespace
@@ -94,21 +88,11 @@ void Inspector::set_scene(scene::Scene scene) {
         return std::none_of(summary_.masked_materials.begin(), summary_.masked_materials.end(),
                             [&](const SceneSummary::Masked& m) { return m.name == entry.first; });
     });
-    const std::string kept = cutoff_text(cutoffs);
+    const std::string kept = format_map(cutoffs);
     if (kept != settings_.get("material_alpha_cutoff")) {
         settings_.set("material_alpha_cutoff", kept);
         last_good_.set("material_alpha_cutoff", kept);
     }
-}
-
-std::string cutoff_text(const std::map<std::string, float, std::less<>>& cutoffs) {
-    std::string out;
-    char value[32];
-    for (const auto& [name, v] : cutoffs) {
-        std::snprintf(value, sizeof value, "%.4g", v);
-        out += (out.empty() ? "" : ",") + name + "=" + value;
-    }
-    return out;
 }
 
 VkExtent2D Inspector::render_size() const {
@@ -118,9 +102,24 @@ VkExtent2D Inspector::render_size() const {
         w = float(options_.fallback_width);
         h = float(options_.fallback_height);
     }
-    const float scale = render_scale(settings_);
+    const float scale = settings_.get_float("render_scale");
     return {std::max(1u, uint32_t(std::lround(w * scale))),
             std::max(1u, uint32_t(std::lround(h * scale)))};
+}
+
+void apply_style() {
+    ImGui::StyleColorsDark();
+    ImGuiStyle& s = ImGui::GetStyle();
+    s.WindowRounding = 0.0f;
+    s.FrameRounding = 2.0f;
+}
+
+ImDrawData* Inspector::run_frame() {
+    ImGui::NewFrame();
+    draw();
+    update();
+    ImGui::Render();
+    return ImGui::GetDrawData();
 }
 
 void Inspector::draw() {

@@ -1,10 +1,12 @@
 #pragma once
 // The inspector's model and one UI frame's logic, without Vulkan: the settings, the scene, the
-// camera, what the user selected, the last FrameResult and its decoded view. Each frame:
+// camera, what the user selected, the last FrameResult and its decoded view. Each frame, once
+// the platform has fed ImGui its input, run_frame() runs
 //   ImGui::NewFrame();
-//   inspector.draw();    // the panels (ui/panels): read this state, return actions
-//   inspector.update();  // apply the actions and the camera input, render one frame
-//   ImGui::Render();     // then ui::Presenter draws viewer_blit() and ImGui's draw data
+//   draw();          // the panels (ui/panels): read this state, return actions
+//   update();        // apply the actions and the camera input, render one frame
+//   ImGui::Render();
+// and ui::Presenter draws viewer_blit() and the returned draw data.
 // Tests drive it the same way, or call apply() with the actions a panel would return.
 #include <array>
 #include <cstdint>
@@ -24,7 +26,12 @@
 #include "ui/presenter.h"
 #include "ui/shader_watch.h"
 
+struct ImDrawData;
+
 namespace ds::ui {
+
+// depthscope's ImGui look (window and offscreen alike).
+void apply_style();
 
 // What panels ask for; Inspector::apply() carries it out.
 struct SetSetting {
@@ -92,8 +99,9 @@ class Inspector {
     };
     Inspector(Renderer& renderer, Settings settings, scene::Scene scene, Options options);
 
-    void draw();    // inside an ImGui frame
-    void update();  // after draw(): actions, camera, one rendered frame, decode
+    ImDrawData* run_frame();  // one UI frame, as above
+    void draw();              // inside an ImGui frame
+    void update();            // after draw(): actions, camera, one rendered frame, decode
     void apply(const Action& action);
     void queue(Action action) { pending_.push_back(std::move(action)); }
 
@@ -158,8 +166,5 @@ class Inspector {
     uint64_t frames_rendered_ = 0;
     mutable PanelState panel_state_;
 };
-
-// material_alpha_cutoff's text for a set of cutoffs ("a=0.3,b=0.7").
-std::string cutoff_text(const std::map<std::string, float, std::less<>>& cutoffs);
 
 }  // namespace ds::ui

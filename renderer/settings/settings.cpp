@@ -410,4 +410,10 @@ std::vector<std::string> Settings::diff(const Settings& other) const {
     return names;
 }
 
+std::string format_map(const std::map<std::string, float, std::less<>>& pairs) {
+    std::vector<std::string> entries;
+    for (const auto& [name, value] : pairs) entries.push_back(name + "=" + format_number(value));
+    return join(entries, ",");
+}
+
 }  // namespace ds

@@ -58,7 +58,7 @@ class Settings {
     int get_int(std::string_view name) const;
     float get_float(std::string_view name) const;         // throws UsageError on a keyword value
     const std::string& get(std::string_view name) const;  // canonical text
-    // A Map knob's pairs by name (empty when none).
+    // A Map knob's pairs by name (empty when none); format_map() writes them back.
     std::map<std::string, float, std::less<>> get_map(std::string_view name) const;
 
     const std::map<std::string, std::string, std::less<>>& values() const { return values_; }
@@ -68,5 +68,8 @@ class Settings {
   private:
     std::map<std::string, std::string, std::less<>> values_;
 };
+
+// A Map knob's value for `pairs`: "a=0.3,b=0.7" (sorted by name, numbers as Float writes them).
+std::string format_map(const std::map<std::string, float, std::less<>>& pairs);
 
 }  // namespace ds

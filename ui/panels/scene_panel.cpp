@@ -36,12 +36,12 @@ void masked_cutoffs(PanelIo& io, const SceneSummary& s) {
         if (ImGui::SliderFloat(m.name.c_str(), &v, 0.0f, 1.0f, "%.3f")) {
             auto changed = overrides;
             changed[m.name] = v;
-            io.actions.push_back(SetSetting{"material_alpha_cutoff", cutoff_text(changed)});
+            io.actions.push_back(SetSetting{"material_alpha_cutoff", format_map(changed)});
         }
         if (ImGui::IsItemClicked(ImGuiMouseButton_Right) && it != overrides.end()) {
             auto changed = overrides;
             changed.erase(m.name);
-            io.actions.push_back(SetSetting{"material_alpha_cutoff", cutoff_text(changed)});
+            io.actions.push_back(SetSetting{"material_alpha_cutoff", format_map(changed)});
         }
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("%s: own %.3f%s", m.name.c_str(), m.own_cutoff,

@@ -17,11 +17,6 @@ constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoBackground | ImGuiWindowF
                                     ImGuiWindowFlags_NoScrollWithMouse |
                                     ImGuiWindowFlags_NoCollapse;
 
-bool is_depth(graph::Semantic s) {
-    return s == graph::Semantic::ReverseZDepth || s == graph::Semantic::ForwardZDepth ||
-           s == graph::Semantic::ShadowDepth;
-}
-
 void controls(PanelIo& io, const FrameResult& frame) {
     ViewerState& v = io.viewer;
     const InspectedImage* image = frame.inspected ? &*frame.inspected : nullptr;
@@ -47,8 +42,7 @@ void controls(PanelIo& io, const FrameResult& frame) {
         if (ImGui::SliderInt("sample", &sample, 0, int(image->samples) - 1))
             v.sample = uint32_t(sample);
     }
-    if (image && graph::Semantic(image->semantic) != graph::Semantic::ShadowDepth &&
-        is_depth(image->semantic)) {
+    if (image && is_perspective_depth(image->semantic)) {  // linear or raw
         ImGui::SameLine();
         int mode = int(v.params.depth);
         ImGui::RadioButton("linear", &mode, int(DepthView::Linear));

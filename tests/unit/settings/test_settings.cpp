@@ -172,3 +172,12 @@ TEST(Settings, MapRejectsBadEntriesInOneLine) {
     }
     EXPECT_EQ(s.get("material_alpha_cutoff"), "leaves=0.25");  // a rejected value leaves the old
 }
+
+TEST(Settings, FormatMapWritesWhatGetMapRead) {
+    Settings s;
+    s.set("material_alpha_cutoff", "b=0.70, a=0.3");
+    const auto pairs = s.get_map("material_alpha_cutoff");
+    EXPECT_EQ(ds::format_map(pairs), "a=0.3,b=0.7");
+    EXPECT_EQ(ds::format_map(pairs), s.get("material_alpha_cutoff"));
+    EXPECT_EQ(ds::format_map({}), "");
+}
