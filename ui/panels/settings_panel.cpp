@@ -40,12 +40,11 @@ std::vector<int> accepted_ints(const SettingDef& def) {
     return out;
 }
 
-// The number a keyword knob starts from when its keyword is unticked: what the keyword means
-// now where the panel can tell (fov: the scene camera's), else the middle of the range.
+// The number a keyword knob starts from when its keyword is unticked: the middle of the range
+// (alpha_cutoff: 0.5, glTF's default), except fov, whose keyword means the camera's own.
 std::string number_for_keyword(PanelIo& io, const SettingDef& def) {
     double v = 0.5 * (def.min + def.max);
     if (def.name == "fov") v = double(glm::degrees(io.inspector.camera().yfov));
-    if (def.name == "alpha_cutoff") v = 0.5;  // glTF's default alphaCutoff
     char text[32];
     std::snprintf(text, sizeof text, "%.4g", std::clamp(v, def.min, def.max));
     return text;
