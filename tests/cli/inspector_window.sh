@@ -1,7 +1,7 @@
 #!/bin/bash
 # The inspector in a real window under Xvfb (run by ctest through xvfb-run): N frames with
 # validation on, a resize half-way (xdotool), exit 0; the layout and the settings persist, and
-# a second run without --scene / --set starts from them.
+# a second run without --scene / --set starts from them; an unusable config folder only warns.
 set -euo pipefail
 exe="$1"
 work="$2"
@@ -35,4 +35,10 @@ grep -qx 'exposure=2' "$work/config/settings.ini" || { echo "FAIL: exposure not 
 cat "$work/run2.txt"
 grep -q "inspector: edges" "$work/run2.txt" || { echo "FAIL: saved scene not used"; exit 1; }
 grep -q "exposure=2" "$work/run2.txt" || { echo "FAIL: saved settings not used"; exit 1; }
+# An unusable config folder costs persistence, not the session: one warning, exit 0.
+DEPTHSCOPE_CONFIG_DIR=/proc/depthscope-nope "$exe" --frames 2 --scene edges >"$work/run3.txt" 2>&1 ||
+    { cat "$work/run3.txt"; echo "FAIL: an unusable config folder ended the inspector"; exit 1; }
+cat "$work/run3.txt"
+grep -q "depthscope: warning: /proc/depthscope-nope" "$work/run3.txt" ||
+    { echo "FAIL: no warning about the config folder"; exit 1; }
 echo "PASS"
