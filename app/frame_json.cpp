@@ -7,6 +7,7 @@ nlohmann::json passes_json(const FrameResult& frame) {
     for (const PassResult& p : frame.passes) {
         nlohmann::json pass = {
             {"name", p.name},
+            {"kind", graph::pass_role_name(p.role)},
             {"gpu_ms", p.gpu_ms},
             {"stats",
              {{"vertex_shader_invocations", p.vertex_shader_invocations},

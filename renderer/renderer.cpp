@@ -5,25 +5,16 @@
 #include <chrono>
 
 #include "renderer/common/error.h"
-#include "renderer/frame_targets.h"
-#include "renderer/frame_uniforms.h"
-#include "renderer/gpu_scene.h"
+#include "renderer/frame/frame_passes.h"
+#include "renderer/frame/frame_targets.h"
+#include "renderer/frame/frame_uniforms.h"
+#include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/graph/access.h"
 #include "renderer/graph/graph.h"
-#include "renderer/msaa_probe.h"
-#include "renderer/passes/ao_spatial.h"
-#include "renderer/passes/ao_temporal.h"
-#include "renderer/passes/contact_shadows.h"
-#include "renderer/passes/depth_prepass.h"
-#include "renderer/passes/depth_resolve.h"
-#include "renderer/passes/forward.h"
 #include "renderer/passes/frame.h"
-#include "renderer/passes/gtao.h"
-#include "renderer/passes/shadow.h"
-#include "renderer/passes/skybox.h"
-#include "renderer/passes/tonemap.h"
-#include "renderer/passes/transparent.h"
-#include "renderer/resource_inspector.h"
+#include "renderer/passes/frame_pass.h"
+#include "renderer/passes/pass_util.h"
+#include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/context.h"
@@ -37,71 +28,18 @@ namespace {
 
 enum FrameBinding : uint32_t { kFrameUniforms = 0, kInstances = 1 };
 
-// The passes of the seed frame, in execution order (seed 000's, with transparent added).
-struct Passes {
-    passes::ShadowPass shadow;
-    passes::DepthPrepass prepass;
-    passes::GtaoPass gtao;
-    passes::AoSpatialPass ao_spatial;
-    passes::AoTemporalPass ao_temporal;
-    passes::ContactShadowsPass contact_shadows;
-    passes::ForwardPass forward;
-    passes::SkyboxPass skybox;
-    passes::TransparentPass transparent;
-    passes::TonemapPass tonemap;
-
-    explicit Passes(const passes::PassServices& s)
-        : shadow(s),
-          prepass(s),
-          gtao(s),
-          ao_spatial(s),
-          ao_temporal(s),
-          contact_shadows(s),
-          forward(s),
-          skybox(s),
-          transparent(s),
-          tonemap(s) {}
-
-    // Fail-safe per pass: a shader error stops here and leaves the later passes as they were.
-    void rebuild(vk::DestroyList& retired) {
-        shadow.rebuild_pipelines(retired);
-        prepass.rebuild_pipelines(retired);
-        gtao.rebuild_pipelines(retired);
-        ao_spatial.rebuild_pipelines(retired);
-        ao_temporal.rebuild_pipelines(retired);
-        contact_shadows.rebuild_pipelines(retired);
-        forward.rebuild_pipelines(retired);
-        skybox.rebuild_pipelines(retired);
-        transparent.rebuild_pipelines(retired);
-        tonemap.rebuild_pipelines(retired);
-    }
-};
-
-// Why a pass is not in this frame's graph (the report lists it).
-std::vector<std::string> skipped_passes(const passes::FrameOptions& o, const Settings& s) {
-    std::vector<std::string> out;
-    auto skip = [&](const char* pass, const std::string& why) {
-        out.push_back(std::string(pass) + ": skipped (" + why + ")");
-    };
-    if (!o.shadows) skip("shadow", "shadows=off");
-    if (!o.prepass) skip("depth_prepass", "prepass=off");
-    // Switched off, or without the prepass depth and normals they read.
-    auto why = [&](const char* knob) {
-        return s.get_bool(knob) ? std::string("prepass off") : std::string(knob) + "=off";
-    };
-    if (!o.gtao)
-        for (const char* p : {"gtao", "ao_spatial", "ao_temporal"}) skip(p, why("gtao"));
-    if (!o.contact_shadows) skip("contact_shadows", why("contact_shadows"));
-    if (!o.sky) skip("skybox", "sky=off");
-    return out;
-}
-
-// msaa must be a count the device renders colour and depth with; the registry cannot know.
-void check_samples(const vk::DeviceReport& report, VkSampleCountFlagBits samples) {
+// What the settings ask of the device that the registry cannot know.
+void check_device(const vk::DeviceReport& report, const passes::FrameOptions& options) {
     const VkSampleCountFlags supported = report.color_sample_counts & report.depth_sample_counts;
-    if (supported & samples) return;
-    throw Error("msaa=" + std::to_string(int(samples)) + ": " + report.candidate.name +
-                " supports sample counts " + vk::sample_counts_text(supported));
+    if (!(supported & options.samples))
+        throw Error("msaa=" + std::to_string(int(options.samples)) + ": " + report.candidate.name +
+                    " supports sample counts " + vk::sample_counts_text(supported));
+    if (options.count_fragments && !report.fragment_stores_and_atomics)
+        throw Error("count_fragments=on needs fragmentStoresAndAtomics, which " +
+                    report.candidate.name + " does not offer");
+    if (options.sample_shading && !report.sample_rate_shading)
+        throw Error("sample_shading=on needs sampleRateShading, which " + report.candidate.name +
+                    " does not offer");
 }
 
 constexpr const char* kFinalImageName = "final";
@@ -124,19 +62,22 @@ std::vector<ResourceSummary> summarize(const graph::RenderGraph& graph) {
     return out;
 }
 
-// Fills each pass's reads and writes (by resource name) from the graph's declarations.
-void add_declarations(const graph::RenderGraph& graph, std::vector<PassResult>& passes) {
-    const auto resources = graph.resources();
-    for (const graph::PassInfo& info : graph.passes()) {
-        auto it = std::find_if(passes.begin(), passes.end(),
-                               [&](const PassResult& p) { return p.name == info.name; });
-        if (it == passes.end()) continue;
-        for (const graph::AccessInfo& a : info.accesses) {
-            std::vector<std::string>& list = graph::is_write(a.access) ? it->writes : it->reads;
-            const std::string& name = resources[a.resource].name;
-            if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
-        }
+// One graph pass's measurements, role and declarations (resource names, declaration order).
+PassResult pass_result(const graph::PassResult& g, const graph::PassInfo& info,
+                       std::span<const graph::ResourceInfo> resources) {
+    PassResult p;
+    p.name = g.name;
+    p.role = info.role;
+    p.gpu_ms = g.gpu_ms;
+    p.vertex_shader_invocations = g.vertex_invocations;
+    p.fragment_shader_invocations = g.fragment_invocations;
+    p.clipping_primitives = g.clipping_primitives;
+    for (const graph::AccessInfo& a : info.accesses) {
+        std::vector<std::string>& list = graph::is_write(a.access) ? p.writes : p.reads;
+        const std::string& name = resources[a.resource].name;
+        if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
     }
+    return p;
 }
 
 // The final image as the inspector sees any other: four floats per texel (sRGB-encoded).
@@ -161,14 +102,23 @@ struct Renderer::Impl {
         VkDescriptorSet set = VK_NULL_HANDLE;
         vk::TimestampPool timestamps;  // around the whole graph
     };
+    // A frame pass and the graph passes it added this frame, [first, last).
+    struct Added {
+        passes::FramePass* pass = nullptr;
+        size_t first = 0, last = 0;
+    };
 
     explicit Impl(const RendererOptions& options);
     ~Impl();
+    passes::FrameOptions options_for(const Settings& settings);
+    void begin(VkExtent2D size, const passes::FrameOptions& options, vk::Frame& frame);
+    uint64_t record(Slot& slot, VkCommandBuffer cmd);
     passes::FrameResources build_graph(const passes::FrameInputs& in, Slot& slot);
-    void write_uniforms(Slot& slot, const scene::Camera& camera, const Settings& settings,
-                        const passes::FrameInputs& in, const passes::FrameResources& res);
-    void collect(Slot& slot, uint64_t graph_frame, const passes::FrameOptions& options,
-                 ReadBack read_back, FrameResult& result);
+    std::vector<std::string> skipped(const passes::FrameInputs& in) const;
+    void write_uniforms(Slot& slot, const scene::Camera& camera, const passes::FrameInputs& in,
+                        const passes::FrameResources& res);
+    void collect(Slot& slot, uint64_t graph_frame, const passes::FrameInputs& in,
+                 const passes::FrameResources& res, FrameResult& result);
 
     // Declared in creation order; ~Impl tears down explicitly in reverse.
     std::unique_ptr<vk::Context> context;
@@ -179,17 +129,19 @@ struct Renderer::Impl {
     std::array<Slot, vk::FrameRing::kFramesInFlight> slots;
     std::unique_ptr<vk::FrameRing> frames;
     std::unique_ptr<graph::RenderGraph> graph;
-    std::unique_ptr<Passes> passes;
+    std::unique_ptr<HostReadback> readback;
+    std::vector<std::unique_ptr<passes::FramePass>> passes;  // the frame, in order
+    std::vector<Added> added;                                // this frame's
+    std::vector<ResourceSummary> resources;                  // this frame's, before read-back
     std::unique_ptr<FrameTargets> targets;
     std::unique_ptr<GpuScene> scene;
-    std::unique_ptr<MsaaProbe> probe;              // created by the first msaa > 1 frame
-    std::unique_ptr<ResourceInspector> inspector;  // pipelines built by the first request
     scene::DirectionalLight sun;
     scene::Bounds scene_bounds;
     // Temporal state: last frame's view-projection, unless the next frame is a cut.
     glm::mat4 previous_view_projection{1.0f};
     bool cut = true;
     VkExtent2D last_size{0, 0};  // a new size is a cut: last frame's pixels do not map
+    VkSampleCountFlagBits last_samples = VK_SAMPLE_COUNT_1_BIT;
 };
 
 Renderer::Impl::Impl(const RendererOptions& options) {
@@ -223,24 +175,24 @@ Renderer::Impl::Impl(const RendererOptions& options) {
     }
     frames = std::make_unique<vk::FrameRing>(*context);
     graph = std::make_unique<graph::RenderGraph>(*context);
+    readback = std::make_unique<HostReadback>(*context);
     const VkFormat depth_format = context->report().depth_format;
-    const passes::PassServices services{*context, *compiler, frame_layout.handle(),
-                                        material_layout.handle(), depth_format};
-    passes = std::make_unique<Passes>(services);
-    inspector = std::make_unique<ResourceInspector>(services);
-    targets = std::make_unique<FrameTargets>(*context, passes::TonemapPass::kFinalFormat,
-                                             depth_format, passes::ForwardPass::kHdrFormat);
+    const passes::PassServices services{*context,    *compiler,    frame_layout.handle(),
+                                        material_layout.handle(), depth_format, *readback};
+    passes = make_frame_passes(services);
+    targets = std::make_unique<FrameTargets>(*context, passes::kFinalFormat, depth_format,
+                                             passes::kHdrFormat);
 }
 
 Renderer::Impl::~Impl() {
     if (!context) return;
     vkDeviceWaitIdle(context->device());  // teardown: an error here has nowhere to go
     if (targets) targets->reset();
-    inspector.reset();
-    probe.reset();
     scene.reset();
     frames.reset();  // flushes every destroy list
-    passes.reset();
+    passes.clear();
+    if (readback) readback->reset();
+    readback.reset();
     graph.reset();
     targets.reset();
     for (Slot& slot : slots) slot = Slot{};
@@ -260,25 +212,31 @@ passes::FrameResources Renderer::Impl::build_graph(const passes::FrameInputs& in
                         VK_ACCESS_2_HOST_WRITE_BIT};  // written before the submit
     res.frame_uniforms = graph->import_buffer("frame_uniforms", uniforms);
     targets->import(*graph, in.options, res);
-
-    Passes& p = *passes;
-    if (in.options.shadows) p.shadow.add(*graph, in, res);
-    if (in.options.prepass) p.prepass.add(*graph, in, res);
-    // The screen-space passes decide themselves from the options and what exists: gtao and
-    // contact shadows need the prepass (FrameOptions folds that in); the AO filters need gtao.
-    p.gtao.add(*graph, in, res);
-    p.ao_spatial.add(*graph, in, res);
-    p.ao_temporal.add(*graph, in, res);
-    p.contact_shadows.add(*graph, in, res);
-    p.forward.add(*graph, in, res);
-    if (in.options.sky) p.skybox.add(*graph, in, res);
-    p.transparent.add(*graph, in, res);
-    p.tonemap.add(*graph, in, res);
+    added.clear();
+    resources.clear();
+    for (const std::unique_ptr<passes::FramePass>& pass : passes) {
+        // The frame's resources, as the inspector lists them: read-back's own are plumbing.
+        if (pass->role() == graph::PassRole::ReadBack && resources.empty())
+            resources = summarize(*graph);
+        graph->set_role(pass->role());
+        const size_t first = graph->passes().size();
+        pass->add(*graph, in, res);
+        added.push_back({pass.get(), first, graph->passes().size()});
+    }
     return res;
 }
 
+// Why passes are not in this frame's graph ("gtao: skipped (prepass off)"), in pass order.
+std::vector<std::string> Renderer::Impl::skipped(const passes::FrameInputs& in) const {
+    std::vector<std::string> out;
+    for (const std::unique_ptr<passes::FramePass>& pass : passes)
+        if (const auto why = pass->skipped(in))
+            out.push_back(std::string(pass->name()) + ": skipped (" + *why + ")");
+    return out;
+}
+
 void Renderer::Impl::write_uniforms(Slot& slot, const scene::Camera& camera,
-                                    const Settings& settings, const passes::FrameInputs& in,
+                                    const passes::FrameInputs& in,
                                     const passes::FrameResources& res) {
     uint32_t flags = 0;
     if (res.shadow_map.valid()) flags |= passes::kFrameShadows;
@@ -287,7 +245,7 @@ void Renderer::Impl::write_uniforms(Slot& slot, const scene::Camera& camera,
     const VkExtent2D size = graph->output_extent();
     const passes::FrameUniforms u =
         frame_uniforms({.camera = camera,
-                        .settings = settings,
+                        .settings = *in.settings,
                         .options = in.options,
                         .sun = sun,
                         .scene_bounds = scene_bounds,
@@ -300,41 +258,29 @@ void Renderer::Impl::write_uniforms(Slot& slot, const scene::Camera& camera,
     cut = false;
 }
 
-void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::FrameOptions& options,
-                             ReadBack read_back, FrameResult& result) {
-    for (const graph::PassResult& g : graph->collect(graph_frame)) {
-        PassResult p;
-        p.name = g.name;
-        p.gpu_ms = g.gpu_ms;
-        p.vertex_shader_invocations = g.vertex_invocations;
-        p.fragment_shader_invocations = g.fragment_invocations;
-        p.clipping_primitives = g.clipping_primitives;
-        if (p.name == passes::DepthPrepass::kName)
-            p.shaded_fragments = targets->count_sum(CountImage::Prepass);
-        else if (p.name == passes::ForwardPass::kName)
-            p.shaded_fragments = targets->count_sum(CountImage::Forward);
-        else if (p.name == passes::TransparentPass::kName)
-            p.shaded_fragments = targets->count_sum(CountImage::Transparent);
-        result.passes.push_back(std::move(p));
+// After the fence: every graph pass's measurements, then each frame pass fills in its own
+// results (matched by position: the graph passes it added) and the frame-level ones.
+void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::FrameInputs& in,
+                             const passes::FrameResources& res, FrameResult& result) {
+    const std::vector<graph::PassResult> measured = graph->collect(graph_frame);
+    const std::span<const graph::PassInfo> infos = graph->passes();
+    for (size_t i = 0; i < measured.size(); ++i)
+        result.passes.push_back(pass_result(measured[i], infos[i], graph->resources()));
+    const passes::FrameCollect c{in, res, *readback};
+    for (const Added& a : added) {
+        const std::span<PassResult> own(result.passes.data() + a.first, a.last - a.first);
+        a.pass->collect(c, own, result);
     }
     if (slot.timestamps.count()) {
         if (auto ticks = slot.timestamps.results())
             result.gpu_ms = slot.timestamps.ticks_to_ms((*ticks)[0], (*ticks)[1]);
     }
-    const bool full = read_back == ReadBack::Yes || read_back == ReadBack::WithMsaaDepth;
-    if (full || options.count_fragments)
-        result.covered_pixels = targets->covered_pixels(options.far_depth());
-    if (read_back != ReadBack::No) result.rgba8 = targets->rgba8();
-    result.msaa.samples = uint32_t(options.samples);
-    if (!options.msaa()) return;
-    result.msaa.depth_resolve = passes::depth_resolve_name(context->report(), options.reverse_z);
-    if (!full) return;
-    result.msaa.edge_pixels = probe->edge_pixels();
-    if (read_back == ReadBack::WithMsaaDepth) {
-        result.msaa.depth_samples = probe->depth_samples();
-        result.msaa.resolved_depth = targets->depth_floats();
-        if (result.msaa.resolved_depth.empty()) result.msaa.depth_samples.clear();
-    }
+    result.msaa.samples = uint32_t(in.options.samples);
+    if (in.options.msaa())
+        result.msaa.depth_resolve =
+            passes::depth_resolve_name(context->report(), in.options.reverse_z);
+    // Depth samples only come with a resolved depth to compare them with (D32).
+    if (result.msaa.resolved_depth.empty()) result.msaa.depth_samples.clear();
 }
 
 Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl>(options)) {}
@@ -361,9 +307,10 @@ void Renderer::camera_cut() {
     impl_->cut = true;
 }
 
+// Fail-safe per pass: a shader error stops here and leaves the later passes as they were.
 void Renderer::rebuild_pipelines() {
-    impl_->passes->rebuild(impl_->frames->retire_list());
-    if (impl_->inspector) impl_->inspector->rebuild_pipelines(impl_->frames->retire_list());
+    for (const std::unique_ptr<passes::FramePass>& pass : impl_->passes)
+        pass->rebuild_pipelines(impl_->frames->retire_list());
 }
 
 vk::Context& Renderer::context() {
@@ -387,6 +334,44 @@ void Renderer::set_scene(const scene::Scene& scene) {
     }
 }
 
+// The settings as this frame's options, checked against the device and the scene; passes
+// hear of a new sample count before the frame is declared.
+passes::FrameOptions Renderer::Impl::options_for(const Settings& settings) {
+    const passes::FrameOptions options = passes::FrameOptions::from(settings);
+    check_device(context->report(), options);
+    // material_alpha_cutoff: checked against the scene (an unknown name throws) and uploaded
+    // when it changed, before this frame begins.
+    scene->set_alpha_cutoff_overrides(settings.get_map("material_alpha_cutoff"));
+    if (options.samples != last_samples)
+        for (const std::unique_ptr<passes::FramePass>& pass : passes)
+            pass->on_sample_count_changed(options.samples);
+    last_samples = options.samples;
+    return options;
+}
+
+// Targets, graph and read-back ready for a frame of `size` (a new size is a camera cut).
+void Renderer::Impl::begin(VkExtent2D size, const passes::FrameOptions& options,
+                           vk::Frame& frame) {
+    if (size.width != last_size.width || size.height != last_size.height) cut = true;
+    last_size = size;
+    targets->ensure(size, options.count_fragments, options.samples, frame.retired);
+    if (cut) graph->invalidate_history();
+    graph->begin_frame(size, frame.retired);  // a new size invalidates history too
+    readback->begin_frame(frame.retired);
+}
+
+// The compiled graph into the frame's command buffer, bracketed by the frame's timestamps.
+uint64_t Renderer::Impl::record(Slot& slot, VkCommandBuffer cmd) {
+    if (slot.timestamps.count()) {
+        slot.timestamps.reset(cmd);
+        slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, 0);
+    }
+    const uint64_t graph_frame = graph->execute(cmd);
+    if (slot.timestamps.count())
+        slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 1);
+    return graph_frame;
+}
+
 FrameResult Renderer::render(const scene::Camera& camera, const Settings& settings, uint32_t width,
                              uint32_t height, ReadBack read_back, const InspectRequest& inspect) {
     Impl& r = *impl_;
@@ -394,61 +379,27 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     if (width == 0 || height == 0)
         throw Error("render: size " + std::to_string(width) + "x" + std::to_string(height) +
                     " is empty");
-    const passes::FrameOptions options = passes::FrameOptions::from(settings);
-    if (options.count_fragments && !r.context->report().fragment_stores_and_atomics)
-        throw Error("count_fragments=on needs fragmentStoresAndAtomics, which " +
-                    r.context->report().candidate.name + " does not offer");
-    check_samples(r.context->report(), options.samples);
-    if (options.sample_shading && !r.context->report().sample_rate_shading)
-        throw Error("sample_shading=on needs sampleRateShading, which " +
-                    r.context->report().candidate.name + " does not offer");
-    // material_alpha_cutoff: checked against the scene (an unknown name throws) and uploaded
-    // when it changed, before this frame begins.
-    r.scene->set_alpha_cutoff_overrides(settings.get_map("material_alpha_cutoff"));
-    if (options.msaa() && !r.probe) r.probe = std::make_unique<MsaaProbe>(*r.context, *r.compiler);
+    const passes::FrameOptions options = r.options_for(settings);
+    // "final" is read back as it is (sRGB-encoded); any other image through the inspect pass.
+    const bool inspect_final = inspect.resource == kFinalImageName;
+    if (inspect_final && read_back == ReadBack::No) read_back = ReadBack::Color;
+
     const auto start = std::chrono::steady_clock::now();
     vk::Frame& frame = r.frames->begin();
     Impl::Slot& slot = r.slots[frame.number % vk::FrameRing::kFramesInFlight];
-    const VkExtent2D size{width, height};
-    if (size.width != r.last_size.width || size.height != r.last_size.height) r.cut = true;
-    r.last_size = size;
-    r.targets->ensure(size, options.count_fragments, options.samples, frame.retired);
-    if (r.cut) r.graph->invalidate_history();
-    r.graph->begin_frame(size, frame.retired);  // a new size invalidates history too
-
+    r.begin({width, height}, options, frame);
     const passes::FrameInputs in{.scene = r.scene.get(),
                                  .frame_set = slot.set,
                                  .options = options,
                                  .camera_position = camera.position,
-                                 .frame_number = frame.number};
+                                 .frame_number = frame.number,
+                                 .settings = &settings,
+                                 .read_back = read_back,
+                                 .inspect = inspect};
     const passes::FrameResources res = r.build_graph(in, slot);
-    // "final" is read back as it is (sRGB-encoded); any other image through the inspect pass.
-    const bool inspect_final = inspect.resource == kFinalImageName;
-    if (inspect_final && read_back == ReadBack::No) read_back = ReadBack::Color;
-    const std::vector<ResourceSummary> resources = summarize(*r.graph);
-    bool inspecting = false;
-    if (!inspect.resource.empty() && !inspect_final) {
-        inspecting =
-            r.inspector->add(*r.graph, in, inspect.resource, inspect.sample, frame.retired);
-    }
-    r.write_uniforms(slot, camera, settings, in, res);
+    r.write_uniforms(slot, camera, in, res);
     r.graph->compile();
-
-    VkCommandBuffer cmd = frame.cmd;
-    if (slot.timestamps.count()) {
-        slot.timestamps.reset(cmd);
-        slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, 0);
-    }
-    const uint64_t graph_frame = r.graph->execute(cmd);
-    if (slot.timestamps.count())
-        slot.timestamps.write(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 1);
-    const bool full = read_back == ReadBack::Yes || read_back == ReadBack::WithMsaaDepth;
-    r.targets->record_read_back(cmd, read_back != ReadBack::No, full || options.count_fragments);
-    if (inspecting) r.inspector->record_read_back(cmd);
-    // The exact edge count reads every sample: only frames that are read back pay for it.
-    if (options.msaa() && full)
-        r.probe->record(cmd, r.targets->msaa_depth(), r.targets->msaa_hdr(),
-                        read_back == ReadBack::WithMsaaDepth);
+    const uint64_t graph_frame = r.record(slot, frame.cmd);
     r.frames->submit(frame);
 
     FrameResult result;
@@ -456,14 +407,10 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
     result.height = height;
     result.cpu_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    result.skipped = skipped_passes(options, settings);
+    result.skipped = r.skipped(in);
     r.frames->wait(frame);
-    r.collect(slot, graph_frame, options, read_back, result);
-    if (const auto counts = r.passes->prepass.discard_counts(frame.number))
-        result.masked_discards = DiscardCounts{counts->invoked, counts->discarded};
-    add_declarations(*r.graph, result.passes);
-    result.resources = resources;
-    if (inspecting) result.inspected = r.inspector->result();
+    r.collect(slot, graph_frame, in, res, result);
+    result.resources = r.resources;
     if (inspect_final) result.inspected = final_as_inspected(result);
     if (result.inspected) {
         result.inspected->znear = camera.znear;

@@ -43,8 +43,9 @@ void dump_resource(std::ostream& out, const ResourceInfo& r) {
 
 void dump_pass(std::ostream& out, size_t index, const PassInfo& pass, const PassPlan& plan,
                std::span<const ResourceInfo> resources) {
-    out << "  " << index + 1 << ". " << pass.name << " ("
-        << (pass.kind == PassKind::Compute ? "compute" : "graphics") << ")\n";
+    out << "  " << index + 1 << ". " << pass.name << " (" << pass_kind_name(pass.kind);
+    if (pass.role != PassRole::Frame) out << ", " << pass_role_name(pass.role);
+    out << ")\n";
     for (const Barrier& b : plan.barriers)
         out << "     barrier " << describe_barrier(b, resources) << "\n";
     for (const AccessInfo& a : pass.accesses) {

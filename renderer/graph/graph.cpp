@@ -45,6 +45,7 @@ void RenderGraph::begin_frame(VkExtent2D output, vk::DestroyList& retired) {
     histories_.clear();
     pass_data_.clear();
     plan_ = BarrierPlan{};
+    role_ = PassRole::Frame;
     phase_ = Phase::Declaring;
 }
 
@@ -108,7 +109,7 @@ BufferHandle RenderGraph::import_buffer(const std::string& name, const ExternalB
 void RenderGraph::add_pass(const std::string& name, const Setup& setup, Record record,
                            PassKind kind) {
     require_declaring("add_pass");
-    passes_.push_back(PassInfo{name, kind, {}});
+    passes_.push_back(PassInfo{name, kind, {}, role_});
     records_.push_back(std::move(record));
     PassBuilder builder(*this, uint32_t(passes_.size() - 1));
     if (setup) setup(builder);

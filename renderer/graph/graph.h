@@ -101,6 +101,11 @@ class PassContext {
     VkDeviceSize size(BufferHandle buffer) const;
     bool history_valid(const HistoryImage& history) const;
 
+    // A dependency between two steps inside this pass (two dispatches, where the second reads
+    // what the first wrote), in the graph's terms: `before` and `after` must both be declared
+    // on `image`; the barrier keeps the pass's layout. Passes record no barrier themselves.
+    void dependency(ImageHandle image, Access before, Access after) const;
+
   private:
     friend class RenderGraph;
     PassContext(const RenderGraph& graph, uint32_t pass, VkCommandBuffer cmd)
@@ -127,6 +132,8 @@ class RenderGraph {
     void begin_frame(VkExtent2D output, vk::DestroyList& retired);
     ImageHandle import_image(const std::string& name, const ExternalImage& image);
     BufferHandle import_buffer(const std::string& name, const ExternalBuffer& buffer);
+    // The role of the passes added from now on (begin_frame() resets it to Frame).
+    void set_role(PassRole role) { role_ = role; }
 
     // `setup` runs now; `record` runs in execute(). Beware: `record` is built before `setup`
     // runs, so a handle it captures by value is the one from before setup assigned it
@@ -201,6 +208,7 @@ class RenderGraph {
     VkExtent2D output_{0, 0};
     uint64_t frames_ = 0;
     enum class Phase : uint8_t { Idle, Declaring, Compiled, Executed } phase_ = Phase::Idle;
+    PassRole role_ = PassRole::Frame;
 
     // The frame being declared / compiled.
     std::vector<ResourceInfo> resources_;

@@ -70,8 +70,10 @@ void PassBuilder::declare(uint32_t resource, bool image, Access access, Shader s
                     format_name(r.image.format));
     const bool attachment =
         access == Access::ColorAttachment || is_depth_kind(access) || access == Access::ResolveDst;
-    if (pass.kind == PassKind::Compute && attachment)
-        throw Error(where + "a compute pass has no attachments");
+    if (pass.kind != PassKind::Graphics && attachment)
+        throw Error(where + "a " + pass_kind_name(pass.kind) + " pass has no attachments");
+    if (pass.kind == PassKind::Transfer && uses_shader_stage(access))
+        throw Error(where + "a transfer pass runs no shader (" + access_name(access) + ")");
     if (uses_shader_stage(access) && shader == Shader::Default)
         shader = pass.kind == PassKind::Compute ? Shader::Compute : Shader::Fragment;
     pass.accesses.push_back({resource, access, shader});
@@ -152,6 +154,35 @@ VkFormat PassContext::format(ImageHandle h) const {
 
 VkDeviceSize PassContext::size(BufferHandle h) const {
     return graph_.resource(h.index, false, "size()").size;
+}
+
+void PassContext::dependency(ImageHandle h, Access before, Access after) const {
+    const ResourceInfo& r = graph_.resource(h.index, true, "dependency()");
+    const PassInfo& pass = graph_.passes_[pass_];
+    auto declared = [&](Access a) {
+        return std::any_of(pass.accesses.begin(), pass.accesses.end(),
+                           [&](const AccessInfo& i) { return i.resource == h.index && i.access == a; });
+    };
+    if (!declared(before) || !declared(after))
+        throw Error("render graph: pass '" + pass.name + "', '" + r.name +
+                    "': dependency() between accesses it did not declare");
+    auto shader_of = [&](Access a) {
+        for (const AccessInfo& i : pass.accesses)
+            if (i.resource == h.index && i.access == a) return i.shader;
+        return Shader::Default;
+    };
+    const Use src = describe(before, shader_of(before), r.depth());
+    const Use dst = describe(after, shader_of(after), r.depth());
+    const VkImageLayout layout = use(h.index).use.layout;
+    const Barrier b{.resource = h.index,
+                    .is_image = true,
+                    .old_layout = layout,
+                    .new_layout = layout,
+                    .src_stages = src.stages,
+                    .src_access = write_bits(src.access),
+                    .dst_stages = dst.stages,
+                    .dst_access = dst.access};
+    graph_.record_barriers(cmd_, {&b, 1});
 }
 
 bool PassContext::history_valid(const HistoryImage& history) const {

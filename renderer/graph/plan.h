@@ -64,6 +64,7 @@ struct PassInfo {
     std::string name;
     PassKind kind = PassKind::Graphics;
     std::vector<AccessInfo> accesses;  // in declaration order
+    PassRole role = PassRole::Frame;
 };
 
 struct Barrier {

@@ -105,6 +105,15 @@ enum class Lifetime : uint8_t {
     External,   // imported by the caller, with initial and final states
 };
 
-enum class PassKind : uint8_t { Graphics, Compute };
+// Graphics passes draw (attachments allowed); compute passes dispatch; transfer passes copy,
+// clear and fill (no shader stage of their own).
+enum class PassKind : uint8_t { Graphics, Compute, Transfer };
+
+// What a pass is for, so a report or a panel can group and fold: the frame's own work,
+// clearing what a later pass accumulates into, or reading results back to the host.
+enum class PassRole : uint8_t { Frame, Clear, ReadBack };
+
+const char* pass_kind_name(PassKind kind);  // "graphics" | "compute" | "transfer"
+const char* pass_role_name(PassRole role);  // "frame" | "clear" | "readback"
 
 }  // namespace ds::graph

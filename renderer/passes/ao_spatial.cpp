@@ -1,6 +1,7 @@
 #include "renderer/passes/ao_spatial.h"
 
-#include "renderer/vk/barrier.h"
+#include "renderer/passes/pass_util.h"
+
 
 namespace ds::passes {
 
@@ -29,6 +30,11 @@ void AoSpatialPass::rebuild_pipelines(vk::DestroyList& retired) {
     ComputeKernel::Prepared v = vertical_.prepare({{"VERTICAL", "1"}});
     horizontal_.install(std::move(h), retired);
     vertical_.install(std::move(v), retired);
+}
+
+std::optional<std::string> AoSpatialPass::skipped(const FrameInputs& in) const {
+    if (in.options.gtao) return std::nullopt;
+    return off_or_without_prepass(in, "gtao");
 }
 
 void AoSpatialPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
@@ -64,10 +70,7 @@ void AoSpatialPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameR
             horizontal_.dispatch(ctx.cmd(), frame_set, frame, first, &params_, ctx.extent(d.mid));
             // The graph orders passes; inside this one, the vertical dispatch reads what the
             // horizontal one wrote.
-            vk::memory_barrier(ctx.cmd(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                               VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                               VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+            ctx.dependency(d.mid, Access::StorageWrite, Access::Sampled);
             const BoundImage second[] = {depth, normals, mid, {ctx.view(d.out), ctx.layout(d.out)}};
             vertical_.dispatch(ctx.cmd(), frame_set, frame, second, &params_, ctx.extent(d.out));
         },

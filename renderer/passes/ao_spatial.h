@@ -7,10 +7,11 @@
 #include "renderer/graph/graph.h"
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
 
 namespace ds::passes {
 
-class AoSpatialPass {
+class AoSpatialPass final : public FramePass {
   public:
     struct Params {
         float plane_tolerance = 0.02f;  // tangent-plane distance / view distance of weight 1/e
@@ -24,13 +25,15 @@ class AoSpatialPass {
 
     explicit AoSpatialPass(const PassServices& services);  // builds the pipelines
     // Fail-safe: both directions compile first; on any error both keep their pipelines.
-    void rebuild_pipelines(vk::DestroyList& retired);
+    const char* name() const override { return "ao_spatial"; }
+    void rebuild_pipelines(vk::DestroyList& retired) override;
+    std::optional<std::string> skipped(const FrameInputs& in) const override;
 
     // Declares "ao_spatial" when resources.ao_raw is valid (gtao ran): reads depth, normals,
     // ao_raw (sampled), the frame uniforms; creates and writes resources.ao_filtered (and its
     // intermediate, which the pass writes and then samples: GENERAL layout, with a barrier
     // between the two dispatches).
-    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& resources);
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& resources) override;
 
     Params& params() { return params_; }
 

@@ -1,5 +1,7 @@
 #include "renderer/passes/ao_temporal.h"
 
+#include "renderer/passes/pass_util.h"
+
 namespace ds::passes {
 
 using graph::Access;
@@ -15,6 +17,11 @@ AoTemporalPass::AoTemporalPass(const PassServices& services)
 
 void AoTemporalPass::rebuild_pipelines(vk::DestroyList& retired) {
     kernel_.rebuild(retired);
+}
+
+std::optional<std::string> AoTemporalPass::skipped(const FrameInputs& in) const {
+    if (in.options.gtao) return std::nullopt;
+    return off_or_without_prepass(in, "gtao");
 }
 
 void AoTemporalPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {

@@ -8,10 +8,11 @@
 #include "renderer/graph/graph.h"
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
 
 namespace ds::passes {
 
-class AoTemporalPass {
+class AoTemporalPass final : public FramePass {
   public:
     struct Params {
         float history_weight = 0.9f;    // share of the history in the blend
@@ -24,12 +25,14 @@ class AoTemporalPass {
     static constexpr VkFormat kHistoryFormat = VK_FORMAT_R16G16_SFLOAT;
 
     explicit AoTemporalPass(const PassServices& services);  // builds the pipeline
-    void rebuild_pipelines(vk::DestroyList& retired);       // fail-safe (ComputeKernel::rebuild)
+    const char* name() const override { return "ao_temporal"; }
+    void rebuild_pipelines(vk::DestroyList& retired) override;       // fail-safe (ComputeKernel::rebuild)
+    std::optional<std::string> skipped(const FrameInputs& in) const override;
 
     // Declares "ao_temporal" when resources.ao_filtered is valid: reads depth, ao_filtered and
     // the previous history (sampled), the frame uniforms; writes resources.ao and the current
     // history. The graph swaps the history pair after the frame.
-    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& resources);
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& resources) override;
 
     Params& params() { return params_; }
     // Whether the last recorded frame blended with a history (false: output = current).

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "renderer/passes/pass_util.h"
+
 namespace ds::passes {
 
 using graph::Access;
@@ -16,6 +18,11 @@ ContactShadowsPass::ContactShadowsPass(const PassServices& services)
 
 void ContactShadowsPass::rebuild_pipelines(vk::DestroyList& retired) {
     kernel_.rebuild(retired, {{"STEPS", std::to_string(kSteps)}});
+}
+
+std::optional<std::string> ContactShadowsPass::skipped(const FrameInputs& in) const {
+    if (in.options.contact_shadows) return std::nullopt;
+    return off_or_without_prepass(in, "contact_shadows");
 }
 
 void ContactShadowsPass::add(graph::RenderGraph& graph, const FrameInputs& in,

@@ -7,10 +7,11 @@
 #include "renderer/graph/graph.h"
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
 
 namespace ds::passes {
 
-class ContactShadowsPass {
+class ContactShadowsPass final : public FramePass {
   public:
     struct Params {
         float ray_length = 0.4f;  // world-space length of the march (m)
@@ -23,12 +24,14 @@ class ContactShadowsPass {
     static constexpr uint32_t kSteps = 16;
 
     explicit ContactShadowsPass(const PassServices& services);  // builds the pipeline
-    void rebuild_pipelines(vk::DestroyList& retired);  // fail-safe (ComputeKernel::rebuild)
+    const char* name() const override { return "contact_shadows"; }
+    void rebuild_pipelines(vk::DestroyList& retired) override;  // fail-safe (ComputeKernel::rebuild)
+    std::optional<std::string> skipped(const FrameInputs& in) const override;
 
     // Declares "contact_shadows" when in.options.contact_shadows: reads depth, normals
     // (sampled) and the frame uniforms (sun_direction); creates and writes
     // resources.contact_shadows.
-    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& resources);
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& resources) override;
 
     Params& params() { return params_; }
 

@@ -4,10 +4,10 @@
 #include <cstring>
 #include <string>
 
-#include "renderer/gpu_scene.h"
+#include "renderer/gpu_scene/gpu_scene.h"
+#include "renderer/readback/host_readback.h"
 #include "renderer/passes/scene_draw.h"
 #include "renderer/shader/compiler.h"
-#include "renderer/vk/barrier.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/functions.h"
 
@@ -34,27 +34,31 @@ DepthPrepass::DepthPrepass(const PassServices& services)
       count_layout_(create_count_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "prepass count sets"),
       discard_sets_(services.context, 1, kDiscardPoolSizes, "prepass discard count sets"),
-      pipelines_([this](uint32_t key) { return compile(key); },
-                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }),
-      resolve_(services) {
+      pipelines_([this](const Variant& v) { return compile(v); },
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           discard_layout_.handle(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "depth prepass layout");
-    pipelines_.get(kOpaque);
-    pipelines_.get(kMask);
+    pipelines_.get({.alpha = AlphaTest::Opaque});
+    pipelines_.get({.alpha = AlphaTest::Mask});
 }
 
 void DepthPrepass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
-    resolve_.rebuild_pipelines(retired);
 }
 
-ShaderStages DepthPrepass::compile(uint32_t key) const {
+std::optional<std::string> DepthPrepass::skipped(const FrameInputs& in) const {
+    if (in.options.prepass) return std::nullopt;
+    return "prepass=off";
+}
+
+ShaderStages DepthPrepass::compile(const Variant& v) const {
     std::vector<shader::Define> defines;
-    if (key & 3u) defines.push_back({"ALPHA_MASK", std::to_string(key & 3u)});
-    if (key & kCounting) defines.push_back({"COUNT_FRAGMENTS", "1"});
-    if (key & kAlphaToCoverage) defines.push_back({"ALPHA_TO_COVERAGE", "1"});
-    if (key & kCountDiscards) defines.push_back({"COUNT_DISCARDS", "1"});
+    if (v.alpha != AlphaTest::Opaque)
+        defines.push_back({"ALPHA_MASK", std::to_string(int(v.alpha))});
+    if (v.counting) defines.push_back({"COUNT_FRAGMENTS", "1"});
+    if (v.alpha_to_coverage) defines.push_back({"ALPHA_TO_COVERAGE", "1"});
+    if (v.count_discards) defines.push_back({"COUNT_DISCARDS", "1"});
     ShaderStages s;
     s.vert = services_.compiler.compile("depth_prepass.vert", shader::Stage::Vertex).spirv;
     s.frag =
@@ -62,33 +66,41 @@ ShaderStages DepthPrepass::compile(uint32_t key) const {
     return s;
 }
 
-vk::Pipeline DepthPrepass::create(uint32_t key, const ShaderStages& s) const {
+vk::Pipeline DepthPrepass::create(const Variant& v, const ShaderStages& s) const {
     static constexpr const char* kNames[] = {"prepass opaque", "prepass mask", "prepass unsplit"};
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
         .color_attachment(kNormalFormat)
         .color_attachment(kRoughnessFormat)
         .depth_attachment(services_.depth_format)
-        .samples(key_samples(key))
-        .alpha_to_coverage((key & kAlphaToCoverage) != 0)
-        .build(services_.context, kNames[key & 3u]);
+        .samples(v.samples)
+        .alpha_to_coverage(v.alpha_to_coverage)
+        .build(services_.context, kNames[int(v.alpha)]);
 }
 
 void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
-    const uint32_t common =
-        (res.prepass_counts.valid() ? kCounting : 0u) | samples_key(in.options.samples);
+    discards_ = {};
+    if (!in.options.prepass) return;
+    const Variant opaque{.counting = res.prepass_counts.valid(), .samples = in.options.samples};
     // Only the pipeline with the alpha test changes: the opaque one keeps early-Z and its
-    // key, so normal frames share it.
-    const uint32_t tested = (in.options.alpha_to_coverage ? kAlphaToCoverage : 0u) |
-                            (in.options.count_discards ? kCountDiscards : 0u);
+    // variant, so normal frames share it.
+    Variant tested = opaque;
+    tested.alpha_to_coverage = in.options.alpha_to_coverage;
+    tested.count_discards = in.options.count_discards;
+    tested.alpha = in.options.masked_split ? AlphaTest::Mask : AlphaTest::Unsplit;
     Draw draw;
     if (in.options.masked_split) {
-        draw.opaque = pipelines_.get(kOpaque | common);
-        draw.mask = pipelines_.get(kMask | common | tested);
+        draw.opaque = pipelines_.get(opaque);
+        draw.mask = pipelines_.get(tested);
     } else {
-        draw.opaque = pipelines_.get(kUnsplit | common | tested);
+        draw.opaque = pipelines_.get(tested);
     }
+    // count_discards=on: two counters in a host buffer, zeroed by the host before the submit.
     const graph::BufferHandle discards =
-        in.options.count_discards ? import_discards(graph, in.frame_number) : graph::BufferHandle{};
+        in.options.count_discards
+            ? services_.readback.import_storage(graph, "prepass_discard_counts", kDiscardBytes,
+                                                kDiscardBytes)
+            : graph::BufferHandle{};
+    discards_ = discards;
     struct Data {
         FrameInputs in;
         FrameResources res;
@@ -100,10 +112,8 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
         kName,
         [&](graph::PassBuilder& b, Data& d) {
             const Msaa msaa = declare(b, in, res);
-            if (discards.valid()) {
-                b.write(discards, Access::TransferDst);
+            if (discards.valid())
                 b.write(discards, Access::StorageReadWrite, graph::Shader::Fragment);
-            }
             d = {in, res, msaa, draw, discards};
         },
         [this](graph::PassContext& ctx, const Data& d) {
@@ -111,47 +121,23 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
         });
 }
 
-graph::BufferHandle DepthPrepass::import_discards(graph::RenderGraph& graph,
-                                                  uint64_t frame_number) {
-    DiscardSlot& slot = discard_slots_[frame_number % discard_slots_.size()];
-    if (!slot.buffer)
-        slot.buffer = vk::Buffer(
-            services_.context,
-            {kDiscardBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-             vk::MemoryUsage::Readback, "prepass discard counts"});
-    slot.frame = frame_number;
-    // The host read the last frame of this slot after its fence; it reads this one likewise.
-    graph::ExternalBuffer ext;
-    ext.buffer = slot.buffer.handle();
-    ext.size = kDiscardBytes;
-    ext.initial = graph::ExternalState::host_read();
-    ext.final = graph::ExternalState::host_read();
-    return graph.import_buffer("prepass_discard_counts", ext);
-}
-
-VkDescriptorSet DepthPrepass::prepare_discards(graph::PassContext& ctx, const FrameInputs& in,
-                                               graph::BufferHandle buffer) {
-    const VkBuffer handle = ctx.buffer(buffer);
-    VkCommandBuffer cmd = ctx.cmd();
-    vkCmdFillBuffer(cmd, handle, 0, kDiscardBytes, 0);
-    // The zeros before the atomics: a dependency inside the pass, which the graph cannot see.
-    vk::memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+VkDescriptorSet DepthPrepass::discard_set(graph::PassContext& ctx, const FrameInputs& in,
+                                          graph::BufferHandle buffer) {
     const VkDescriptorSet set = discard_sets_.allocate(in.frame_number, discard_layout_.handle());
     vk::DescriptorWriter writer;
-    writer.buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, handle);
+    writer.buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ctx.buffer(buffer));
     writer.update(services_.context.device(), set);
     return set;
 }
 
-std::optional<DiscardCounts> DepthPrepass::discard_counts(uint64_t frame_number) const {
-    const DiscardSlot& slot = discard_slots_[frame_number % discard_slots_.size()];
-    if (!slot.buffer || slot.frame != frame_number) return std::nullopt;
-    slot.buffer.invalidate();
+void DepthPrepass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {
+    if (own.empty()) return;
+    own[0].shaded_fragments = c.readback.u32_sum(c.res.prepass_counts);
+    const std::span<const std::byte> bytes = c.readback.buffer_bytes(discards_);
+    if (bytes.size() < kDiscardBytes) return;
     uint32_t counts[2] = {};
-    std::memcpy(counts, slot.buffer.mapped(), sizeof counts);
-    return DiscardCounts{counts[0], counts[1]};
+    std::memcpy(counts, bytes.data(), sizeof counts);
+    frame.masked_discards = DiscardCounts{counts[0], counts[1]};
 }
 
 DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInputs& in,
@@ -187,9 +173,9 @@ DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInput
     b.write(msaa.roughness, Access::ColorAttachment);
     b.write(res.normals, Access::ResolveDst);
     b.write(res.roughness, Access::ResolveDst);
-    // The shader resolve draws into the depth as an attachment after the rendering.
-    const bool native = native_depth_resolve(services_.context.report(), in.options.reverse_z);
-    b.write(res.depth, native ? Access::ResolveDst : Access::DepthAttachment);
+    // Without a native nearest-sample resolve, depth_resolve writes res.depth next.
+    if (native_depth_resolve(services_.context.report(), in.options.reverse_z))
+        b.write(res.depth, Access::ResolveDst);
     return msaa;
 }
 
@@ -231,23 +217,14 @@ void DepthPrepass::begin(graph::PassContext& ctx, const FrameInputs& in, const F
 void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
                           const Msaa& msaa, Draw draw, graph::BufferHandle discards) {
     VkCommandBuffer cmd = ctx.cmd();
-    if (discards.valid()) draw.discards = prepare_discards(ctx, in, discards);
+    if (discards.valid()) draw.discards = discard_set(ctx, in, discards);
     if (res.prepass_counts.valid()) {
-        clear_counts(cmd, ctx.image(res.prepass_counts));
         draw.counts = count_sets_.allocate(in.frame_number, count_layout_.handle());
         write_count_set(services_.context.device(), draw.counts, ctx.view(res.prepass_counts));
     }
     begin(ctx, in, res, msaa);
     draw_scene(cmd, in, draw);
     vk::fn().cmd_end_rendering(cmd);
-    if (in.options.msaa() &&
-        !native_depth_resolve(services_.context.report(), in.options.reverse_z))
-        resolve_.record(cmd, in,
-                        {.msaa_image = ctx.image(res.msaa_depth),
-                         .msaa_view = ctx.view(res.msaa_depth),
-                         .depth_view = ctx.view(res.depth),
-                         .extent = ctx.extent(res.depth),
-                         .samples = in.options.samples});
 }
 
 void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, Draw draw) const {

@@ -12,13 +12,12 @@
 // msaa > 1: renders into multisampled depth (res.msaa_depth, STOREd: forward LOADs it),
 // normals and roughness; normals and roughness resolve inline (AVERAGE) into the
 // single-sample images; depth resolves to the nearest sample, natively (MAX / MIN resolve
-// attachment) where the device has the mode, else by DepthResolve after the rendering, in
-// this same pass.
+// attachment) where the device has the mode, else in the depth_resolve pass that follows.
 //
 // alpha_to_coverage=on (msaa > 1): the pipeline with the alpha test writes a sharpened alpha
 // to output 0 (normals) and alpha-to-coverage cuts samples instead of the discard.
 // count_discards=on: that pipeline counts the fragments it ran and those it discarded into a
-// small storage buffer (set 2), read back after the frame's fence.
+// small host storage buffer (set 2, HostReadback), read after the frame's fence.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -26,8 +25,8 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/graph/graph.h"
-#include "renderer/passes/depth_resolve.h"
 #include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptors.h"
@@ -36,13 +35,7 @@
 
 namespace ds::passes {
 
-// count_discards=on: fragments that ran the prepass alpha test, and those it discarded.
-struct DiscardCounts {
-    uint64_t invoked = 0;
-    uint64_t discarded = 0;
-};
-
-class DepthPrepass {
+class DepthPrepass final : public FramePass {
   public:
     static constexpr const char* kName = "depth_prepass";
     static constexpr VkFormat kNormalFormat = VK_FORMAT_A2B10G10R10_UNORM_PACK32;
@@ -50,20 +43,31 @@ class DepthPrepass {
 
     explicit DepthPrepass(const PassServices& services);
 
-    void rebuild_pipelines(vk::DestroyList& retired);
-    // Writes res.depth (which the renderer provides); creates res.normals and res.roughness.
+    const char* name() const override { return kName; }
+    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    void rebuild_pipelines(vk::DestroyList& retired) override;
+    // Writes res.depth (which the renderer provides; at msaa > 1 without a native resolve,
+    // res.msaa_depth and depth_resolve follows); creates res.normals and res.roughness.
     // Counts into res.prepass_counts when it is valid.
-    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
-    // After frame `frame_number`'s fence: its discard counts, if that frame counted them.
-    std::optional<DiscardCounts> discard_counts(uint64_t frame_number) const;
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
+    // shaded_fragments from res.prepass_counts; FrameResult::masked_discards.
+    void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
 
   private:
-    // Variant key: the alpha test (bits 0-1, the shader's ALPHA_MASK), counting (bit 2),
-    // samples_key() (bits 8-15).
-    enum AlphaTest : uint32_t { kOpaque = 0, kMask = 1, kUnsplit = 2 };
-    static constexpr uint32_t kCounting = 4;
-    static constexpr uint32_t kAlphaToCoverage = 8;  // alpha-tested pipeline only
-    static constexpr uint32_t kCountDiscards = 16;   // alpha-tested pipeline only
+    // The shader's ALPHA_MASK: none (opaque), MASK materials, or all geometry (unsplit).
+    enum class AlphaTest : uint8_t { Opaque = 0, Mask = 1, Unsplit = 2 };
+    struct Variant {
+        AlphaTest alpha = AlphaTest::Opaque;
+        bool counting = false;           // COUNT_FRAGMENTS=1
+        bool alpha_to_coverage = false;  // alpha-tested pipeline only
+        bool count_discards = false;     // alpha-tested pipeline only
+        VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+        bool operator==(const Variant&) const = default;
+        size_t hash() const {
+            return hash_fields(int(alpha), counting, alpha_to_coverage, count_discards,
+                               int(samples));
+        }
+    };
     static constexpr uint32_t kDiscardSet = 2;
 
     struct Draw {
@@ -72,23 +76,17 @@ class DepthPrepass {
         VkDescriptorSet counts = VK_NULL_HANDLE;
         VkDescriptorSet discards = VK_NULL_HANDLE;
     };
-    // count_discards=on: one host-readable buffer per frame in flight.
-    struct DiscardSlot {
-        vk::Buffer buffer;
-        uint64_t frame = UINT64_MAX;  // the frame that last counted into it
-    };
 
-    ShaderStages compile(uint32_t key) const;
-    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+    ShaderStages compile(const Variant& variant) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
     // msaa > 1: the multisampled normals and roughness (transients) of this frame.
     struct Msaa {
         graph::ImageHandle normals, roughness;
     };
 
     Msaa declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res) const;
-    graph::BufferHandle import_discards(graph::RenderGraph& graph, uint64_t frame_number);
-    VkDescriptorSet prepare_discards(graph::PassContext& ctx, const FrameInputs& in,
-                                     graph::BufferHandle buffer);
+    VkDescriptorSet discard_set(graph::PassContext& ctx, const FrameInputs& in,
+                                graph::BufferHandle buffer);
     void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
                 const Msaa& msaa, Draw draw, graph::BufferHandle discards);
     void begin(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
@@ -101,9 +99,8 @@ class DepthPrepass {
     vk::PipelineLayout layout_;
     FrameDescriptorPool count_sets_;
     FrameDescriptorPool discard_sets_;
-    std::array<DiscardSlot, vk::FrameRing::kFramesInFlight> discard_slots_;
-    PipelineVariants pipelines_;
-    DepthResolve resolve_;
+    PipelineVariants<Variant> pipelines_;
+    graph::BufferHandle discards_;  // this frame's discard counters (count_discards=on)
 };
 
 }  // namespace ds::passes

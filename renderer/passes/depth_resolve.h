@@ -1,14 +1,15 @@
 #pragma once
-// Resolving a multisampled depth to the nearest sample (reverse-Z: MAX, else MIN), shared by
-// the passes that end with an MSAA depth (depth_prepass; forward with prepass=off). Natively,
-// a resolve attachment does it where the device offers the mode; otherwise DepthResolve does
-// it in a fullscreen draw writing gl_FragDepth (shaders/depth_resolve.frag), recorded inside
-// the pass after its rendering ends. Plumbing, not a pass: passes include it, never each other.
+// depth_resolve: a multisampled depth resolved to the nearest sample (reverse-Z: MAX, else
+// MIN). Natively, the pass that renders the depth (depth_prepass; forward with prepass=off)
+// does it with a resolve attachment where the device offers the mode; otherwise this pass
+// does it after that one, in a fullscreen draw writing gl_FragDepth from the sampled samples
+// (shaders/depth_resolve.frag). The graph plans both layout changes of the MSAA depth.
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
 
 #include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
@@ -21,40 +22,33 @@ struct DeviceReport;
 
 namespace ds::passes {
 
-// The resolve mode that keeps the nearest depth, when `report` offers it; NONE otherwise.
-VkResolveModeFlagBits native_depth_resolve(const vk::DeviceReport& report, bool reverse_z);
-// What the report says: "native-max", "native-min" or "shader".
-const char* depth_resolve_name(const vk::DeviceReport& report, bool reverse_z);
-
-class DepthResolve {
+class DepthResolvePass final : public FramePass {
   public:
-    explicit DepthResolve(const PassServices& services);
+    // Which pass leaves the multisampled depth: the prepass, or forward with prepass=off.
+    enum class After : uint8_t { Prepass, Forward };
 
-    void rebuild_pipelines(vk::DestroyList& retired) { pipelines_.rebuild(retired); }
+    DepthResolvePass(const PassServices& services, After after);
 
-    struct Target {
-        VkImage msaa_image = VK_NULL_HANDLE;  // in DEPTH_STENCIL_ATTACHMENT_OPTIMAL, written
-        VkImageView msaa_view = VK_NULL_HANDLE;
-        VkImageView depth_view = VK_NULL_HANDLE;  // single-sample, DEPTH_STENCIL_ATTACHMENT_OPTIMAL
-        VkExtent2D extent{0, 0};
-        VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    };
-    // Outside any rendering: writes the nearest sample of `msaa_view` into `depth_view`.
-    // The MSAA image is sampled in the read-only layout and returned to the attachment layout
-    // the graph believes it is in (barriers inside the pass, which the graph cannot see).
-    void record(VkCommandBuffer cmd, const FrameInputs& in, const Target& target);
+    // Adds "depth_resolve" at msaa > 1 when the device has no native nearest-sample resolve
+    // (else the writing pass resolves with a resolve attachment) and `after` wrote the depth:
+    // reads res.msaa_depth (sampled), writes res.depth.
+    const char* name() const override { return "depth_resolve"; }
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
+    void rebuild_pipelines(vk::DestroyList& retired) override { pipelines_.rebuild(retired); }
 
   private:
-    ShaderStages compile(uint32_t key) const;
-    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
-    void transition(VkCommandBuffer cmd, VkImage image, bool to_sampled) const;
+    ShaderStages compile(const NoVariant& variant) const;
+    vk::Pipeline create(const NoVariant& variant, const ShaderStages& stages) const;
+    void record(graph::PassContext& ctx, const FrameInputs& in, graph::ImageHandle msaa_depth,
+                graph::ImageHandle depth);
 
     PassServices services_;
+    After after_;
     vk::Sampler nearest_;
     vk::DescriptorSetLayout set_layout_;
     vk::PipelineLayout layout_;
     FrameDescriptorPool sets_;
-    PipelineVariants pipelines_;
+    PipelineVariants<NoVariant> pipelines_;
 };
 
 }  // namespace ds::passes

@@ -2,7 +2,8 @@
 
 #include <vector>
 
-#include "renderer/gpu_scene.h"
+#include "renderer/gpu_scene/gpu_scene.h"
+#include "renderer/readback/host_readback.h"
 #include "renderer/passes/scene_draw.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/context.h"
@@ -22,27 +23,29 @@ ForwardPass::ForwardPass(const PassServices& services)
       lighting_(services.context, services.depth_format),
       count_layout_(create_count_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "forward count sets"),
-      pipelines_([this](uint32_t key) { return compile(key); },
-                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }),
-      resolve_(services) {
+      pipelines_([this](const Variant& v) { return compile(v); },
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           lighting_.layout(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "forward layout");
-    pipelines_.get(kPrepassInputs);
+    pipelines_.get({.prepass_inputs = true});
 }
 
 void ForwardPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
-    resolve_.rebuild_pipelines(retired);
 }
 
-ShaderStages ForwardPass::compile(uint32_t key) const {
+void ForwardPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
+    if (!own.empty()) own[0].shaded_fragments = c.readback.u32_sum(c.res.forward_counts);
+}
+
+ShaderStages ForwardPass::compile(const Variant& v) const {
     std::vector<shader::Define> vert_defines, frag_defines;
-    if (key & kNonInvariant) vert_defines.push_back({"NON_INVARIANT", "1"});
-    if (key & kPrepassInputs) frag_defines.push_back({"PREPASS", "1"});
-    if (key & kAlphaMask) frag_defines.push_back({"ALPHA_MASK", "1"});
-    if (key & kCounting) frag_defines.push_back({"COUNT_FRAGMENTS", "1"});
-    if (key & kAlphaToCoverage) frag_defines.push_back({"ALPHA_TO_COVERAGE", "1"});
+    if (v.non_invariant) vert_defines.push_back({"NON_INVARIANT", "1"});
+    if (v.prepass_inputs) frag_defines.push_back({"PREPASS", "1"});
+    if (v.alpha_mask) frag_defines.push_back({"ALPHA_MASK", "1"});
+    if (v.counting) frag_defines.push_back({"COUNT_FRAGMENTS", "1"});
+    if (v.alpha_to_coverage) frag_defines.push_back({"ALPHA_TO_COVERAGE", "1"});
     ShaderStages s;
     s.vert = services_.compiler.compile("forward.vert", shader::Stage::Vertex, vert_defines).spirv;
     s.frag =
@@ -50,37 +53,35 @@ ShaderStages ForwardPass::compile(uint32_t key) const {
     return s;
 }
 
-vk::Pipeline ForwardPass::create(uint32_t key, const ShaderStages& s) const {
-    const char* name = (key & kAlphaMask)
-                           ? ((key & kPrepassInputs) ? "forward prepass mask" : "forward mask")
-                       : (key & kPrepassInputs) ? "forward prepass"
-                                                : "forward opaque";
+vk::Pipeline ForwardPass::create(const Variant& v, const ShaderStages& s) const {
+    const char* name = v.alpha_mask ? (v.prepass_inputs ? "forward prepass mask" : "forward mask")
+                       : v.prepass_inputs ? "forward prepass"
+                                          : "forward opaque";
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
         .color_attachment(kHdrFormat)
         .depth_attachment(services_.depth_format)
-        .samples(key_samples(key))
-        .sample_shading((key & kSampleShading) ? 1.0f : 0.0f)
-        .alpha_to_coverage((key & kAlphaToCoverage) != 0)
+        .samples(v.samples)
+        .sample_shading(v.sample_shading ? 1.0f : 0.0f)
+        .alpha_to_coverage(v.alpha_to_coverage)
         .build(services_.context, name);
 }
 
 void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const FrameOptions& o = in.options;
-    const uint32_t common = (o.invariant ? 0u : kNonInvariant) |
-                            (res.forward_counts.valid() ? kCounting : 0u) |
-                            (o.sample_shading ? kSampleShading : 0u) | samples_key(o.samples);
+    const Variant opaque{.prepass_inputs = o.prepass,
+                         .non_invariant = !o.invariant,
+                         .counting = res.forward_counts.valid(),
+                         .sample_shading = o.sample_shading,
+                         .samples = o.samples};
     // The pipelines with the alpha test: alpha-to-coverage replaces their discard.
-    const uint32_t mask = kAlphaMask | (o.alpha_to_coverage ? kAlphaToCoverage : 0u);
+    Variant mask = opaque;
+    mask.alpha_mask = true;
+    mask.alpha_to_coverage = o.alpha_to_coverage;
     Draw draw;
-    if (o.prepass) {
-        draw.opaque = pipelines_.get(common | kPrepassInputs);
-        // Only EQUAL makes the alpha test redundant: with greater_or_equal the cut-out parts
-        // of a MASK surface are nearer than what the prepass kept there, and would pass.
-        if (!o.depth_equal) draw.mask = pipelines_.get(common | kPrepassInputs | mask);
-    } else {
-        draw.opaque = pipelines_.get(common);
-        draw.mask = pipelines_.get(common | mask);
-    }
+    draw.opaque = pipelines_.get(opaque);
+    // Only EQUAL makes the alpha test redundant: with greater_or_equal the cut-out parts of a
+    // MASK surface are nearer than what the prepass kept there, and would pass.
+    if (!o.prepass || !o.depth_equal) draw.mask = pipelines_.get(mask);
     draw.lighting = {.shadow_map = res.shadow_map,
                      .normals = o.prepass ? res.normals : graph::ImageHandle{},
                      .roughness = o.prepass ? res.roughness : graph::ImageHandle{},
@@ -111,7 +112,8 @@ void ForwardPass::declare(graph::PassBuilder& b, const FrameInputs& in, FrameRes
             b.read(res.msaa_depth, Access::DepthReadOnly);
         } else {
             b.write(res.msaa_depth, Access::DepthAttachment);
-            b.write(res.depth, native_resolve(o) ? Access::ResolveDst : Access::DepthAttachment);
+            // Without a native nearest-sample resolve, depth_resolve writes res.depth next.
+            if (native_resolve(o)) b.write(res.depth, Access::ResolveDst);
         }
     } else {
         res.hdr = b.create_image("hdr", {.format = kHdrFormat,
@@ -135,7 +137,6 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     const FrameOptions& o = in.options;
     VkDescriptorSet counts = VK_NULL_HANDLE;
     if (res.forward_counts.valid()) {
-        clear_counts(cmd, ctx.image(res.forward_counts));
         counts = count_sets_.allocate(in.frame_number, count_layout_.handle());
         write_count_set(services_.context.device(), counts, ctx.view(res.forward_counts));
     }
@@ -165,13 +166,6 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     if (draw.mask) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
     draw_groups(cmd, *in.scene, layout, mask);
     vk::fn().cmd_end_rendering(cmd);
-    if (o.msaa() && !o.prepass && !native_resolve(o))
-        resolve_.record(cmd, in,
-                        {.msaa_image = ctx.image(res.msaa_depth),
-                         .msaa_view = ctx.view(res.msaa_depth),
-                         .depth_view = ctx.view(res.depth),
-                         .extent = ctx.extent(res.depth),
-                         .samples = o.samples});
 }
 
 bool ForwardPass::native_resolve(const FrameOptions& o) const {

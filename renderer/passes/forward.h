@@ -20,16 +20,16 @@
 //
 // msaa > 1: draws into res.msaa_hdr (cleared and stored: skybox and transparent add to it,
 // and transparent resolves it into res.hdr) against res.msaa_depth. Without the prepass it
-// writes that depth and resolves it to the nearest sample into res.depth, natively or by
-// DepthResolve after its rendering.
+// writes that depth and resolves it to the nearest sample into res.depth, natively, or the
+// depth_resolve pass that follows does.
 #include <array>
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
 
 #include "renderer/graph/graph.h"
-#include "renderer/passes/depth_resolve.h"
 #include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
 #include "renderer/passes/lighting_set.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/vk/descriptors.h"
@@ -38,30 +38,39 @@
 
 namespace ds::passes {
 
-class ForwardPass {
+class ForwardPass final : public FramePass {
   public:
     static constexpr const char* kName = "forward";
-    static constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    static constexpr VkFormat kHdrFormat = passes::kHdrFormat;
     // Linear radiance behind everything when the sky pass is off.
     static constexpr std::array<float, 4> kBackground = {0.25f, 0.42f, 0.85f, 1.0f};
 
     explicit ForwardPass(const PassServices& services);
 
-    void rebuild_pipelines(vk::DestroyList& retired);
+    const char* name() const override { return kName; }
+    void rebuild_pipelines(vk::DestroyList& retired) override;
     // Creates res.hdr (msaa > 1: draws into res.msaa_hdr instead). Reads res.depth (writes it
     // without the prepass), res.shadow_map, res.normals, res.roughness, res.ao, res.contact_shadows
     // where valid. Counts into res.forward_counts when it is valid.
-    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
+    // shaded_fragments from res.forward_counts.
+    void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
 
   private:
-    // Variant key bits.
-    static constexpr uint32_t kPrepassInputs = 1;  // PREPASS=1 (no discard)
-    static constexpr uint32_t kAlphaMask = 2;      // ALPHA_MASK=1 (not with prepass + EQUAL)
-    static constexpr uint32_t kNonInvariant = 4;   // invariant=off vertex shader
-    static constexpr uint32_t kCounting = 8;
-    static constexpr uint32_t kSampleShading = 16;    // sample_shading=on (msaa > 1)
-    static constexpr uint32_t kAlphaToCoverage = 32;  // MASK pipelines, alpha_to_coverage=on
-    // samples_key() holds bits 8-15.
+    struct Variant {
+        bool prepass_inputs = false;     // PREPASS=1: reads the prepass normals (no discard)
+        bool alpha_mask = false;         // ALPHA_MASK=1 (not with prepass + EQUAL)
+        bool non_invariant = false;      // invariant=off vertex shader
+        bool counting = false;           // COUNT_FRAGMENTS=1
+        bool sample_shading = false;     // sample_shading=on (msaa > 1)
+        bool alpha_to_coverage = false;  // MASK pipelines, alpha_to_coverage=on
+        VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+        bool operator==(const Variant&) const = default;
+        size_t hash() const {
+            return hash_fields(prepass_inputs, alpha_mask, non_invariant, counting,
+                               sample_shading, alpha_to_coverage, int(samples));
+        }
+    };
 
     struct Draw {
         VkPipeline opaque = VK_NULL_HANDLE;  // with the prepass and EQUAL: opaque and MASK
@@ -69,8 +78,8 @@ class ForwardPass {
         LightingInputs lighting;
     };
 
-    ShaderStages compile(uint32_t key) const;
-    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+    ShaderStages compile(const Variant& variant) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
     void declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res,
                  const LightingInputs& lighting) const;
     void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
@@ -83,8 +92,7 @@ class ForwardPass {
     vk::DescriptorSetLayout count_layout_;
     vk::PipelineLayout layout_;
     FrameDescriptorPool count_sets_;
-    PipelineVariants pipelines_;
-    DepthResolve resolve_;  // prepass=off with msaa > 1, without a native MAX / MIN
+    PipelineVariants<Variant> pipelines_;
 };
 
 }  // namespace ds::passes

@@ -10,10 +10,12 @@
 #include <glm/glm.hpp>
 
 #include "renderer/graph/types.h"
+#include "renderer/passes/frame_result.h"
 #include "renderer/settings/settings.h"
 
 namespace ds {
 class GpuScene;
+class HostReadback;
 namespace shader {
 class Compiler;
 }
@@ -50,6 +52,10 @@ inline constexpr uint32_t kFrameShadows = 1u << 0;         // shadow map valid
 inline constexpr uint32_t kFrameAO = 1u << 1;              // AO image holds GTAO (else white)
 inline constexpr uint32_t kFrameContactShadows = 1u << 2;  // contact image valid (else 1)
 inline constexpr uint32_t kFrameReverseZ = 1u << 3;
+
+// Formats of the frame's imported colour targets (FrameTargets creates them).
+inline constexpr VkFormat kFinalFormat = VK_FORMAT_R8G8B8A8_SRGB;        // tonemap writes it
+inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;   // scene colour
 
 // The settings of one frame, parsed once (names and meanings: the registry's help text).
 struct FrameOptions {
@@ -111,6 +117,7 @@ struct PassServices {
     VkDescriptorSetLayout frame_layout;     // set 0: FrameUniforms + instances
     VkDescriptorSetLayout material_layout;  // set 1: one per material (gpu_scene.h)
     VkFormat depth_format;
+    HostReadback& readback;  // host buffers the read-back passes copy into
 };
 
 // Per-frame inputs beyond the graph handles.
@@ -120,6 +127,9 @@ struct FrameInputs {
     FrameOptions options;
     glm::vec3 camera_position{0.0f};
     uint64_t frame_number = 0;
+    const Settings* settings = nullptr;  // the registry's values (skip reasons name knobs)
+    ReadBack read_back = ReadBack::Yes;  // what the caller reads back after the fence
+    InspectRequest inspect;              // a resource to read back through the inspect pass
 };
 
 }  // namespace ds::passes

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "renderer/common/error.h"
+#include "renderer/passes/pass_util.h"
 
 namespace ds::passes {
 
@@ -22,6 +23,11 @@ GtaoPass::GtaoPass(const PassServices& services, float resolution_scale)
 void GtaoPass::rebuild_pipelines(vk::DestroyList& retired) {
     kernel_.rebuild(retired,
                     {{"SLICES", std::to_string(kSlices)}, {"STEPS", std::to_string(kSteps)}});
+}
+
+std::optional<std::string> GtaoPass::skipped(const FrameInputs& in) const {
+    if (in.options.gtao) return std::nullopt;
+    return off_or_without_prepass(in, "gtao");
 }
 
 void GtaoPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {

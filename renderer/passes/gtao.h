@@ -9,10 +9,11 @@
 #include "renderer/graph/graph.h"
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
 
 namespace ds::passes {
 
-class GtaoPass {
+class GtaoPass final : public FramePass {
   public:
     struct Params {
         float radius = 1.0f;           // world-space radius (m) in which occluders count
@@ -31,11 +32,13 @@ class GtaoPass {
     explicit GtaoPass(const PassServices& services, float resolution_scale = 0.5f);
 
     // Fail-safe: see ComputeKernel::rebuild.
-    void rebuild_pipelines(vk::DestroyList& retired);
+    const char* name() const override { return "gtao"; }
+    void rebuild_pipelines(vk::DestroyList& retired) override;
+    std::optional<std::string> skipped(const FrameInputs& in) const override;
 
     // Declares "gtao" when in.options.gtao: reads depth, normals (sampled) and the frame
     // uniforms; creates and writes resources.ao_raw. Otherwise adds nothing.
-    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& resources);
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& resources) override;
 
     Params& params() { return params_; }
     float resolution_scale() const { return scale_; }

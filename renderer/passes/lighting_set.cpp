@@ -2,7 +2,7 @@
 
 #include <array>
 
-#include "renderer/vk/barrier.h"
+#include "renderer/vk/upload.h"
 #include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
 
@@ -68,36 +68,12 @@ void LightingSet::create_fallbacks(VkFormat shadow_format) {
                                   "fallback white"});
     lit_shadow_ = vk::Image(
         context_, {1, 1, 1, shadow_format, usage, VK_SAMPLE_COUNT_1_BIT, "fallback shadow map"});
-    context_.submit_once([&](VkCommandBuffer cmd) {
-        vk::ImageBarrier to_dst[] = {{.image = white_.handle(),
-                                      .new_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                      .dst_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                                      .dst_access = VK_ACCESS_2_TRANSFER_WRITE_BIT},
-                                     {.image = lit_shadow_.handle(),
-                                      .aspect = lit_shadow_.aspect(),
-                                      .new_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                      .dst_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                                      .dst_access = VK_ACCESS_2_TRANSFER_WRITE_BIT}};
-        vk::image_barriers(cmd, to_dst);
-        const VkClearColorValue one{{1.0f, 1.0f, 1.0f, 1.0f}};
-        const VkImageSubresourceRange color{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        vkCmdClearColorImage(cmd, white_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &one, 1,
-                             &color);
-        const VkClearDepthStencilValue far{1.0f, 0};
-        const VkImageSubresourceRange depth{lit_shadow_.aspect(), 0, 1, 0, 1};
-        vkCmdClearDepthStencilImage(cmd, lit_shadow_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                    &far, 1, &depth);
-        vk::ImageBarrier to_read[2] = {to_dst[0], to_dst[1]};
-        for (vk::ImageBarrier& b : to_read) {
-            b.old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-            b.new_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-            b.src_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT;
-            b.src_access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-            b.dst_stage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-            b.dst_access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
-        }
-        vk::image_barriers(cmd, to_read);
-    });
+    VkClearValue one{};
+    one.color = {{1.0f, 1.0f, 1.0f, 1.0f}};
+    vk::clear_image_once(context_, white_, one);
+    VkClearValue far{};
+    far.depthStencil = {1.0f, 0};
+    vk::clear_image_once(context_, lit_shadow_, far);
 }
 
 void LightingSet::declare(graph::PassBuilder& builder, const LightingInputs& in) {

@@ -1,6 +1,7 @@
 #include "renderer/passes/pass_util.h"
 
-#include "renderer/vk/barrier.h"
+#include "renderer/shader/compiler.h"
+#include "renderer/vk/capabilities.h"
 #include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/functions.h"
@@ -24,20 +25,21 @@ VkDescriptorSet FrameDescriptorPool::allocate(uint64_t frame_number, VkDescripto
     return pools_[slot].allocate(layout);
 }
 
-VkPipeline PipelineVariants::get(uint32_t key) {
-    auto it = pipelines_.find(key);
-    if (it == pipelines_.end()) it = pipelines_.emplace(key, create_(key, compile_(key))).first;
-    return it->second.handle();
+ShaderStages compile_fullscreen(shader::Compiler& compiler, const char* fragment) {
+    return {compiler.compile("fullscreen.vert", shader::Stage::Vertex).spirv,
+            compiler.compile(fragment, shader::Stage::Fragment).spirv};
 }
 
-void PipelineVariants::rebuild(vk::DestroyList& retired) {
-    std::map<uint32_t, ShaderStages> stages;
-    for (const auto& [key, pipeline] : pipelines_) stages.emplace(key, compile_(key));
-    std::map<uint32_t, vk::Pipeline> fresh;
-    for (const auto& [key, s] : stages) fresh.emplace(key, create_(key, s));
-    // An in-flight frame may still use the old pipelines.
-    for (auto& [key, pipeline] : pipelines_) retired.defer(std::move(pipeline));
-    pipelines_ = std::move(fresh);
+vk::Pipeline create_fullscreen(vk::Context& context, const FullscreenPipeline& p,
+                               const ShaderStages& stages) {
+    vk::GraphicsPipelineBuilder b;
+    b.shader(VK_SHADER_STAGE_VERTEX_BIT, stages.vert)
+        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, stages.frag)
+        .samples(p.samples)
+        .layout(p.layout);
+    if (p.color != VK_FORMAT_UNDEFINED) b.color_attachment(p.color);
+    if (p.depth != VK_FORMAT_UNDEFINED) b.depth_attachment(p.depth);
+    return b.build(context, p.name);
 }
 
 VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout,
@@ -107,22 +109,7 @@ vk::DescriptorSetLayout create_count_set_layout(vk::Context& context) {
 }
 
 void declare_counts(graph::PassBuilder& builder, graph::ImageHandle counts) {
-    builder.write(counts, graph::Access::TransferDst);
     builder.write(counts, graph::Access::StorageReadWrite, graph::Shader::Fragment);
-}
-
-void clear_counts(VkCommandBuffer cmd, VkImage image) {
-    const VkClearColorValue zero{};
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
-    vk::image_barrier(cmd, {.image = image,
-                            .old_layout = VK_IMAGE_LAYOUT_GENERAL,
-                            .new_layout = VK_IMAGE_LAYOUT_GENERAL,
-                            .src_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                            .src_access = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                            .dst_stage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                            .dst_access = VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
-                                          VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT});
 }
 
 void write_count_set(VkDevice device, VkDescriptorSet set, VkImageView view) {
@@ -134,6 +121,21 @@ void write_count_set(VkDevice device, VkDescriptorSet set, VkImageView view) {
     write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     write.pImageInfo = &info;
     vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
+std::string off_or_without_prepass(const FrameInputs& in, const char* knob) {
+    return in.settings->get_bool(knob) ? std::string("prepass off") : std::string(knob) + "=off";
+}
+
+VkResolveModeFlagBits native_depth_resolve(const vk::DeviceReport& report, bool reverse_z) {
+    const VkResolveModeFlagBits mode =
+        reverse_z ? VK_RESOLVE_MODE_MAX_BIT : VK_RESOLVE_MODE_MIN_BIT;
+    return (report.depth_resolve_modes & mode) ? mode : VK_RESOLVE_MODE_NONE;
+}
+
+const char* depth_resolve_name(const vk::DeviceReport& report, bool reverse_z) {
+    if (!native_depth_resolve(report, reverse_z)) return "shader";
+    return reverse_z ? "native-max" : "native-min";
 }
 
 }  // namespace ds::passes

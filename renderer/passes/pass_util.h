@@ -1,17 +1,20 @@
 #pragma once
 // What the passes share that is not a pass (a pass never includes another pass): per-frame
-// descriptor sets, fail-safe pipeline variants, attachments, and the u32 count images of
-// count_fragments=on.
+// descriptor sets, attachments, fullscreen pipelines, the depth resolve mode, and the u32
+// count images of count_fragments=on. Pipeline variants: pipeline_variants.h.
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
 #include "renderer/graph/graph.h"
+#include "renderer/passes/pipeline_variants.h"
+#include "renderer/passes/frame.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/frame.h"
@@ -19,6 +22,10 @@
 
 namespace ds::vk {
 class Context;
+struct DeviceReport;
+}  // namespace ds::vk
+namespace ds::shader {
+class Compiler;
 }
 
 namespace ds::passes {
@@ -36,34 +43,6 @@ class FrameDescriptorPool {
     std::array<uint64_t, vk::FrameRing::kFramesInFlight> frames_;
 };
 
-// SPIR-V of one pipeline's stages; an empty fragment stage means depth only.
-struct ShaderStages {
-    std::vector<uint32_t> vert;
-    std::vector<uint32_t> frag;
-};
-
-// A pass's pipelines by variant key (a few bits of defines and state), each built on first
-// use, so a variant no frame asks for (the counting ones, invariant=off) costs nothing.
-// rebuild() is fail-safe: every stage of every built variant compiles first (a
-// shader::ShaderError leaves the current pipelines in place), then the pipelines are created,
-// and only then are the old ones retired.
-class PipelineVariants {
-  public:
-    using Compile = std::function<ShaderStages(uint32_t key)>;
-    using Create = std::function<vk::Pipeline(uint32_t key, const ShaderStages& stages)>;
-
-    PipelineVariants(Compile compile, Create create)
-        : compile_(std::move(compile)), create_(std::move(create)) {}
-
-    VkPipeline get(uint32_t key);  // throws shader::ShaderError / ds::Error on first build
-    void rebuild(vk::DestroyList& retired);
-
-  private:
-    Compile compile_;
-    Create create_;
-    std::map<uint32_t, vk::Pipeline> pipelines_;
-};
-
 VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout,
                                      VkAttachmentLoadOp load, VkAttachmentStoreOp store);
 VkRenderingAttachmentInfo color_attachment(VkImageView view, VkAttachmentLoadOp load,
@@ -78,31 +57,42 @@ void begin_rendering(VkCommandBuffer cmd, VkExtent2D extent,
 // The dynamic depth state every pipeline declares (pipeline.h), in one call.
 void set_depth_state(VkCommandBuffer cmd, bool test, bool write, VkCompareOp compare);
 
-// Pipeline variant key bits for the sample count (bits 8-15; 0 at 1x, so single-sample keys
-// are unchanged): pipelines are built per count on first use and kept, so switching msaa
-// back and forth costs nothing after the first frame of each.
-inline uint32_t samples_key(VkSampleCountFlagBits samples) {
-    return samples == VK_SAMPLE_COUNT_1_BIT ? 0u : uint32_t(samples) << 8;
-}
-inline VkSampleCountFlagBits key_samples(uint32_t key) {
-    const uint32_t s = (key >> 8) & 0xffu;
-    return s ? VkSampleCountFlagBits(s) : VK_SAMPLE_COUNT_1_BIT;
-}
+// A fullscreen triangle (shaders/fullscreen.vert) with `fragment`: tonemap, skybox, depth
+// resolve. A colour and/or a depth attachment, at `samples`.
+struct FullscreenPipeline {
+    const char* fragment = nullptr;  // shader path under the shader root
+    VkFormat color = VK_FORMAT_UNDEFINED;
+    VkFormat depth = VK_FORMAT_UNDEFINED;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    const char* name = "";
+};
+ShaderStages compile_fullscreen(shader::Compiler& compiler, const char* fragment);
+vk::Pipeline create_fullscreen(vk::Context& context, const FullscreenPipeline& pipeline,
+                               const ShaderStages& stages);
+
 // A colour attachment that resolves (AVERAGE) into `resolve` at the end of the rendering.
 VkRenderingAttachmentInfo resolving_color_attachment(VkImageView msaa, VkImageView resolve,
                                                      VkAttachmentLoadOp load,
                                                      VkAttachmentStoreOp store,
                                                      std::array<float, 4> clear = {});
 
+// Why a pass that needs the prepass's depth and normals (gtao and its filters, contact
+// shadows) is not in the frame: "<knob>=off", or "prepass off" when the knob is on.
+std::string off_or_without_prepass(const FrameInputs& in, const char* knob);
+
+// The resolve mode that keeps the nearest depth (reverse-Z: MAX, else MIN) when `report`
+// offers it; NONE otherwise (then the depth_resolve pass resolves in a shader).
+VkResolveModeFlagBits native_depth_resolve(const vk::DeviceReport& report, bool reverse_z);
+// What the report says: "native-max", "native-min" or "shader".
+const char* depth_resolve_name(const vk::DeviceReport& report, bool reverse_z);
+
 // Count images (shaders/common/count.glsl, set 3): R32_UINT, one per counting pass.
 inline constexpr VkFormat kCountFormat = VK_FORMAT_R32_UINT;
 inline constexpr uint32_t kCountSet = 3;
 vk::DescriptorSetLayout create_count_set_layout(vk::Context& context);
-// Declares what clear_counts() and the counting fragment shader do to `counts`.
+// Declares what the counting fragment shader does to `counts` (clear_counts zeroed it first).
 void declare_counts(graph::PassBuilder& builder, graph::ImageHandle counts);
-// Zeroes the image (in the pass's GENERAL layout) and makes the zeros visible to the
-// fragment shader's atomics: a dependency inside the pass, which the graph cannot see.
-void clear_counts(VkCommandBuffer cmd, VkImage image);
 void write_count_set(VkDevice device, VkDescriptorSet set, VkImageView view);
 
 }  // namespace ds::passes

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "renderer/gpu_scene.h"
+#include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/vk/functions.h"
 
 namespace ds::passes {

@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "renderer/gpu_scene.h"
+#include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/passes/scene_draw.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/context.h"
@@ -19,34 +19,40 @@ using scene::AlphaMode;
 
 ShadowPass::ShadowPass(const PassServices& services)
     : services_(services),
-      pipelines_([this](uint32_t key) { return compile(key); },
-                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }) {
+      pipelines_([this](const Variant& v) { return compile(v); },
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "shadow layout");
-    pipelines_.get(kOpaque);  // shader errors surface at start-up, not in the first frame
+    pipelines_.get({.mask = false});  // shader errors surface at start-up, not in the first frame
 }
 
 void ShadowPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
 }
 
-ShaderStages ShadowPass::compile(uint32_t key) const {
+ShaderStages ShadowPass::compile(const Variant& v) const {
     ShaderStages s;
     s.vert = services_.compiler.compile("shadow.vert", shader::Stage::Vertex).spirv;
-    if (key == kMask)
+    if (v.mask)
         s.frag = services_.compiler.compile("shadow.frag", shader::Stage::Fragment).spirv;
     return s;
 }
 
-vk::Pipeline ShadowPass::create(uint32_t key, const ShaderStages& s) const {
+vk::Pipeline ShadowPass::create(const Variant& v, const ShaderStages& s) const {
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag, VertexInputs::PositionUv)
         .depth_attachment(services_.depth_format)
-        .build(services_.context, key == kMask ? "shadow mask" : "shadow opaque");
+        .build(services_.context, v.mask ? "shadow mask" : "shadow opaque");
+}
+
+std::optional<std::string> ShadowPass::skipped(const FrameInputs& in) const {
+    if (in.options.shadows) return std::nullopt;
+    return "shadows=off";
 }
 
 void ShadowPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
-    const VkPipeline opaque = pipelines_.get(kOpaque);
-    const VkPipeline mask = pipelines_.get(kMask);
+    if (!in.options.shadows) return;
+    const VkPipeline opaque = pipelines_.get({.mask = false});
+    const VkPipeline mask = pipelines_.get({.mask = true});
     struct Data {
         FrameInputs in;
         graph::ImageHandle map;

@@ -12,6 +12,7 @@
 
 #include "renderer/graph/graph.h"
 #include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/scene/scene.h"
 #include "renderer/vk/destroy_list.h"
@@ -19,7 +20,7 @@
 
 namespace ds::passes {
 
-class ShadowPass {
+class ShadowPass final : public FramePass {
   public:
     static constexpr const char* kName = "shadow";
     // 2048^2 costs lavapipe a few ms at most (the atrium: ~40 m across, 2 cm texels).
@@ -28,24 +29,30 @@ class ShadowPass {
     explicit ShadowPass(const PassServices& services);
 
     // Fail-safe: all stages compile first; on an error the current pipelines stay.
-    void rebuild_pipelines(vk::DestroyList& retired);
+    const char* name() const override { return kName; }
+    void rebuild_pipelines(vk::DestroyList& retired) override;
+    std::optional<std::string> skipped(const FrameInputs& in) const override;
     // Creates res.shadow_map and draws into it.
-    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
 
     // World -> shadow clip space: looking along -to_sun, x/y/depth spanning the bounds
     // (a little padded), depth 0 nearest the sun.
     static glm::mat4 fit_sun(const scene::Bounds& bounds, glm::vec3 to_sun);
 
   private:
-    enum Variant : uint32_t { kOpaque = 0, kMask = 1 };
-    ShaderStages compile(uint32_t key) const;
-    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+    struct Variant {
+        bool mask = false;  // MASK materials: the alpha test (a fragment shader); else depth only
+        bool operator==(const Variant&) const = default;
+        size_t hash() const { return hash_fields(mask); }
+    };
+    ShaderStages compile(const Variant& variant) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
     void record(VkCommandBuffer cmd, VkImageView map, const FrameInputs& in, VkPipeline opaque,
                 VkPipeline mask) const;
 
     PassServices services_;
     vk::PipelineLayout layout_;
-    PipelineVariants pipelines_;
+    PipelineVariants<Variant> pipelines_;
 };
 
 }  // namespace ds::passes

@@ -10,35 +10,40 @@ using graph::Access;
 
 SkyboxPass::SkyboxPass(const PassServices& services)
     : services_(services),
-      pipelines_([this](uint32_t key) { return compile(key); },
-                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }) {
+      pipelines_([this](const SampleVariant& v) { return compile(v); },
+                 [this](const SampleVariant& v, const ShaderStages& s) { return create(v, s); }) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "skybox layout");
-    pipelines_.get(0);
+    pipelines_.get({});
 }
 
 void SkyboxPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
 }
 
-ShaderStages SkyboxPass::compile(uint32_t) const {
-    return {services_.compiler.compile("fullscreen.vert", shader::Stage::Vertex).spirv,
-            services_.compiler.compile("skybox.frag", shader::Stage::Fragment).spirv};
+ShaderStages SkyboxPass::compile(const SampleVariant&) const {
+    return compile_fullscreen(services_.compiler, "skybox.frag");
 }
 
-vk::Pipeline SkyboxPass::create(uint32_t key, const ShaderStages& s) const {
-    vk::GraphicsPipelineBuilder b;
-    return b.shader(VK_SHADER_STAGE_VERTEX_BIT, s.vert)
-        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, s.frag)
-        .color_attachment(VK_FORMAT_R16G16B16A16_SFLOAT)
-        .depth_attachment(services_.depth_format)
-        .samples(key_samples(key))
-        .layout(layout_.handle())
-        .build(services_.context, "skybox");
+vk::Pipeline SkyboxPass::create(const SampleVariant& v, const ShaderStages& s) const {
+    return create_fullscreen(services_.context,
+                             {.fragment = "skybox.frag",
+                              .color = kHdrFormat,
+                              .depth = services_.depth_format,
+                              .samples = v.samples,
+                              .layout = layout_.handle(),
+                              .name = "skybox"},
+                             s);
+}
+
+std::optional<std::string> SkyboxPass::skipped(const FrameInputs& in) const {
+    if (in.options.sky) return std::nullopt;
+    return "sky=off";
 }
 
 void SkyboxPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
-    const VkPipeline pipeline = pipelines_.get(samples_key(in.options.samples));
+    if (!in.options.sky) return;
+    const VkPipeline pipeline = pipelines_.get({in.options.samples});
     // msaa > 1: into the multisampled colour, against the multisampled depth, before
     // transparent resolves: a silhouette pixel's sky samples blend with its surface samples.
     const bool msaa = in.options.msaa();

@@ -9,29 +9,32 @@
 
 #include "renderer/graph/graph.h"
 #include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
 
 namespace ds::passes {
 
-class SkyboxPass {
+class SkyboxPass final : public FramePass {
   public:
     static constexpr const char* kName = "skybox";
 
     explicit SkyboxPass(const PassServices& services);
 
-    void rebuild_pipelines(vk::DestroyList& retired);
+    const char* name() const override { return kName; }
+    void rebuild_pipelines(vk::DestroyList& retired) override;
+    std::optional<std::string> skipped(const FrameInputs& in) const override;
     // Reads res.depth (read-only attachment), draws into res.hdr.
-    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
 
   private:
-    ShaderStages compile(uint32_t key) const;
-    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+    ShaderStages compile(const SampleVariant& variant) const;
+    vk::Pipeline create(const SampleVariant& variant, const ShaderStages& stages) const;
 
     PassServices services_;
     vk::PipelineLayout layout_;
-    PipelineVariants pipelines_;
+    PipelineVariants<SampleVariant> pipelines_;
 };
 
 }  // namespace ds::passes

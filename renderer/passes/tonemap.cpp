@@ -16,37 +16,36 @@ const VkDescriptorPoolSize kPoolSizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SA
 TonemapPass::TonemapPass(const PassServices& services)
     : services_(services),
       sets_(services.context, 1, kPoolSizes, "tonemap sets"),
-      pipelines_([this](uint32_t key) { return compile(key); },
-                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }) {
+      pipelines_([this](const NoVariant& v) { return compile(v); },
+                 [this](const NoVariant& v, const ShaderStages& s) { return create(v, s); }) {
     const VkDescriptorSetLayoutBinding hdr = vk::layout_binding(
         0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT);
     hdr_layout_ = vk::DescriptorSetLayout(services.context, {&hdr, 1}, "tonemap set layout");
     const VkDescriptorSetLayout sets[] = {services.frame_layout, hdr_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "tonemap layout");
     nearest_ = vk::nearest_clamp_sampler(services.context, "tonemap nearest");
-    pipelines_.get(0);
+    pipelines_.get({});
 }
 
 void TonemapPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
 }
 
-ShaderStages TonemapPass::compile(uint32_t) const {
-    return {services_.compiler.compile("fullscreen.vert", shader::Stage::Vertex).spirv,
-            services_.compiler.compile("tonemap.frag", shader::Stage::Fragment).spirv};
+ShaderStages TonemapPass::compile(const NoVariant&) const {
+    return compile_fullscreen(services_.compiler, "tonemap.frag");
 }
 
-vk::Pipeline TonemapPass::create(uint32_t, const ShaderStages& s) const {
-    vk::GraphicsPipelineBuilder b;
-    return b.shader(VK_SHADER_STAGE_VERTEX_BIT, s.vert)
-        .shader(VK_SHADER_STAGE_FRAGMENT_BIT, s.frag)
-        .color_attachment(kFinalFormat)
-        .layout(layout_.handle())
-        .build(services_.context, "tonemap");
+vk::Pipeline TonemapPass::create(const NoVariant&, const ShaderStages& s) const {
+    return create_fullscreen(services_.context,
+                             {.fragment = "tonemap.frag",
+                              .color = kFinalFormat,
+                              .layout = layout_.handle(),
+                              .name = "tonemap"},
+                             s);
 }
 
 void TonemapPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
-    const VkPipeline pipeline = pipelines_.get(0);
+    const VkPipeline pipeline = pipelines_.get({});
     struct Data {
         FrameInputs in;
         FrameResources res;

@@ -8,6 +8,7 @@
 
 #include "renderer/graph/graph.h"
 #include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
@@ -16,27 +17,28 @@
 
 namespace ds::passes {
 
-class TonemapPass {
+class TonemapPass final : public FramePass {
   public:
     static constexpr const char* kName = "tonemap";
-    static constexpr VkFormat kFinalFormat = VK_FORMAT_R8G8B8A8_SRGB;
+    static constexpr VkFormat kFinalFormat = passes::kFinalFormat;
 
     explicit TonemapPass(const PassServices& services);
 
-    void rebuild_pipelines(vk::DestroyList& retired);
+    const char* name() const override { return kName; }
+    void rebuild_pipelines(vk::DestroyList& retired) override;
     // Samples res.hdr, writes res.final_image (both provided).
-    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
 
   private:
-    ShaderStages compile(uint32_t key) const;
-    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+    ShaderStages compile(const NoVariant& variant) const;
+    vk::Pipeline create(const NoVariant& variant, const ShaderStages& stages) const;
 
     PassServices services_;
     vk::DescriptorSetLayout hdr_layout_;
     vk::PipelineLayout layout_;
     FrameDescriptorPool sets_;
     vk::Sampler nearest_;
-    PipelineVariants pipelines_;
+    PipelineVariants<NoVariant> pipelines_;
 };
 
 }  // namespace ds::passes

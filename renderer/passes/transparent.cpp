@@ -1,8 +1,10 @@
 #include "renderer/passes/transparent.h"
 
+#include "renderer/readback/host_readback.h"
+
 #include <vector>
 
-#include "renderer/gpu_scene.h"
+#include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/passes/scene_draw.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/context.h"
@@ -21,36 +23,36 @@ TransparentPass::TransparentPass(const PassServices& services)
       lighting_(services.context, services.depth_format),
       count_layout_(create_count_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "transparent count sets"),
-      pipelines_([this](uint32_t key) { return compile(key); },
-                 [this](uint32_t key, const ShaderStages& s) { return create(key, s); }) {
+      pipelines_([this](const Variant& v) { return compile(v); },
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           lighting_.layout(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "transparent layout");
-    pipelines_.get(0);
+    pipelines_.get({});
 }
 
 void TransparentPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
 }
 
-ShaderStages TransparentPass::compile(uint32_t key) const {
+ShaderStages TransparentPass::compile(const Variant& v) const {
     std::vector<shader::Define> defines;
-    if (key & kCounting) defines.push_back({"COUNT_FRAGMENTS", "1"});
+    if (v.counting) defines.push_back({"COUNT_FRAGMENTS", "1"});
     return {services_.compiler.compile("transparent.vert", shader::Stage::Vertex).spirv,
             services_.compiler.compile("transparent.frag", shader::Stage::Fragment, defines).spirv};
 }
 
-vk::Pipeline TransparentPass::create(uint32_t key, const ShaderStages& s) const {
+vk::Pipeline TransparentPass::create(const Variant& v, const ShaderStages& s) const {
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
-        .color_attachment(VK_FORMAT_R16G16B16A16_SFLOAT, vk::Blend::Alpha)
+        .color_attachment(kHdrFormat, vk::Blend::Alpha)
         .depth_attachment(services_.depth_format)
-        .samples(key_samples(key))
+        .samples(v.samples)
         .build(services_.context, "transparent");
 }
 
 void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
-    const VkPipeline pipeline = pipelines_.get((res.transparent_counts.valid() ? kCounting : 0u) |
-                                               samples_key(in.options.samples));
+    const VkPipeline pipeline =
+        pipelines_.get({.counting = res.transparent_counts.valid(), .samples = in.options.samples});
     // No prepass normal or roughness: BLEND surfaces are not in the prepass.
     const LightingInputs lighting = {.shadow_map = res.shadow_map,
                                      .normals = {},
@@ -86,13 +88,16 @@ void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
         });
 }
 
+void TransparentPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
+    if (!own.empty()) own[0].shaded_fragments = c.readback.u32_sum(c.res.transparent_counts);
+}
+
 void TransparentPass::record(graph::PassContext& ctx, const FrameInputs& in,
                              const FrameResources& res, const LightingInputs& lighting,
                              VkPipeline pipeline) {
     VkCommandBuffer cmd = ctx.cmd();
     VkDescriptorSet counts = VK_NULL_HANDLE;
     if (res.transparent_counts.valid()) {
-        clear_counts(cmd, ctx.image(res.transparent_counts));
         counts = count_sets_.allocate(in.frame_number, count_layout_.handle());
         write_count_set(services_.context.device(), counts, ctx.view(res.transparent_counts));
     }

@@ -15,6 +15,7 @@
 
 #include "renderer/graph/graph.h"
 #include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
 #include "renderer/passes/lighting_set.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/vk/descriptors.h"
@@ -23,22 +24,30 @@
 
 namespace ds::passes {
 
-class TransparentPass {
+class TransparentPass final : public FramePass {
   public:
     static constexpr const char* kName = "transparent";
 
     explicit TransparentPass(const PassServices& services);
 
-    void rebuild_pipelines(vk::DestroyList& retired);
+    const char* name() const override { return kName; }
+    void rebuild_pipelines(vk::DestroyList& retired) override;
+    // shaded_fragments from res.transparent_counts.
+    void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
     // Reads res.depth (read-only attachment), res.shadow_map, res.ao, res.contact_shadows
     // where valid; blends into res.hdr. Counts into res.transparent_counts when valid.
-    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res);
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
 
   private:
-    static constexpr uint32_t kCounting = 1;  // variant key, with samples_key() (bits 8-15)
+    struct Variant {
+        bool counting = false;  // COUNT_FRAGMENTS=1
+        VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+        bool operator==(const Variant&) const = default;
+        size_t hash() const { return hash_fields(counting, int(samples)); }
+    };
 
-    ShaderStages compile(uint32_t key) const;
-    vk::Pipeline create(uint32_t key, const ShaderStages& stages) const;
+    ShaderStages compile(const Variant& variant) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
     void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
                 const LightingInputs& lighting, VkPipeline pipeline);
 
@@ -47,7 +56,7 @@ class TransparentPass {
     vk::DescriptorSetLayout count_layout_;
     vk::PipelineLayout layout_;
     FrameDescriptorPool count_sets_;
-    PipelineVariants pipelines_;
+    PipelineVariants<Variant> pipelines_;
 };
 
 }  // namespace ds::passes

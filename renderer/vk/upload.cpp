@@ -171,4 +171,30 @@ void UploadBatch::submit() {
     staging_.clear();
 }
 
+void clear_image_once(Context& context, const Image& image, const VkClearValue& value) {
+    const VkImageAspectFlags aspect = image.aspect();
+    context.submit_once([&](VkCommandBuffer cmd) {
+        ImageBarrier b{.image = image.handle(),
+                       .aspect = aspect,
+                       .new_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                       .dst_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                       .dst_access = VK_ACCESS_2_TRANSFER_WRITE_BIT};
+        image_barrier(cmd, b);
+        const VkImageSubresourceRange range{aspect, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
+        if (aspect & VK_IMAGE_ASPECT_COLOR_BIT)
+            vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                 &value.color, 1, &range);
+        else
+            vkCmdClearDepthStencilImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                        &value.depthStencil, 1, &range);
+        b.old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        b.new_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        b.src_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT;
+        b.src_access = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        b.dst_stage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+        b.dst_access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+        image_barrier(cmd, b);
+    });
+}
+
 }  // namespace ds::vk

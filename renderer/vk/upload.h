@@ -47,6 +47,11 @@ class UploadBatch {
     std::vector<std::function<void(VkCommandBuffer)>> commands_;
 };
 
+// Set-up, outside any frame: clears every texel of `image` (colour or depth, TRANSFER_DST
+// usage) to `value`, submits and waits; ends in SHADER_READ_ONLY_OPTIMAL for fragment reads.
+// For constant images such as a pass's fallback inputs.
+void clear_image_once(Context& context, const Image& image, const VkClearValue& value);
+
 // Records a blit chain from level 0 (in TRANSFER_DST) to every level; ends every level in
 // SHADER_READ_ONLY_OPTIMAL.
 void record_blit_mips(VkCommandBuffer cmd, const Image& image);

@@ -14,9 +14,11 @@ const std::vector<std::string> kAllPasses = {
     "shadow",          "depth_prepass", "gtao",   "ao_spatial",  "ao_temporal",
     "contact_shadows", "forward",       "skybox", "transparent", "tonemap"};
 
+// The frame's own passes (kind "frame": no clear or read-back), in execution order.
 std::vector<std::string> pass_names(const nlohmann::json& passes) {
     std::vector<std::string> names;
-    for (const auto& p : passes) names.push_back(p["name"].get<std::string>());
+    for (const auto& p : passes)
+        if (p["kind"] == "frame") names.push_back(p["name"].get<std::string>());
     return names;
 }
 

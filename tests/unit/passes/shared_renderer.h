@@ -19,10 +19,11 @@ inline Settings settings_of(const std::vector<std::string>& assignments) {
     return settings;
 }
 
-// Pass names of a frame, in execution order.
+// Names of the frame's own passes (role frame: no clear or read-back), in execution order.
 inline std::vector<std::string> names(const FrameResult& f) {
     std::vector<std::string> out;
-    for (const PassResult& p : f.passes) out.push_back(p.name);
+    for (const PassResult& p : f.passes)
+        if (p.role == graph::PassRole::Frame) out.push_back(p.name);
     return out;
 }
 

@@ -104,7 +104,12 @@ TEST_F(Msaa, FourSamplesAndSwitchingAreValidationClean) {
         ASSERT_TRUE(four.msaa.edge_pixels);
         EXPECT_GT(*four.msaa.edge_pixels, 0u);
         EXPECT_LT(*four.msaa.edge_pixels, uint64_t(kWidth) * kHeight);
-        EXPECT_EQ(names(four), names(one)) << "msaa adds no pass";
+        // msaa adds no pass of its own but the shader depth resolve where the device has no
+        // native nearest-sample resolve (lavapipe).
+        std::vector<std::string> expected = names(one);
+        if (four.msaa.depth_resolve == "shader")
+            expected.insert(expected.begin() + 2, "depth_resolve");
+        EXPECT_EQ(names(four), expected);
         EXPECT_LT(differing_pixels(one, again, 8), size_t(kWidth) * kHeight / 100);
         EXPECT_EQ(renderer_->validation_message_count(), 0u);
     }

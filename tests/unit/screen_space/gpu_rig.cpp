@@ -113,6 +113,7 @@ GpuRig::GpuRig() {
     // No disk cache: the tests compile what is in the tree, every time.
     compiler_ = std::make_unique<shader::Compiler>(shader::Compiler::default_shader_root(),
                                                    std::filesystem::path());
+    readback_ = std::make_unique<HostReadback>(*context_);
     const VkDescriptorSetLayoutBinding binding = vk::layout_binding(
         0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT);
@@ -129,7 +130,8 @@ GpuRig::GpuRig() {
 }
 
 passes::PassServices GpuRig::services() {
-    return {*context_, *compiler_, frame_layout_.handle(), VK_NULL_HANDLE, VK_FORMAT_D32_SFLOAT};
+    return {*context_,           *compiler_, frame_layout_.handle(), VK_NULL_HANDLE,
+            VK_FORMAT_D32_SFLOAT, *readback_};
 }
 
 void GpuRig::upload(const SyntheticFrame& frame) {

@@ -12,6 +12,7 @@
 
 #include "renderer/graph/graph.h"
 #include "renderer/passes/frame.h"
+#include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/context.h"
@@ -69,6 +70,7 @@ class GpuRig {
 
     std::unique_ptr<vk::Context> context_;
     std::unique_ptr<shader::Compiler> compiler_;
+    std::unique_ptr<HostReadback> readback_;  // PassServices needs one; no pass here reads back
     vk::DescriptorSetLayout frame_layout_;
     vk::DescriptorPool frame_pool_;
     VkDescriptorSet frame_set_ = VK_NULL_HANDLE;

@@ -1,4 +1,4 @@
-#include "renderer/gpu_scene.h"
+#include "renderer/gpu_scene/gpu_scene.h"
 
 #include <algorithm>
 #include <cmath>

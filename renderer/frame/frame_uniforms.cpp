@@ -1,4 +1,4 @@
-#include "renderer/frame_uniforms.h"
+#include "renderer/frame/frame_uniforms.h"
 
 #include <cmath>
 

@@ -1,0 +1,60 @@
+#pragma once
+// The images a frame hands to the graph from outside, because they outlive one frame's
+// transients at a fixed size: the final image (tonemap writes it), the scene depth, with
+// count_fragments=on the three count images, and with msaa > 1 the multisampled depth and
+// HDR colour. The read-back passes copy or probe them inside the graph (HostReadback); each
+// import's final state is what those passes leave, so a frame that reads nothing back ends
+// in the same states.
+#include <array>
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/graph/graph.h"
+#include "renderer/passes/frame.h"
+#include "renderer/vk/destroy_list.h"
+#include "renderer/vk/image.h"
+
+namespace ds::vk {
+class Context;
+}
+
+namespace ds {
+
+class FrameTargets {
+  public:
+    FrameTargets(vk::Context& context, VkFormat final_format, VkFormat depth_format,
+                 VkFormat hdr_format);
+
+    // (Re)creates what this frame needs at `size` and `samples`; replaced images go to
+    // `retired` (an earlier frame may still use them).
+    void ensure(VkExtent2D size, bool counts, VkSampleCountFlagBits samples,
+                vk::DestroyList& retired);
+    // Imports the final image, the depth, the multisampled images (msaa > 1) and, with
+    // counting on, a count image for each counting pass that runs. Fills res.final_image,
+    // res.depth, res.msaa_* and res.*_counts.
+    void import(graph::RenderGraph& graph, const passes::FrameOptions& options,
+                passes::FrameResources& res);
+
+    // Releases everything (teardown, device idle).
+    void reset();
+
+  private:
+    vk::Image make_image(VkFormat format, VkImageUsageFlags usage, const char* name) const;
+    void ensure_msaa(VkSampleCountFlagBits samples, vk::DestroyList& retired);
+    void retire_all(vk::DestroyList& retired);
+
+    vk::Context& context_;
+    VkFormat final_format_;
+    VkFormat depth_format_;
+    VkFormat hdr_format_;
+    VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
+    VkExtent2D size_{0, 0};
+    vk::Image final_;
+    vk::Image depth_;
+    std::array<vk::Image, 3> counts_;  // prepass, forward, transparent; until count_fragments
+    vk::Image msaa_depth_;             // msaa > 1 only
+    vk::Image msaa_hdr_;
+};
+
+}  // namespace ds

@@ -1,0 +1,20 @@
+#pragma once
+// clear_counts (clear role; count_fragments=on): zeroes the u32 count images the counting
+// passes (depth_prepass, forward, transparent) add into, first in the frame, so the graph
+// plans the transfer-to-shader dependency like any other instead of a barrier inside each
+// counting pass.
+#include "renderer/passes/frame_pass.h"
+
+namespace ds::passes {
+
+class ClearCountsPass final : public FramePass {
+  public:
+    explicit ClearCountsPass(const PassServices&) {}
+
+    const char* name() const override { return "clear_counts"; }
+    graph::PassRole role() const override { return graph::PassRole::Clear; }
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
+    void rebuild_pipelines(vk::DestroyList&) override {}
+};
+
+}  // namespace ds::passes

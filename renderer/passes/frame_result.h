@@ -1,0 +1,118 @@
+#pragma once
+// What a frame gives back (FrameResult and its parts) and what a caller may ask of it
+// (ReadBack, InspectRequest). Plain data, below the passes: each pass fills its own part
+// after the frame's fence (FramePass::collect), the facade returns it.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/graph/types.h"
+
+namespace ds {
+
+// One pass of a frame, as measured by the GPU.
+struct PassResult {
+    std::string name;
+    // What the pass is for: the frame's own work, a clear, or a read-back to the host
+    // (graph::PassRole); reports and the Passes panel group by it.
+    graph::PassRole role = graph::PassRole::Frame;
+    double gpu_ms = 0;  // from two timestamps around the pass
+    // Pipeline statistics (0 without the device feature). Lavapipe counts fragment shader
+    // invocations per rasterized 4x4 block before the depth test: not what a prepass saves.
+    uint64_t vertex_shader_invocations = 0;
+    uint64_t fragment_shader_invocations = 0;
+    uint64_t clipping_primitives = 0;
+    // count_fragments=on (depth_prepass, forward, transparent): fragments that really ran
+    // the fragment shader after the depth and alpha tests, summed from a per-pixel u32 image.
+    // Exact for shaders without discard (early fragment tests); a pipeline with discard
+    // counts after the discard, and its late depth test may still reject the fragment.
+    std::optional<uint64_t> shaded_fragments;
+    // The graph resources the pass declared, by name, in declaration order.
+    std::vector<std::string> reads, writes;
+};
+
+// One resource of the frame's graph (the inspector's Resources panel).
+struct ResourceSummary {
+    std::string name;
+    bool is_image = true;
+    VkFormat format = VK_FORMAT_UNDEFINED;  // images
+    uint32_t width = 0, height = 0, samples = 1;
+    graph::Semantic semantic = graph::Semantic::Other;
+    graph::Lifetime lifetime = graph::Lifetime::Transient;
+    uint64_t bytes = 0;  // buffers
+};
+
+// msaa: how the frame was multisampled.
+struct MsaaResult {
+    uint32_t samples = 1;
+    std::string depth_resolve;  // msaa > 1: "native-max" | "native-min" | "shader"; else ""
+    // msaa > 1 and read back: pixels whose HDR colour samples are not all equal (after
+    // transparent, before the resolve); exact, counted by a compute pass over every sample.
+    std::optional<uint64_t> edge_pixels;
+    // ReadBack::WithMsaaDepth, msaa > 1 and a D32 depth only: every depth sample (per pixel,
+    // `samples` consecutive, row 0 = top) and the resolved depth (one per pixel).
+    std::vector<float> depth_samples;
+    std::vector<float> resolved_depth;
+};
+
+// count_discards=on: fragments that ran the depth prepass's alpha-tested pipeline (the MASK one;
+// masked_split=off: the one for all geometry), and how many of them it discarded. Exact
+// (shader atomics; helper invocations do not count).
+struct DiscardCounts {
+    uint64_t invoked = 0;
+    uint64_t discarded = 0;
+};
+
+// One graph image as the frame's `inspect` pass read it (Renderer::render's `inspect`): every
+// texel as the four floats a shader sampling it sees (depth in r; u32 counts converted to
+// float in r, exact below 2^24; UNORM formats in 0..1; HDR as stored), row 0 = top. A
+// multisampled image is read at one sample. The camera's depth range comes with it so a
+// viewer can linearise depth.
+struct InspectedImage {
+    std::string name;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    graph::Semantic semantic = graph::Semantic::Other;
+    uint32_t width = 0, height = 0;
+    uint32_t samples = 1;       // of the resource
+    uint32_t sample = 0;        // the sample that was read
+    std::vector<float> texels;  // width * height * 4
+    float znear = 0.1f, zfar = 1000.0f;
+    bool reverse_z = true;
+};
+
+struct FrameResult {
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgba8;      // final image, sRGB-encoded, tightly packed, top row first;
+                                     // empty when the frame was rendered without read-back
+    std::vector<PassResult> passes;  // in execution order
+    double gpu_ms = 0;               // first pass start to last pass end, from timestamps
+    double cpu_ms = 0;               // host time to record and submit the frame (not the wait)
+    // Pixels some surface covers: depth differs from "far" after the prepass (or forward).
+    // Read back with the image, or with count_fragments=on; none for ReadBack::No otherwise.
+    std::optional<uint64_t> covered_pixels;
+    std::vector<std::string> skipped;  // "gtao: skipped (prepass off)", in pass order
+    MsaaResult msaa;
+    std::optional<DiscardCounts> masked_discards;  // count_discards=on with the prepass
+    // Every resource of the frame's graph, in creation order (the inspect pass's own target
+    // left out).
+    std::vector<ResourceSummary> resources;
+    // InspectRequest: the image as read; none when the frame has no image of that name (its
+    // pass is off) or nothing was asked.
+    std::optional<InspectedImage> inspected;
+};
+
+// Read back one graph image by name at the end of the frame ("final": the tonemapped image;
+// any other: a compute pass "inspect" samples it, so it appears last in FrameResult::passes).
+struct InspectRequest {
+    std::string resource;  // "" = none
+    uint32_t sample = 0;   // multisampled images
+};
+
+// Benchmarks skip the copy to host memory; WithMsaaDepth is Yes plus MsaaResult's depth.
+// Color reads back the final image only (no covered pixels, no MSAA probe: the inspector).
+enum class ReadBack { Yes, No, WithMsaaDepth, Color };
+
+}  // namespace ds

@@ -1,0 +1,114 @@
+#include "renderer/passes/msaa_probe.h"
+
+#include <cstring>
+
+#include "renderer/passes/compute_kernel.h"
+#include "renderer/readback/host_readback.h"
+#include "renderer/shader/compiler.h"
+#include "renderer/vk/context.h"
+
+namespace ds::passes {
+namespace {
+
+constexpr VkDeviceSize kHeaderBytes = 16;  // edge_pixels + padding (std430 array alignment)
+
+struct Push {
+    uint32_t width, height;
+    int32_t samples, copy_depth;
+};
+
+}  // namespace
+
+MsaaProbePass::MsaaProbePass(const PassServices& services)
+    : services_(services), nearest_(vk::nearest_clamp_sampler(services.context, "msaa probe")) {
+    vk::Context& context = services.context;
+    const VkDescriptorSetLayoutBinding bindings[] = {
+        vk::layout_binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                           VK_SHADER_STAGE_COMPUTE_BIT),
+        vk::layout_binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                           VK_SHADER_STAGE_COMPUTE_BIT),
+        vk::layout_binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT)};
+    set_layout_ = vk::DescriptorSetLayout(context, bindings, "msaa probe set");
+    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2},
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+    pool_ = vk::DescriptorPool(context, 1, sizes, "msaa probe");
+    set_ = pool_.allocate(set_layout_.handle());
+    const VkDescriptorSetLayout sets[] = {set_layout_.handle()};
+    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(Push)};
+    layout_ = vk::PipelineLayout(context, sets, {&push, 1}, "msaa probe layout");
+}
+
+void MsaaProbePass::build(vk::DestroyList& retired) {
+    vk::Pipeline pipeline = vk::create_compute_pipeline(
+        services_.context, layout_.handle(),
+        services_.compiler.compile("msaa_probe.comp", shader::Stage::Compute).spirv, "msaa probe");
+    if (pipeline_) retired.defer(std::move(pipeline_));
+    pipeline_ = std::move(pipeline);
+}
+
+void MsaaProbePass::rebuild_pipelines(vk::DestroyList& retired) {
+    if (pipeline_) build(retired);  // fail-safe: the old one stays if this throws
+}
+
+void MsaaProbePass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
+    out_ = {};
+    const bool full = in.read_back == ReadBack::Yes || in.read_back == ReadBack::WithMsaaDepth;
+    if (!in.options.msaa() || !full) return;  // the exact count reads every sample: costly
+    if (!pipeline_) {
+        vk::DestroyList nothing_in_flight;
+        build(nothing_in_flight);
+    }
+    const bool copy_depth = in.read_back == ReadBack::WithMsaaDepth;
+    const VkExtent2D extent = graph.resources()[res.msaa_depth.index].extent;
+    depth_values_ =
+        copy_depth ? VkDeviceSize(extent.width) * extent.height * uint32_t(in.options.samples) : 0;
+    const graph::BufferHandle out = services_.readback.import_storage(
+        graph, "msaa_probe", kHeaderBytes + depth_values_ * sizeof(float), kHeaderBytes);
+    out_ = out;
+    const graph::ImageHandle depth = res.msaa_depth, color = res.msaa_hdr;
+    const int32_t samples = int32_t(in.options.samples);
+    graph.add_pass(
+        name(),
+        [&](graph::PassBuilder& b) {
+            b.read(depth, graph::Access::Sampled);
+            b.read(color, graph::Access::Sampled);
+            b.write(out, graph::Access::StorageReadWrite);
+            return [this, depth, color, out, samples, copy_depth](graph::PassContext& ctx) {
+                record(ctx, {depth, color, out}, samples, copy_depth);
+            };
+        },
+        graph::PassKind::Compute);
+}
+
+void MsaaProbePass::record(graph::PassContext& ctx, const Bound& bound, int32_t samples,
+                           bool copy_depth) {
+    const auto [depth, color, out] = bound;
+    const VkExtent2D extent = ctx.extent(depth);
+    vk::DescriptorWriter writer;
+    writer.image(0, ctx.view(depth), nearest_.handle(), ctx.layout(depth))
+        .image(1, ctx.view(color), nearest_.handle(), ctx.layout(color))
+        .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ctx.buffer(out));
+    writer.update(services_.context.device(), set_);
+    VkCommandBuffer cmd = ctx.cmd();
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.handle());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle(), 0, 1, &set_, 0,
+                            nullptr);
+    const Push push{extent.width, extent.height, samples,
+                    copy_depth ? 1 : 0};
+    vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdDispatch(cmd, group_count(extent.width), group_count(extent.height), 1);
+}
+
+void MsaaProbePass::collect(const FrameCollect& c, std::span<PassResult>, FrameResult& frame) {
+    const std::span<const std::byte> bytes = c.readback.buffer_bytes(out_);
+    if (bytes.size() < kHeaderBytes) return;
+    uint32_t edges = 0;
+    std::memcpy(&edges, bytes.data(), sizeof edges);
+    frame.msaa.edge_pixels = edges;
+    frame.msaa.depth_samples.resize(depth_values_);
+    if (depth_values_)
+        std::memcpy(frame.msaa.depth_samples.data(), bytes.data() + kHeaderBytes,
+                    depth_values_ * sizeof(float));
+}
+
+}  // namespace ds::passes

@@ -1,0 +1,92 @@
+#pragma once
+// A pass's pipelines by variant: a small value type per pass (its defines and state, with ==
+// and hash()), each pipeline built on first use, so a variant no frame asks for (the counting
+// ones, invariant=off, another sample count) costs nothing, and switching back costs nothing
+// after the first frame of each. rebuild() is fail-safe: every stage of every built variant
+// compiles first (a shader::ShaderError leaves the current pipelines in place), then the
+// pipelines are created, and only then are the old ones retired.
+#include <concepts>
+#include <cstddef>
+#include <functional>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/vk/destroy_list.h"
+#include "renderer/vk/pipeline.h"
+
+namespace ds::passes {
+
+// SPIR-V of one pipeline's stages; an empty fragment stage means depth only.
+struct ShaderStages {
+    std::vector<uint32_t> vert;
+    std::vector<uint32_t> frag;
+};
+
+// Mixes the fields of a variant into one hash (boost's hash_combine).
+template <typename... Fields>
+size_t hash_fields(const Fields&... fields) {
+    size_t seed = 0;
+    ((seed ^= std::hash<Fields>{}(fields) + 0x9e3779b9u + (seed << 6) + (seed >> 2)), ...);
+    return seed;
+}
+
+// The variant of a pass with one pipeline (fullscreen passes at 1x).
+struct NoVariant {
+    bool operator==(const NoVariant&) const = default;
+    size_t hash() const { return 0; }
+};
+
+// The variant of a pass whose pipelines differ only by sample count (msaa).
+struct SampleVariant {
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    bool operator==(const SampleVariant&) const = default;
+    size_t hash() const { return hash_fields(int(samples)); }
+};
+
+template <typename Key>
+concept PipelineKey = requires(const Key& k) {
+    { k == k } -> std::convertible_to<bool>;
+    { k.hash() } -> std::convertible_to<size_t>;
+};
+
+template <PipelineKey Key>
+class PipelineVariants {
+  public:
+    using Compile = std::function<ShaderStages(const Key&)>;
+    using Create = std::function<vk::Pipeline(const Key&, const ShaderStages&)>;
+
+    PipelineVariants(Compile compile, Create create)
+        : compile_(std::move(compile)), create_(std::move(create)) {}
+
+    // Throws shader::ShaderError / ds::Error on the first build of a variant.
+    VkPipeline get(const Key& key) {
+        auto it = pipelines_.find(key);
+        if (it == pipelines_.end()) it = pipelines_.emplace(key, create_(key, compile_(key))).first;
+        return it->second.handle();
+    }
+
+    void rebuild(vk::DestroyList& retired) {
+        std::vector<std::pair<Key, ShaderStages>> stages;
+        for (const auto& entry : pipelines_) stages.emplace_back(entry.first, compile_(entry.first));
+        Map fresh;
+        for (const auto& [key, s] : stages) fresh.emplace(key, create_(key, s));
+        // An in-flight frame may still use the old pipelines.
+        for (auto& entry : pipelines_) retired.defer(std::move(entry.second));
+        pipelines_ = std::move(fresh);
+    }
+
+  private:
+    struct Hash {
+        size_t operator()(const Key& key) const { return key.hash(); }
+    };
+    using Map = std::unordered_map<Key, vk::Pipeline, Hash>;
+
+    Compile compile_;
+    Create create_;
+    Map pipelines_;
+};
+
+}  // namespace ds::passes

@@ -1,0 +1,125 @@
+#include "renderer/passes/readback_copy.h"
+
+#include <bit>
+#include <cstring>
+
+#include "renderer/readback/host_readback.h"
+
+namespace ds::passes {
+namespace {
+
+constexpr const char* kNames[] = {"readback_final", "readback_depth", "readback_counts"};
+
+bool wants_depth(const FrameInputs& in) {
+    return in.read_back == ReadBack::Yes || in.read_back == ReadBack::WithMsaaDepth ||
+           in.options.count_fragments;
+}
+
+// The bits a depth texel holds where nothing was drawn (the clear value "far").
+uint32_t far_bits(VkFormat format, float far_depth) {
+    if (far_depth == 0.0f) return 0u;
+    switch (format) {
+        case VK_FORMAT_D16_UNORM:
+        case VK_FORMAT_D16_UNORM_S8_UINT:
+            return 0xffffu;
+        case VK_FORMAT_D24_UNORM_S8_UINT:
+        case VK_FORMAT_X8_D24_UNORM_PACK32:
+            return 0xffffffu;
+        default:
+            return std::bit_cast<uint32_t>(far_depth);
+    }
+}
+
+bool is_d32(VkFormat format) {
+    return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
+}  // namespace
+
+uint64_t ReadbackCopyPass::covered_texels(std::span<const std::byte> depth, VkFormat format,
+                                          float far_depth) {
+    const uint32_t far = far_bits(format, far_depth);
+    uint64_t covered = 0;
+    if (format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_D16_UNORM_S8_UINT) {
+        for (size_t i = 0; i + 2 <= depth.size(); i += 2) {
+            uint16_t v;
+            std::memcpy(&v, depth.data() + i, 2);
+            covered += v != far;
+        }
+        return covered;
+    }
+    // D24 formats leave the top byte undefined.
+    const bool d24 =
+        format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_X8_D24_UNORM_PACK32;
+    const uint32_t mask = d24 ? 0xffffffu : 0xffffffffu;
+    for (size_t i = 0; i + 4 <= depth.size(); i += 4) {
+        uint32_t v;
+        std::memcpy(&v, depth.data() + i, 4);
+        covered += (v & mask) != far;
+    }
+    return covered;
+}
+
+const char* ReadbackCopyPass::name() const {
+    return kNames[size_t(what_)];
+}
+
+std::vector<graph::ImageHandle> ReadbackCopyPass::images(const FrameInputs& in,
+                                                         const FrameResources& res) const {
+    switch (what_) {
+        case What::Final:
+            if (in.read_back == ReadBack::No) return {};
+            return {res.final_image};
+        case What::Depth:
+            if (!wants_depth(in)) return {};
+            return {res.depth};
+        case What::Counts: {
+            std::vector<graph::ImageHandle> out;
+            for (graph::ImageHandle h :
+                 {res.prepass_counts, res.forward_counts, res.transparent_counts})
+                if (h.valid()) out.push_back(h);
+            return out;
+        }
+    }
+    return {};
+}
+
+void ReadbackCopyPass::add(graph::RenderGraph& graph, const FrameInputs& in,
+                           FrameResources& res) {
+    const std::vector<graph::ImageHandle> sources = images(in, res);
+    if (sources.empty()) return;
+    HostReadback& readback = services_.readback;
+    graph.add_pass(
+        name(),
+        [&](graph::PassBuilder& b) {
+            std::vector<graph::BufferHandle> targets;
+            for (graph::ImageHandle image : sources)
+                targets.push_back(readback.declare_copy(graph, b, image));
+            return [&readback, sources, targets](graph::PassContext& ctx) {
+                for (size_t i = 0; i < sources.size(); ++i)
+                    readback.record_copy(ctx, sources[i], targets[i]);
+            };
+        },
+        graph::PassKind::Transfer);
+}
+
+void ReadbackCopyPass::collect(const FrameCollect& c, std::span<PassResult>, FrameResult& frame) {
+    if (what_ == What::Final) {
+        const std::span<const std::byte> bytes = c.readback.image_bytes(c.res.final_image);
+        frame.rgba8.resize(bytes.size());
+        if (!bytes.empty()) std::memcpy(frame.rgba8.data(), bytes.data(), bytes.size());
+        return;
+    }
+    if (what_ != What::Depth) return;  // count sums are the counting passes' to report
+    const std::span<const std::byte> depth = c.readback.image_bytes(c.res.depth);
+    if (depth.empty()) return;
+    frame.covered_pixels =
+        covered_texels(depth, services_.depth_format, c.in.options.far_depth());
+    if (c.in.read_back == ReadBack::WithMsaaDepth && c.in.options.msaa() &&
+        is_d32(services_.depth_format)) {
+        frame.msaa.resolved_depth.resize(depth.size() / sizeof(float));
+        std::memcpy(frame.msaa.resolved_depth.data(), depth.data(), depth.size());
+    }
+}
+
+}  // namespace ds::passes
