@@ -1,5 +1,5 @@
 // Viewer: the central viewport. Shows the final image or any graph resource decoded by its
-// semantic (ui/decode.h), with the decode controls above and the hover readout below. The
+// semantic (renderer/view), with the decode controls above and the hover readout below. The
 // mouse drives the camera, or with Ctrl (or the "image" mouse mode) zooms and pans the image.
 #include <algorithm>
 #include <cmath>
@@ -8,10 +8,18 @@
 #include <imgui.h>
 
 #include "renderer/graph/names.h"
+#include "renderer/view/decode.h"
+#include "renderer/view/heat.h"
 #include "ui/panels/panels.h"
 
 namespace ds::ui {
 namespace {
+
+using view::count_legend;
+using view::DecodedView;
+using view::DepthView;
+using view::is_perspective_depth;
+using view::LegendStop;
 
 constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoScrollbar |
                                     ImGuiWindowFlags_NoScrollWithMouse |
