@@ -24,8 +24,8 @@
 #include "renderer/view/decode.h"
 #include "renderer/view/readout.h"
 #include "ui/camera_controller.h"
-#include "ui/presenter.h"
 #include "ui/shader_watch.h"
+#include "ui/viewer_blit.h"
 
 struct ImDrawData;
 

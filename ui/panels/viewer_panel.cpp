@@ -11,6 +11,7 @@
 #include "renderer/view/decode.h"
 #include "renderer/view/heat.h"
 #include "ui/panels/panels.h"
+#include "ui/viewer_blit.h"
 
 namespace ds::ui {
 namespace {
@@ -223,7 +224,7 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
     if (hovered && view.width && frame.inspected) {
         // Through the blit's own integer mapping: the readout names the texel drawn there.
         const ImGuiIO& imgui = ImGui::GetIO();
-        const VkExtent2D target{uint32_t(imgui.DisplaySize.x * scale.x),
+        const TargetSize target{uint32_t(imgui.DisplaySize.x * scale.x),
                                 uint32_t(imgui.DisplaySize.y * scale.y)};
         const auto texel = texel_at(io.inspector.viewer_blit(), target, imgui.MousePos.x * scale.x,
                                     imgui.MousePos.y * scale.y);
