@@ -237,14 +237,14 @@ void Inspector::render() {
     ++frames_rendered_;
     history_.add(frame_);
     if (frame_.inspected)
-        decode_into(*frame_.inspected, viewer_.params, view_);
+        view::decode_into(*frame_.inspected, viewer_.params, view_);
     else
-        view_ = DecodedView{};
+        view_ = view::DecodedView{};
 }
 
-std::optional<Readout> Inspector::readout_at(uint32_t x, uint32_t y) const {
+std::optional<view::Readout> Inspector::readout_at(uint32_t x, uint32_t y) const {
     if (!frame_.inspected) return std::nullopt;
-    return readout(*frame_.inspected, x, y);
+    return view::readout(*frame_.inspected, x, y);
 }
 
 ViewerBlit Inspector::viewer_blit() const {

@@ -21,10 +21,11 @@
 #include "renderer/renderer.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
+#include "renderer/view/decode.h"
+#include "renderer/view/readout.h"
 #include "ui/camera_controller.h"
-#include "ui/decode.h"
-#include "ui/presenter.h"
 #include "ui/shader_watch.h"
+#include "ui/viewer_blit.h"
 
 struct ImDrawData;
 
@@ -60,13 +61,13 @@ enum class MouseTarget : uint8_t { Camera, Image };
 struct ViewerState {
     std::string resource = "final";
     uint32_t sample = 0;
-    ViewParams params;
+    view::ViewParams params;
     float zoom = 1.0f;             // screen pixels per image texel
     glm::vec2 centre{0.5f, 0.5f};  // the image point at the viewport's centre (0..1)
     MouseTarget mouse = MouseTarget::Camera;
     // Filled by the viewer panel.
     float x = 0, y = 0, w = 0, h = 0;  // the image area, in framebuffer pixels
-    std::optional<Readout> hover;
+    std::optional<view::Readout> hover;
 };
 
 // Per-pass GPU ms of the last kHistory frames.
@@ -114,7 +115,7 @@ class Inspector {
     const scene::Scene& scene() const { return scene_; }
     const SceneSummary& scene_summary() const { return summary_; }
     const FrameResult& frame() const { return frame_; }
-    const DecodedView& view() const { return view_; }
+    const view::DecodedView& view() const { return view_; }
     const PassHistory& history() const { return history_; }
     ViewerState& viewer() { return viewer_; }
     const ViewerState& viewer() const { return viewer_; }
@@ -129,7 +130,7 @@ class Inspector {
     // The render size the next frame uses: the viewer's area times render_scale.
     VkExtent2D render_size() const;
     // Hover readout of the shown resource at image texel (x, y).
-    std::optional<Readout> readout_at(uint32_t x, uint32_t y) const;
+    std::optional<view::Readout> readout_at(uint32_t x, uint32_t y) const;
 
     // Panel state that outlives a frame (text fields).
     struct PanelState {
@@ -156,7 +157,7 @@ class Inspector {
     std::string selected_pass_;
     std::vector<Action> pending_;
     FrameResult frame_;
-    DecodedView view_;
+    view::DecodedView view_;
     PassHistory history_;
     std::string message_;
     std::string shader_status_ = "shaders compiled";

@@ -8,11 +8,9 @@
 //   ui_imgui   Dear ImGui's draw data (the 1.86 Vulkan backend, which needs a VkRenderPass)
 // onto a target: a swapchain image (ui/window.h) or an offscreen image read back to pixels
 // (capture --ui, bench --ui, tests).
-#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -23,6 +21,7 @@
 #include "renderer/vk/frame.h"
 #include "renderer/vk/handle.h"
 #include "renderer/vk/image.h"
+#include "ui/viewer_blit.h"
 
 struct ImDrawData;
 
@@ -31,28 +30,6 @@ class Context;
 }
 
 namespace ds::ui {
-
-// Where the viewer's image goes, in target pixels, and which part of the image: the
-// compositor scales src to dst (both may extend past the image or the viewport; they are
-// clipped together).
-struct ViewerBlit {
-    const std::vector<uint8_t>* rgba8 = nullptr;  // width * height * 4; null: no image
-    uint32_t width = 0, height = 0;
-    float dst_x = 0, dst_y = 0, dst_w = 0, dst_h = 0;  // the viewport on the target
-    float src_x = 0, src_y = 0, src_w = 0, src_h = 0;  // the image region shown in it
-    bool nearest = true;
-};
-
-// The integer rectangles the viewer's blit copies (source texels -> target pixels), the image
-// and the viewport clipped together; false when nothing of the image is visible. Pure math:
-// the viewer panel maps the cursor through it so the readout names the texel drawn there.
-struct BlitRegion {
-    int32_t sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1;
-};
-bool clip_blit(const ViewerBlit& viewer, VkExtent2D target, BlitRegion& out);
-// The texel the blit shows at target pixel (x, y); none outside the image.
-std::optional<std::array<uint32_t, 2>> texel_at(const ViewerBlit& viewer, VkExtent2D target,
-                                                float x, float y);
 
 // What the UI graph drew into, and its GPU time.
 struct UiFrameStats {

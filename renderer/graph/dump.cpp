@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "renderer/format/format.h"
 #include "renderer/graph/names.h"
 
 namespace ds::graph {
@@ -20,7 +21,7 @@ std::string size_text(const ResourceInfo& r) {
 void dump_resource(std::ostream& out, const ResourceInfo& r) {
     out << "  " << r.name << ": ";
     if (r.is_image) {
-        out << "image " << format_name(r.image.format) << " " << size_text(r) << " samples "
+        out << "image " << format::name(r.image.format) << " " << size_text(r) << " samples "
             << int(r.image.samples) << " mips " << r.image.mip_levels << " "
             << semantic_name(r.image.semantic) << " " << lifetime_name(r.lifetime);
         if (r.history == HistoryRole::Previous)

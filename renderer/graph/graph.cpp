@@ -4,6 +4,7 @@
 #include <ostream>
 
 #include "renderer/common/error.h"
+#include "renderer/format/format.h"
 #include "renderer/graph/dump.h"
 #include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
@@ -189,8 +190,8 @@ void RenderGraph::record_barriers(VkCommandBuffer cmd, std::span<const Barrier> 
             v.newLayout = b.new_layout;
             v.srcQueueFamilyIndex = v.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
             v.image = bindings_[b.resource].image;
-            v.subresourceRange = {vk::aspect_flags(r.image.format), 0, VK_REMAINING_MIP_LEVELS, 0,
-                                  VK_REMAINING_ARRAY_LAYERS};
+            v.subresourceRange = {format::aspect_flags(r.image.format), 0, VK_REMAINING_MIP_LEVELS,
+                                  0, VK_REMAINING_ARRAY_LAYERS};
             images.push_back(v);
         } else {
             auto v = vk::make<VkBufferMemoryBarrier2>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2);

@@ -62,53 +62,6 @@ const char* layout_name(VkImageLayout layout) {
     }
 }
 
-std::string format_name(VkFormat format) {
-    switch (format) {
-        case VK_FORMAT_UNDEFINED:
-            return "UNDEFINED";
-        case VK_FORMAT_R8_UNORM:
-            return "R8_UNORM";
-        case VK_FORMAT_R8G8_UNORM:
-            return "R8G8_UNORM";
-        case VK_FORMAT_R8G8B8A8_UNORM:
-            return "R8G8B8A8_UNORM";
-        case VK_FORMAT_R8G8B8A8_SRGB:
-            return "R8G8B8A8_SRGB";
-        case VK_FORMAT_B8G8R8A8_UNORM:
-            return "B8G8R8A8_UNORM";
-        case VK_FORMAT_B8G8R8A8_SRGB:
-            return "B8G8R8A8_SRGB";
-        case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
-            return "A2B10G10R10_UNORM_PACK32";
-        case VK_FORMAT_B10G11R11_UFLOAT_PACK32:
-            return "B10G11R11_UFLOAT_PACK32";
-        case VK_FORMAT_R16_SFLOAT:
-            return "R16_SFLOAT";
-        case VK_FORMAT_R16G16_SFLOAT:
-            return "R16G16_SFLOAT";
-        case VK_FORMAT_R16G16B16A16_SFLOAT:
-            return "R16G16B16A16_SFLOAT";
-        case VK_FORMAT_R32_UINT:
-            return "R32_UINT";
-        case VK_FORMAT_R32_SFLOAT:
-            return "R32_SFLOAT";
-        case VK_FORMAT_R32G32_SFLOAT:
-            return "R32G32_SFLOAT";
-        case VK_FORMAT_R32G32B32A32_SFLOAT:
-            return "R32G32B32A32_SFLOAT";
-        case VK_FORMAT_D16_UNORM:
-            return "D16_UNORM";
-        case VK_FORMAT_D32_SFLOAT:
-            return "D32_SFLOAT";
-        case VK_FORMAT_D24_UNORM_S8_UINT:
-            return "D24_UNORM_S8_UINT";
-        case VK_FORMAT_D32_SFLOAT_S8_UINT:
-            return "D32_SFLOAT_S8_UINT";
-        default:
-            return "VkFormat(" + std::to_string(int(format)) + ")";
-    }
-}
-
 std::string stage_names(VkPipelineStageFlags2 stages) {
     return bit_names(stages,
                      {{VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, "TOP_OF_PIPE"},

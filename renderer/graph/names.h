@@ -1,6 +1,7 @@
 #pragma once
-// Readable names of the Vulkan enums and flags a graph dump prints. Vulkan's own string
-// helper header is not packaged in Debian 12, and the dump must read the same everywhere.
+// Readable names of the Vulkan enums and flags a graph dump prints (formats: format::name in
+// renderer/format). Vulkan's own string helper header is not packaged in Debian 12, and the
+// dump must read the same everywhere.
 #include <string>
 
 #include <vulkan/vulkan.h>
@@ -10,7 +11,6 @@
 namespace ds::graph {
 
 const char* layout_name(VkImageLayout layout);          // "COLOR_ATTACHMENT_OPTIMAL"
-std::string format_name(VkFormat format);               // "R8G8B8A8_UNORM"; "VkFormat(N)" otherwise
 std::string stage_names(VkPipelineStageFlags2 stages);  // "EARLY_FRAGMENT_TESTS|..."; "NONE"
 std::string access_names(VkAccessFlags2 access);        // "SHADER_SAMPLED_READ|..."; "NONE"
 std::string image_usage_names(VkImageUsageFlags usage);

@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "renderer/common/error.h"
+#include "renderer/format/format.h"
 #include "renderer/graph/graph.h"
 #include "renderer/graph/names.h"
 
@@ -67,7 +68,7 @@ void PassBuilder::declare(uint32_t resource, bool image, Access access, Shader s
     if (image && access != Access::ResolveDst && is_depth_kind(access) != r.depth() &&
         (is_depth_kind(access) || access == Access::ColorAttachment))
         throw Error(where + access_name(access) + " does not fit format " +
-                    format_name(r.image.format));
+                    format::name(r.image.format));
     const bool attachment =
         access == Access::ColorAttachment || is_depth_kind(access) || access == Access::ResolveDst;
     if (pass.kind != PassKind::Graphics && attachment)

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "renderer/vk/image.h"
+#include "renderer/format/format.h"
 
 namespace ds::graph {
 namespace {
@@ -97,7 +97,7 @@ ResourceState ResourceState::discarded() const {
 }
 
 bool ResourceInfo::depth() const {
-    return is_image && (vk::aspect_flags(image.format) &
+    return is_image && (format::aspect_flags(image.format) &
                         (VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT)) != 0;
 }
 

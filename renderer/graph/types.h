@@ -6,6 +6,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/graph/semantic.h"
 #include "renderer/vk/memory.h"
 
 namespace ds::graph {
@@ -22,20 +23,6 @@ struct BufferHandle {
     uint32_t index = kNoResource;
     bool valid() const { return index != kNoResource; }
     bool operator==(const BufferHandle&) const = default;
-};
-
-// How the viewer and the capture writer decode and show an image.
-enum class Semantic : uint8_t {
-    ReverseZDepth,  // near 1, far 0
-    ForwardZDepth,  // near 0, far 1
-    ShadowDepth,
-    EncodedNormal,  // n * 0.5 + 0.5 (A2B10G10R10)
-    UnormScalar,    // roughness and other [0, 1] scalars
-    AO,
-    HdrColor,
-    LdrColor,
-    Count,  // u32 counters (exact per-pixel invocation counts)
-    Other,
 };
 
 // Either relative to the graph's output size (recreated when that changes) or absolute.

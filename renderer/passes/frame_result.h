@@ -10,6 +10,7 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/graph/types.h"
+#include "renderer/view/image.h"
 
 namespace ds {
 
@@ -64,23 +65,6 @@ struct MsaaResult {
 struct DiscardCounts {
     uint64_t invoked = 0;
     uint64_t discarded = 0;
-};
-
-// One graph image as the frame's `inspect` pass read it (Renderer::render's `inspect`): every
-// texel as the four floats a shader sampling it sees (depth in r; u32 counts converted to
-// float in r, exact below 2^24; UNORM formats in 0..1; HDR as stored), row 0 = top. A
-// multisampled image is read at one sample. The camera's depth range comes with it so a
-// viewer can linearise depth.
-struct InspectedImage {
-    std::string name;
-    VkFormat format = VK_FORMAT_UNDEFINED;
-    graph::Semantic semantic = graph::Semantic::Other;
-    uint32_t width = 0, height = 0;
-    uint32_t samples = 1;       // of the resource
-    uint32_t sample = 0;        // the sample that was read
-    std::vector<float> texels;  // width * height * 4
-    float znear = 0.1f, zfar = 1000.0f;
-    bool reverse_z = true;
 };
 
 struct FrameResult {

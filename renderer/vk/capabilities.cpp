@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "renderer/common/error.h"
+#include "renderer/format/format.h"
 #include "renderer/vk/check.h"
 
 namespace ds::vk {
@@ -23,35 +24,9 @@ VkFormat choose_depth_format(std::span<const VkFormat> candidates, VkFormatFeatu
     std::vector<VkFormat> ok = supported_formats(candidates, required, query);
     if (!ok.empty()) return ok.front();
     std::string names;
-    for (VkFormat f : candidates) names += std::string(names.empty() ? "" : ", ") + format_name(f);
+    for (VkFormat f : candidates) names += std::string(names.empty() ? "" : ", ") + format::name(f);
     throw Error("no supported depth format (depth attachment + sampled, optimal tiling) among: " +
                 (names.empty() ? std::string("(no candidates)") : names));
-}
-
-bool has_stencil(VkFormat format) {
-    return format == VK_FORMAT_D32_SFLOAT_S8_UINT || format == VK_FORMAT_D24_UNORM_S8_UINT ||
-           format == VK_FORMAT_D16_UNORM_S8_UINT || format == VK_FORMAT_S8_UINT;
-}
-
-const char* format_name(VkFormat format) {
-    switch (format) {
-        case VK_FORMAT_D32_SFLOAT:
-            return "D32_SFLOAT";
-        case VK_FORMAT_D32_SFLOAT_S8_UINT:
-            return "D32_SFLOAT_S8_UINT";
-        case VK_FORMAT_D24_UNORM_S8_UINT:
-            return "D24_UNORM_S8_UINT";
-        case VK_FORMAT_D16_UNORM:
-            return "D16_UNORM";
-        case VK_FORMAT_R8G8B8A8_UNORM:
-            return "R8G8B8A8_UNORM";
-        case VK_FORMAT_R8G8B8A8_SRGB:
-            return "R8G8B8A8_SRGB";
-        case VK_FORMAT_UNDEFINED:
-            return "UNDEFINED";
-        default:
-            return "other format";
-    }
 }
 
 std::string device_type_name(VkPhysicalDeviceType type) {
@@ -240,8 +215,8 @@ std::string format_report(const DeviceReport& r) {
     for (const std::string& u : r.unmet) unmet += (unmet.empty() ? "" : ", ") + u;
     out << "  suitable:             " << (unmet.empty() ? "yes" : "no (" + unmet + ")") << "\n";
     out << "  depth formats:        ";
-    for (VkFormat f : r.depth_formats) out << format_name(f) << " ";
-    out << "(using " << format_name(r.depth_format) << ")\n";
+    for (VkFormat f : r.depth_formats) out << format::name(f) << " ";
+    out << "(using " << format::name(r.depth_format) << ")\n";
     out << "  colour sample counts: " << sample_counts_text(r.color_sample_counts) << "\n";
     out << "  depth sample counts:  " << sample_counts_text(r.depth_sample_counts) << "\n";
     out << "  depth resolve modes:  " << resolve_modes_text(r.depth_resolve_modes)

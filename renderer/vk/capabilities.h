@@ -10,6 +10,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/format/format.h"
 #include "renderer/vk/device_select.h"
 
 namespace ds::vk {
@@ -32,8 +33,8 @@ std::vector<VkFormat> supported_formats(std::span<const VkFormat> candidates,
 VkFormat choose_depth_format(std::span<const VkFormat> candidates, VkFormatFeatureFlags required,
                              const FormatQuery& query);
 
-bool has_stencil(VkFormat format);
-const char* format_name(VkFormat format);  // "D32_SFLOAT"; "format N" for others
+// Format facts live in the one table (renderer/format); vk::has_stencil is kept for callers.
+using format::has_stencil;
 std::string device_type_name(VkPhysicalDeviceType type);
 std::string version_string(uint32_t api_version);
 std::string sample_counts_text(VkSampleCountFlags counts);  // "1 4"

@@ -4,6 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/format/format.h"
 #include "renderer/vk/memory.h"
 
 namespace ds::vk {
@@ -21,8 +22,9 @@ struct ImageDesc {
 };
 
 uint32_t mip_level_count(uint32_t width, uint32_t height);  // full chain down to 1x1
-// Every aspect of the format (barriers); views of depth/stencil formats use depth only.
-VkImageAspectFlags aspect_flags(VkFormat format);
+// Every aspect of the format (barriers), from the format table; views of depth/stencil
+// formats use depth only.
+using format::aspect_flags;
 
 class Image {
   public:

@@ -2,6 +2,7 @@
 // lifetime; selecting an image shows it in the viewer.
 #include <imgui.h>
 
+#include "renderer/format/format.h"
 #include "renderer/graph/names.h"
 #include "ui/panels/panels.h"
 
@@ -38,7 +39,7 @@ void resources_panel(PanelIo& io, const PanelLayout& layout) {
             }
             ImGui::TableNextColumn();
             if (r.is_image)
-                ImGui::TextUnformatted(graph::format_name(r.format).c_str());
+                ImGui::TextUnformatted(format::name(r.format).c_str());
             else
                 ImGui::TextDisabled("buffer");
             ImGui::TableNextColumn();

@@ -1,5 +1,5 @@
 // Viewer: the central viewport. Shows the final image or any graph resource decoded by its
-// semantic (ui/decode.h), with the decode controls above and the hover readout below. The
+// semantic (renderer/view), with the decode controls above and the hover readout below. The
 // mouse drives the camera, or with Ctrl (or the "image" mouse mode) zooms and pans the image.
 #include <algorithm>
 #include <cmath>
@@ -8,10 +8,19 @@
 #include <imgui.h>
 
 #include "renderer/graph/names.h"
+#include "renderer/view/decode.h"
+#include "renderer/view/heat.h"
 #include "ui/panels/panels.h"
+#include "ui/viewer_blit.h"
 
 namespace ds::ui {
 namespace {
+
+using view::count_legend;
+using view::DecodedView;
+using view::DepthView;
+using view::is_perspective_depth;
+using view::LegendStop;
 
 constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoScrollbar |
                                     ImGuiWindowFlags_NoScrollWithMouse |
@@ -215,7 +224,7 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
     if (hovered && view.width && frame.inspected) {
         // Through the blit's own integer mapping: the readout names the texel drawn there.
         const ImGuiIO& imgui = ImGui::GetIO();
-        const VkExtent2D target{uint32_t(imgui.DisplaySize.x * scale.x),
+        const TargetSize target{uint32_t(imgui.DisplaySize.x * scale.x),
                                 uint32_t(imgui.DisplaySize.y * scale.y)};
         const auto texel = texel_at(io.inspector.viewer_blit(), target, imgui.MousePos.x * scale.x,
                                     imgui.MousePos.y * scale.y);

@@ -194,7 +194,7 @@ TEST_F(Inspector, ZoomedInTheReadoutNamesTheTexelDrawnUnderTheCursor) {
     v.zoom = 4.0f;
     v.centre = {0.37f, 0.61f};  // a fractional origin: the blit's rounding shows
     ui->frame();
-    const ui::DecodedView& view = ui->inspector().view();
+    const ds::view::DecodedView& view = ui->inspector().view();
     for (const glm::vec2 offset : {glm::vec2(0.13f, 0.21f), glm::vec2(0.5f, 0.5f),
                                    glm::vec2(0.91f, 0.77f), glm::vec2(0.02f, 0.97f)}) {
         HeadlessInput hover;

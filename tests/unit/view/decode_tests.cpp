@@ -1,4 +1,4 @@
-// The inspector viewer's CPU decoding (ui/decode.h): depth linearisation, sky, normals, counts,
+// The view library's CPU decoding (renderer/view): depth linearisation, sky, normals, counts,
 // ranges, channels, exposure and texel readouts, against values worked out by hand.
 #include <chrono>
 #include <cmath>
@@ -7,15 +7,17 @@
 
 #include <gtest/gtest.h>
 
-#include "ui/decode.h"
+#include "renderer/view/decode.h"
+#include "renderer/view/heat.h"
+#include "renderer/view/readout.h"
 
 namespace {
 
 using ds::InspectedImage;
 using ds::graph::Semantic;
-using ds::ui::DecodedView;
-using ds::ui::DepthView;
-using ds::ui::ViewParams;
+using ds::view::DecodedView;
+using ds::view::DepthView;
+using ds::view::ViewParams;
 using Rgb = std::array<uint8_t, 3>;
 
 constexpr float kNear = 0.1f, kFar = 100.0f;
@@ -81,27 +83,27 @@ ViewParams manual(float black, float white) {
 TEST(LinearDepth, RoundTripsReverseZ) {
     for (float d : {0.1f, 1.0f, 7.5f, 99.0f}) {
         const float stored = reverse_z_stored(d);
-        EXPECT_NEAR(ds::ui::linear_depth(stored, true, kNear, kFar), d, d * 1e-4f) << d;
+        EXPECT_NEAR(ds::view::linear_depth(stored, true, kNear, kFar), d, d * 1e-4f) << d;
     }
-    EXPECT_NEAR(ds::ui::linear_depth(1.0f, true, kNear, kFar), kNear, 1e-6f);
-    EXPECT_NEAR(ds::ui::linear_depth(0.0f, true, kNear, kFar), kFar, 1e-3f);
+    EXPECT_NEAR(ds::view::linear_depth(1.0f, true, kNear, kFar), kNear, 1e-6f);
+    EXPECT_NEAR(ds::view::linear_depth(0.0f, true, kNear, kFar), kFar, 1e-3f);
 }
 
 TEST(LinearDepth, RoundTripsForwardZ) {
     for (float d : {0.1f, 1.0f, 7.5f, 99.0f}) {
         const float stored = forward_z_stored(d);
-        EXPECT_NEAR(ds::ui::linear_depth(stored, false, kNear, kFar), d, d * 1e-3f) << d;
+        EXPECT_NEAR(ds::view::linear_depth(stored, false, kNear, kFar), d, d * 1e-3f) << d;
     }
-    EXPECT_NEAR(ds::ui::linear_depth(0.0f, false, kNear, kFar), kNear, 1e-6f);
+    EXPECT_NEAR(ds::view::linear_depth(0.0f, false, kNear, kFar), kNear, 1e-6f);
 }
 
 TEST(LinearDepth, ConventionsMirrorEachOther) {
     // 0.9 is near under reverse-Z and far under forward-Z: a swapped convention shows.
-    EXPECT_NEAR(ds::ui::linear_depth(0.9f, true, kNear, kFar), 0.11110f, 1e-4f);
-    EXPECT_NEAR(ds::ui::linear_depth(0.9f, false, kNear, kFar), 0.99108f, 1e-3f);
+    EXPECT_NEAR(ds::view::linear_depth(0.9f, true, kNear, kFar), 0.11110f, 1e-4f);
+    EXPECT_NEAR(ds::view::linear_depth(0.9f, false, kNear, kFar), 0.99108f, 1e-3f);
     for (float s : {0.001f, 0.25f, 0.5f, 0.9f}) {
-        EXPECT_NEAR(ds::ui::linear_depth(s, true, kNear, kFar),
-                    ds::ui::linear_depth(1.0f - s, false, kNear, kFar), 1e-3f)
+        EXPECT_NEAR(ds::view::linear_depth(s, true, kNear, kFar),
+                    ds::view::linear_depth(1.0f - s, false, kNear, kFar), 1e-3f)
             << s;
     }
 }
@@ -111,7 +113,7 @@ TEST(LinearDepth, ConventionsMirrorEachOther) {
 TEST(Readout, ReverseZDepthTexelGivesLinearDepth) {
     const float stored = reverse_z_stored(7.5f);
     auto image = scalar_row(Semantic::ReverseZDepth, VK_FORMAT_D32_SFLOAT, {0.0f, stored});
-    auto r = ds::ui::readout(image, 1, 0);
+    auto r = ds::view::readout(image, 1, 0);
     ASSERT_TRUE(r);
     EXPECT_EQ(r->x, 1u);
     EXPECT_EQ(r->y, 0u);
@@ -129,7 +131,7 @@ TEST(Readout, ReverseZDepthTexelGivesLinearDepth) {
 
 TEST(Readout, SkyTexelReportsSky) {
     auto reverse = scalar_row(Semantic::ReverseZDepth, VK_FORMAT_D32_SFLOAT, {0.0f});
-    auto r = ds::ui::readout(reverse, 0, 0);
+    auto r = ds::view::readout(reverse, 0, 0);
     ASSERT_TRUE(r);
     EXPECT_TRUE(r->sky);
     EXPECT_FALSE(r->linear_depth);
@@ -137,11 +139,11 @@ TEST(Readout, SkyTexelReportsSky) {
     EXPECT_EQ(r->raw_text, "0.0000000");
 
     auto forward = scalar_row(Semantic::ForwardZDepth, VK_FORMAT_D32_SFLOAT, {1.0f, 0.5f});
-    auto f = ds::ui::readout(forward, 0, 0);
+    auto f = ds::view::readout(forward, 0, 0);
     ASSERT_TRUE(f);
     EXPECT_TRUE(f->sky);
     EXPECT_EQ(f->decoded_text, "sky (far plane)");
-    auto g = ds::ui::readout(forward, 1, 0);
+    auto g = ds::view::readout(forward, 1, 0);
     ASSERT_TRUE(g);
     EXPECT_FALSE(g->sky);
     ASSERT_TRUE(g->linear_depth);
@@ -153,7 +155,7 @@ TEST(Readout, NormalDecodesToUnitVector) {
                             {{0.5f, 1.0f, 0.5f, 1.0f},
                              {0.5f, 0.75f, 0.5f, 1.0f},   // not unit length: normalised
                              {0.5f, 0.5f, 0.5f, 1.0f}});  // zero vector
-    auto r = ds::ui::readout(image, 0, 0);
+    auto r = ds::view::readout(image, 0, 0);
     ASSERT_TRUE(r);
     ASSERT_TRUE(r->normal);
     EXPECT_NEAR((*r->normal)[0], 0.0f, 1e-6f);
@@ -163,17 +165,17 @@ TEST(Readout, NormalDecodesToUnitVector) {
     EXPECT_EQ(r->raw_text, "(0.500, 1.000, 0.500, 1.000)");
     EXPECT_EQ(r->channels, 4u);
 
-    auto half = ds::ui::readout(image, 1, 0);
+    auto half = ds::view::readout(image, 1, 0);
     ASSERT_TRUE(half && half->normal);
     EXPECT_NEAR((*half->normal)[1], 1.0f, 1e-6f);
 
-    auto zero = ds::ui::readout(image, 2, 0);
+    auto zero = ds::view::readout(image, 2, 0);
     ASSERT_TRUE(zero);
     EXPECT_FALSE(zero->normal);
 
     auto tilted = make_image(Semantic::EncodedNormal, VK_FORMAT_A2B10G10R10_UNORM_PACK32, 1, 1,
                              {{1.0f, 0.5f, 0.0f, 1.0f}});  // (1, 0, -1) / sqrt 2
-    auto t = ds::ui::readout(tilted, 0, 0);
+    auto t = ds::view::readout(tilted, 0, 0);
     ASSERT_TRUE(t && t->normal);
     EXPECT_NEAR((*t->normal)[0], 0.70710678f, 1e-5f);
     EXPECT_NEAR((*t->normal)[2], -0.70710678f, 1e-5f);
@@ -183,25 +185,25 @@ TEST(Readout, NormalDecodesToUnitVector) {
 TEST(Readout, ScalarsCountsAndColours) {
     auto rough = scalar_row(Semantic::UnormScalar, VK_FORMAT_R8_UNORM, {0.5f});
     rough.name = "roughness";
-    auto r = ds::ui::readout(rough, 0, 0);
+    auto r = ds::view::readout(rough, 0, 0);
     ASSERT_TRUE(r);
     EXPECT_EQ(r->channels, 1u);
     EXPECT_EQ(r->decoded_text, "roughness 0.500");
 
     auto ao = scalar_row(Semantic::AO, VK_FORMAT_R8_UNORM, {0.83f});
-    EXPECT_EQ(ds::ui::readout(ao, 0, 0)->decoded_text, "AO 0.830");
+    EXPECT_EQ(ds::view::readout(ao, 0, 0)->decoded_text, "AO 0.830");
 
     auto counts = scalar_row(Semantic::Count, VK_FORMAT_R32_UINT, {17.0f, 1.0f});
-    auto c = ds::ui::readout(counts, 0, 0);
+    auto c = ds::view::readout(counts, 0, 0);
     ASSERT_TRUE(c);
     EXPECT_EQ(c->raw_text, "17");
     EXPECT_EQ(c->decoded_text, "17 fragments");
     EXPECT_EQ(c->channels, 1u);
-    EXPECT_EQ(ds::ui::readout(counts, 1, 0)->decoded_text, "1 fragment");
+    EXPECT_EQ(ds::view::readout(counts, 1, 0)->decoded_text, "1 fragment");
 
     auto hdr = make_image(Semantic::HdrColor, VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1,
                           {{2.0f, 1.0f, 0.0f, 1.0f}});
-    auto h = ds::ui::readout(hdr, 0, 0);
+    auto h = ds::view::readout(hdr, 0, 0);
     ASSERT_TRUE(h);
     EXPECT_EQ(h->raw_text, "(2.000, 1.000, 0.000, 1.000)");
     EXPECT_EQ(h->decoded_text, "linear rgb (2.000, 1.000, 0.000), luminance 1.140");
@@ -209,14 +211,14 @@ TEST(Readout, ScalarsCountsAndColours) {
 
 TEST(Readout, OutsideIsNone) {
     auto image = scalar_row(Semantic::UnormScalar, VK_FORMAT_R8_UNORM, {0.1f, 0.2f});
-    EXPECT_TRUE(ds::ui::readout(image, 1, 0));
-    EXPECT_FALSE(ds::ui::readout(image, 2, 0));
-    EXPECT_FALSE(ds::ui::readout(image, 0, 1));
-    EXPECT_FALSE(ds::ui::readout(image, UINT32_MAX, UINT32_MAX));
+    EXPECT_TRUE(ds::view::readout(image, 1, 0));
+    EXPECT_FALSE(ds::view::readout(image, 2, 0));
+    EXPECT_FALSE(ds::view::readout(image, 0, 1));
+    EXPECT_FALSE(ds::view::readout(image, UINT32_MAX, UINT32_MAX));
     InspectedImage empty;
-    EXPECT_FALSE(ds::ui::readout(empty, 0, 0));
+    EXPECT_FALSE(ds::view::readout(empty, 0, 0));
     image.texels.resize(4);  // claims 2x1 but holds one texel
-    EXPECT_FALSE(ds::ui::readout(image, 1, 0));
+    EXPECT_FALSE(ds::view::readout(image, 1, 0));
 }
 
 // --- decode: depth -----------------------------------------------------------------------
@@ -225,7 +227,7 @@ TEST(DecodeDepth, AutoFitExcludesSkyAndMapsNearDark) {
     auto image =
         scalar_row(Semantic::ReverseZDepth, VK_FORMAT_D32_SFLOAT,
                    {reverse_z_stored(2.0f), 0.0f, reverse_z_stored(5.0f), reverse_z_stored(40.0f)});
-    DecodedView view = ds::ui::decode(image, ViewParams{});
+    DecodedView view = ds::view::decode(image, ViewParams{});
     ASSERT_EQ(view.width, 4u);
     ASSERT_EQ(view.height, 1u);
     ASSERT_EQ(view.rgba8.size(), 16u);
@@ -233,7 +235,7 @@ TEST(DecodeDepth, AutoFitExcludesSkyAndMapsNearDark) {
     EXPECT_NEAR(view.black, 2.0f, 1e-3f);
     EXPECT_NEAR(view.white, 40.0f, 1e-2f);
     EXPECT_EQ(pixel(view, 0), grey(0));  // nearest: dark
-    EXPECT_EQ(pixel(view, 1), ds::ui::kSkyColor);
+    EXPECT_EQ(pixel(view, 1), ds::view::kSkyColor);
     EXPECT_EQ(pixel(view, 3), grey(255));  // farthest: bright
     // 5 of 2..40: (5 - 2) / 38 * 255 = 20.1
     EXPECT_NEAR(pixel(view, 2)[0], 20, 1);
@@ -244,15 +246,15 @@ TEST(DecodeDepth, RawShowsStoredValueAndSky) {
     auto image = scalar_row(Semantic::ReverseZDepth, VK_FORMAT_D32_SFLOAT, {s2, 0.0f, s40});
     ViewParams params;
     params.depth = DepthView::Raw;
-    DecodedView view = ds::ui::decode(image, params);
+    DecodedView view = ds::view::decode(image, params);
     EXPECT_EQ(view.unit, "raw depth");
     EXPECT_FLOAT_EQ(view.black, s40);
     EXPECT_FLOAT_EQ(view.white, s2);
     EXPECT_EQ(pixel(view, 0), grey(255));  // reverse-Z raw: near is the larger value
-    EXPECT_EQ(pixel(view, 1), ds::ui::kSkyColor);
+    EXPECT_EQ(pixel(view, 1), ds::view::kSkyColor);
     EXPECT_EQ(pixel(view, 2), grey(0));
 
-    DecodedView fixed = ds::ui::decode(image, [] {
+    DecodedView fixed = ds::view::decode(image, [] {
         ViewParams p = manual(0.0f, 1.0f);
         p.depth = DepthView::Raw;
         return p;
@@ -263,27 +265,27 @@ TEST(DecodeDepth, RawShowsStoredValueAndSky) {
 TEST(DecodeDepth, ForwardZSkyAndLinear) {
     auto image = scalar_row(Semantic::ForwardZDepth, VK_FORMAT_D32_SFLOAT,
                             {forward_z_stored(1.0f), 1.0f, forward_z_stored(11.0f)});
-    DecodedView view = ds::ui::decode(image, ViewParams{});
+    DecodedView view = ds::view::decode(image, ViewParams{});
     EXPECT_NEAR(view.black, 1.0f, 1e-3f);
     EXPECT_NEAR(view.white, 11.0f, 0.05f);
     EXPECT_EQ(pixel(view, 0), grey(0));
-    EXPECT_EQ(pixel(view, 1), ds::ui::kSkyColor);
+    EXPECT_EQ(pixel(view, 1), ds::view::kSkyColor);
     EXPECT_EQ(pixel(view, 2), grey(255));
 }
 
 TEST(DecodeDepth, AllSkyUsesTheCameraRange) {
     auto image = scalar_row(Semantic::ReverseZDepth, VK_FORMAT_D32_SFLOAT, {0.0f, 0.0f});
-    DecodedView view = ds::ui::decode(image, ViewParams{});
+    DecodedView view = ds::view::decode(image, ViewParams{});
     EXPECT_FLOAT_EQ(view.black, kNear);
     EXPECT_FLOAT_EQ(view.white, kFar);
-    EXPECT_EQ(pixel(view, 0), ds::ui::kSkyColor);
+    EXPECT_EQ(pixel(view, 0), ds::view::kSkyColor);
 }
 
 TEST(DecodeDepth, ManualLinearRangeClamps) {
     auto image =
         scalar_row(Semantic::ReverseZDepth, VK_FORMAT_D32_SFLOAT,
                    {reverse_z_stored(1.0f), reverse_z_stored(6.0f), reverse_z_stored(50.0f)});
-    DecodedView view = ds::ui::decode(image, manual(2.0f, 10.0f));
+    DecodedView view = ds::view::decode(image, manual(2.0f, 10.0f));
     EXPECT_FLOAT_EQ(view.black, 2.0f);
     EXPECT_FLOAT_EQ(view.white, 10.0f);
     EXPECT_EQ(pixel(view, 0), grey(0));
@@ -293,7 +295,7 @@ TEST(DecodeDepth, ManualLinearRangeClamps) {
 
 TEST(DecodeDepth, ShadowDepthIsRaw) {
     auto image = scalar_row(Semantic::ShadowDepth, VK_FORMAT_D32_SFLOAT, {0.25f, 1.0f, 0.0f});
-    DecodedView view = ds::ui::decode(image, manual(0.0f, 1.0f));
+    DecodedView view = ds::view::decode(image, manual(0.0f, 1.0f));
     EXPECT_EQ(view.unit, "raw depth");
     EXPECT_EQ(pixel(view, 0), grey(64));
     EXPECT_EQ(pixel(view, 1), grey(255));  // no sky for an orthographic shadow map
@@ -305,7 +307,7 @@ TEST(DecodeDepth, ShadowDepthIsRaw) {
 TEST(DecodeRange, ManualRangeClamps) {
     auto image =
         scalar_row(Semantic::UnormScalar, VK_FORMAT_R8_UNORM, {0.1f, 0.25f, 0.375f, 0.5f, 0.9f});
-    DecodedView view = ds::ui::decode(image, manual(0.25f, 0.5f));
+    DecodedView view = ds::view::decode(image, manual(0.25f, 0.5f));
     EXPECT_FLOAT_EQ(view.black, 0.25f);
     EXPECT_FLOAT_EQ(view.white, 0.5f);
     EXPECT_EQ(view.unit, "");
@@ -318,7 +320,7 @@ TEST(DecodeRange, ManualRangeClamps) {
 
 TEST(DecodeRange, AutoFitUsesMinMax) {
     auto image = scalar_row(Semantic::AO, VK_FORMAT_R8_UNORM, {0.75f, 0.25f, 0.5f});
-    DecodedView view = ds::ui::decode(image, ViewParams{});
+    DecodedView view = ds::view::decode(image, ViewParams{});
     EXPECT_FLOAT_EQ(view.black, 0.25f);
     EXPECT_FLOAT_EQ(view.white, 0.75f);
     EXPECT_EQ(pixel(view, 0), grey(255));
@@ -328,24 +330,24 @@ TEST(DecodeRange, AutoFitUsesMinMax) {
 
 TEST(DecodeRange, FlatImageIsMidGreyAndNaNIsMagenta) {
     auto flat = scalar_row(Semantic::AO, VK_FORMAT_R8_UNORM, {0.7f, 0.7f});
-    DecodedView view = ds::ui::decode(flat, ViewParams{});
+    DecodedView view = ds::view::decode(flat, ViewParams{});
     EXPECT_FLOAT_EQ(view.black, 0.7f);
     EXPECT_FLOAT_EQ(view.white, 0.7f);
     EXPECT_EQ(pixel(view, 0), grey(128));
 
     auto nan = scalar_row(Semantic::UnormScalar, VK_FORMAT_R16_SFLOAT,
                           {0.2f, std::nanf(""), 0.8f, INFINITY});
-    DecodedView v = ds::ui::decode(nan, ViewParams{});
+    DecodedView v = ds::view::decode(nan, ViewParams{});
     EXPECT_FLOAT_EQ(v.black, 0.2f);  // non-finite texels do not take part in the fit
     EXPECT_FLOAT_EQ(v.white, 0.8f);
-    EXPECT_EQ(pixel(v, 1), ds::ui::kNonFiniteColor);
-    EXPECT_EQ(pixel(v, 3), ds::ui::kNonFiniteColor);
+    EXPECT_EQ(pixel(v, 1), ds::view::kNonFiniteColor);
+    EXPECT_EQ(pixel(v, 3), ds::view::kNonFiniteColor);
     EXPECT_EQ(pixel(v, 2), grey(255));
 }
 
 TEST(DecodeRange, EqualManualBlackAndWhiteIsAThreshold) {
     auto image = scalar_row(Semantic::UnormScalar, VK_FORMAT_R8_UNORM, {0.3f, 0.5f, 0.51f});
-    DecodedView view = ds::ui::decode(image, manual(0.5f, 0.5f));
+    DecodedView view = ds::view::decode(image, manual(0.5f, 0.5f));
     EXPECT_EQ(pixel(view, 0), grey(0));
     EXPECT_EQ(pixel(view, 1), grey(0));
     EXPECT_EQ(pixel(view, 2), grey(255));
@@ -355,22 +357,22 @@ TEST(DecodeChannels, IsolationShowsOneChannelAsGrey) {
     auto other = make_image(Semantic::Other, VK_FORMAT_R32G32B32A32_SFLOAT, 1, 1,
                             {{0.2f, 0.4f, 0.6f, 0.8f}});
     ViewParams params = manual(0.0f, 1.0f);
-    EXPECT_EQ(pixel(ds::ui::decode(other, params), 0), (Rgb{51, 102, 153}));
+    EXPECT_EQ(pixel(ds::view::decode(other, params), 0), (Rgb{51, 102, 153}));
     for (int c = 0; c < 4; ++c) {
         params.channel = c;
         const uint8_t expected[] = {51, 102, 153, 204};
-        EXPECT_EQ(pixel(ds::ui::decode(other, params), 0), grey(expected[c])) << c;
+        EXPECT_EQ(pixel(ds::view::decode(other, params), 0), grey(expected[c])) << c;
     }
 
     auto normals = make_image(Semantic::EncodedNormal, VK_FORMAT_A2B10G10R10_UNORM_PACK32, 1, 1,
                               {{0.5f, 1.0f, 0.0f, 1.0f}});
     ViewParams all;
-    EXPECT_EQ(pixel(ds::ui::decode(normals, all), 0), (Rgb{128, 255, 0}));  // as stored
+    EXPECT_EQ(pixel(ds::view::decode(normals, all), 0), (Rgb{128, 255, 0}));  // as stored
     ViewParams g;
     g.channel = 1;
-    EXPECT_EQ(pixel(ds::ui::decode(normals, g), 0), grey(255));
+    EXPECT_EQ(pixel(ds::view::decode(normals, g), 0), grey(255));
     g.channel = 2;
-    EXPECT_EQ(pixel(ds::ui::decode(normals, g), 0), grey(0));
+    EXPECT_EQ(pixel(ds::view::decode(normals, g), 0), grey(0));
 
     // A colour's alpha is shown as stored, without exposure or sRGB encoding.
     auto hdr = make_image(Semantic::HdrColor, VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1,
@@ -378,13 +380,13 @@ TEST(DecodeChannels, IsolationShowsOneChannelAsGrey) {
     ViewParams a;
     a.channel = 3;
     a.exposure = 3.0f;
-    EXPECT_EQ(pixel(ds::ui::decode(hdr, a), 0), grey(64));
+    EXPECT_EQ(pixel(ds::view::decode(hdr, a), 0), grey(64));
 }
 
 TEST(DecodeChannels, OtherAutoFitsOverShownChannels) {
     auto two = make_image(Semantic::Other, VK_FORMAT_R32G32_SFLOAT, 2, 1,
                           {{-1.0f, 0.0f, 0.0f, 1.0f}, {1.0f, 3.0f, 0.0f, 1.0f}});
-    DecodedView view = ds::ui::decode(two, ViewParams{});
+    DecodedView view = ds::view::decode(two, ViewParams{});
     EXPECT_FLOAT_EQ(view.black, -1.0f);
     EXPECT_FLOAT_EQ(view.white, 3.0f);
     EXPECT_EQ(pixel(view, 0), (Rgb{0, 64, 0}));
@@ -392,7 +394,7 @@ TEST(DecodeChannels, OtherAutoFitsOverShownChannels) {
 
     auto one = make_image(Semantic::Other, VK_FORMAT_R32_SFLOAT, 2, 1,
                           {{2.0f, 0.0f, 0.0f, 1.0f}, {4.0f, 0.0f, 0.0f, 1.0f}});
-    DecodedView g = ds::ui::decode(one, ViewParams{});
+    DecodedView g = ds::view::decode(one, ViewParams{});
     EXPECT_EQ(pixel(g, 0), grey(0));  // one channel: grey, not red
     EXPECT_EQ(pixel(g, 1), grey(255));
 }
@@ -406,10 +408,10 @@ TEST(DecodeColour, HdrExposurePlusOneDoublesBeforeEncoding) {
                               {{0.2f, 0.4f, 0.6f, 1.0f}, {1.6f, 0.002f, 0.0f, 1.0f}});
     ViewParams plus_one;
     plus_one.exposure = 1.0f;
-    DecodedView a = ds::ui::decode(base, plus_one);
-    DecodedView b = ds::ui::decode(doubled, ViewParams{});
+    DecodedView a = ds::view::decode(base, plus_one);
+    DecodedView b = ds::view::decode(doubled, ViewParams{});
     EXPECT_EQ(a.rgba8, b.rgba8);
-    DecodedView unexposed = ds::ui::decode(base, ViewParams{});
+    DecodedView unexposed = ds::view::decode(base, ViewParams{});
     EXPECT_NE(unexposed.rgba8, a.rgba8);
 
     const Rgb p = pixel(a, 0);
@@ -426,7 +428,7 @@ TEST(DecodeColour, SrgbLutMatchesTheCurve) {
     std::vector<std::array<float, 4>> texels;
     for (int i = 0; i <= 1000; ++i) texels.push_back({float(i) / 1000.0f, 0.0f, 0.0f, 1.0f});
     auto image = make_image(Semantic::HdrColor, VK_FORMAT_R16G16B16A16_SFLOAT, 1001, 1, texels);
-    DecodedView view = ds::ui::decode(image, ViewParams{});
+    DecodedView view = ds::view::decode(image, ViewParams{});
     for (uint32_t i = 0; i <= 1000; ++i) {
         EXPECT_NEAR(pixel(view, i)[0], srgb_reference(float(i) / 1000.0f), 1) << i;
     }
@@ -438,10 +440,10 @@ TEST(DecodeColour, SrgbLutMatchesTheCurve) {
 TEST(DecodeColour, LdrIsAsStoredUnlessTheFormatIsSrgb) {
     auto unorm =
         make_image(Semantic::LdrColor, VK_FORMAT_R8G8B8A8_UNORM, 1, 1, {{0.5f, 1.0f, 0.0f, 1.0f}});
-    EXPECT_EQ(pixel(ds::ui::decode(unorm, ViewParams{}), 0), (Rgb{128, 255, 0}));
+    EXPECT_EQ(pixel(ds::view::decode(unorm, ViewParams{}), 0), (Rgb{128, 255, 0}));
     auto srgb = make_image(Semantic::LdrColor, VK_FORMAT_R8G8B8A8_SRGB, 1, 1,
                            {{0.21586f, 1.0f, 0.0f, 1.0f}});  // sampled (linear) value of 128
-    EXPECT_EQ(pixel(ds::ui::decode(srgb, ViewParams{}), 0), (Rgb{128, 255, 0}));
+    EXPECT_EQ(pixel(ds::view::decode(srgb, ViewParams{}), 0), (Rgb{128, 255, 0}));
 }
 
 // --- decode: counts ----------------------------------------------------------------------
@@ -450,17 +452,17 @@ TEST(DecodeCount, HeatMapFromBlackToTopColour) {
     std::vector<float> counts;
     for (int i = 0; i <= 10; ++i) counts.push_back(float(i));
     auto image = scalar_row(Semantic::Count, VK_FORMAT_R32_UINT, counts);
-    DecodedView view = ds::ui::decode(image, ViewParams{});
+    DecodedView view = ds::view::decode(image, ViewParams{});
     EXPECT_EQ(view.unit, "count");
     EXPECT_FLOAT_EQ(view.black, 0.0f);
     EXPECT_FLOAT_EQ(view.white, 10.0f);
     EXPECT_EQ(pixel(view, 0), (Rgb{0, 0, 0}));
-    EXPECT_EQ(pixel(view, 10), ds::ui::heat_color(1.0f));
+    EXPECT_EQ(pixel(view, 10), ds::view::heat_color(1.0f));
     EXPECT_EQ(pixel(view, 10), (Rgb{255, 255, 255}));
     std::set<Rgb> distinct;
     for (uint32_t i = 0; i <= 10; ++i) {
         distinct.insert(pixel(view, i));
-        EXPECT_EQ(pixel(view, i), ds::ui::count_color(float(i), 0.0f, 10.0f)) << i;
+        EXPECT_EQ(pixel(view, i), ds::view::count_color(float(i), 0.0f, 10.0f)) << i;
     }
     EXPECT_EQ(distinct.size(), 11u);
     // One fragment is clearly visible, not near-black.
@@ -470,30 +472,30 @@ TEST(DecodeCount, HeatMapFromBlackToTopColour) {
 
 TEST(DecodeCount, AutoFitIgnoresZeroAndManualClamps) {
     auto image = scalar_row(Semantic::Count, VK_FORMAT_R32_UINT, {0.0f, 3.0f, 6.0f, 12.0f});
-    DecodedView view = ds::ui::decode(image, manual(0.0f, 6.0f));
+    DecodedView view = ds::view::decode(image, manual(0.0f, 6.0f));
     EXPECT_EQ(pixel(view, 0), (Rgb{0, 0, 0}));
     EXPECT_EQ(pixel(view, 2), (Rgb{255, 255, 255}));
-    EXPECT_EQ(pixel(view, 3), (Rgb{255, 255, 255}));      // above white clamps to the top colour
-    EXPECT_EQ(pixel(view, 1), ds::ui::heat_color(0.5f));  // 3 of 0..6
+    EXPECT_EQ(pixel(view, 3), (Rgb{255, 255, 255}));        // above white clamps to the top colour
+    EXPECT_EQ(pixel(view, 1), ds::view::heat_color(0.5f));  // 3 of 0..6
 
     auto zeros = scalar_row(Semantic::Count, VK_FORMAT_R32_UINT, {0.0f, 0.0f});
-    DecodedView z = ds::ui::decode(zeros, ViewParams{});
+    DecodedView z = ds::view::decode(zeros, ViewParams{});
     EXPECT_FLOAT_EQ(z.black, 0.0f);
     EXPECT_FLOAT_EQ(z.white, 1.0f);
     EXPECT_EQ(pixel(z, 0), (Rgb{0, 0, 0}));
 }
 
 TEST(DecodeCount, LegendMatchesTheColours) {
-    auto small = ds::ui::count_legend(0.0f, 3.0f);
+    auto small = ds::view::count_legend(0.0f, 3.0f);
     ASSERT_EQ(small.size(), 4u);
     for (size_t i = 0; i < small.size(); ++i) {
         EXPECT_FLOAT_EQ(small[i].count, float(i));
-        EXPECT_EQ(small[i].rgb, ds::ui::count_color(float(i), 0.0f, 3.0f));
+        EXPECT_EQ(small[i].rgb, ds::view::count_color(float(i), 0.0f, 3.0f));
     }
     EXPECT_EQ(small[0].rgb, (Rgb{0, 0, 0}));
     EXPECT_EQ(small[3].rgb, (Rgb{255, 255, 255}));
 
-    auto big = ds::ui::count_legend(0.0f, 100.0f);
+    auto big = ds::view::count_legend(0.0f, 100.0f);
     ASSERT_EQ(big.size(), 7u);
     EXPECT_FLOAT_EQ(big[0].count, 0.0f);
     EXPECT_FLOAT_EQ(big[1].count, 1.0f);
@@ -502,7 +504,7 @@ TEST(DecodeCount, LegendMatchesTheColours) {
     EXPECT_EQ(big.back().rgb, (Rgb{255, 255, 255}));
     for (size_t i = 1; i < big.size(); ++i) EXPECT_GT(big[i].count, big[i - 1].count);
 
-    EXPECT_EQ(ds::ui::count_legend(0.0f, 0.0f).size(), 1u);
+    EXPECT_EQ(ds::view::count_legend(0.0f, 0.0f).size(), 1u);
 }
 
 // --- decode: sizes -----------------------------------------------------------------------
@@ -510,7 +512,7 @@ TEST(DecodeCount, LegendMatchesTheColours) {
 TEST(Decode, MalformedImageDecodesEmpty) {
     auto image = scalar_row(Semantic::AO, VK_FORMAT_R8_UNORM, {0.5f, 0.5f});
     image.texels.pop_back();
-    DecodedView view = ds::ui::decode(image, ViewParams{});
+    DecodedView view = ds::view::decode(image, ViewParams{});
     EXPECT_EQ(view.width, 0u);
     EXPECT_TRUE(view.rgba8.empty());
 }
@@ -540,7 +542,7 @@ TEST(Decode, HdSizedImagesDecodeToFullSize) {
     DecodedView view;  // reused, as the viewer does every frame
     for (const InspectedImage* image : {&depth, &hdr, &counts}) {
         const auto start = std::chrono::steady_clock::now();
-        ds::ui::decode_into(*image, ViewParams{}, view);
+        ds::view::decode_into(*image, ViewParams{}, view);
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();
@@ -552,13 +554,13 @@ TEST(Decode, HdSizedImagesDecodeToFullSize) {
 }
 
 TEST(Formats, Channels) {
-    EXPECT_EQ(ds::ui::format_channels(VK_FORMAT_D32_SFLOAT), 1u);
-    EXPECT_EQ(ds::ui::format_channels(VK_FORMAT_R8_UNORM), 1u);
-    EXPECT_EQ(ds::ui::format_channels(VK_FORMAT_R32_UINT), 1u);
-    EXPECT_EQ(ds::ui::format_channels(VK_FORMAT_R16G16_SFLOAT), 2u);
-    EXPECT_EQ(ds::ui::format_channels(VK_FORMAT_B10G11R11_UFLOAT_PACK32), 3u);
-    EXPECT_EQ(ds::ui::format_channels(VK_FORMAT_A2B10G10R10_UNORM_PACK32), 4u);
-    EXPECT_EQ(ds::ui::format_channels(VK_FORMAT_R16G16B16A16_SFLOAT), 4u);
+    EXPECT_EQ(ds::view::format_channels(VK_FORMAT_D32_SFLOAT), 1u);
+    EXPECT_EQ(ds::view::format_channels(VK_FORMAT_R8_UNORM), 1u);
+    EXPECT_EQ(ds::view::format_channels(VK_FORMAT_R32_UINT), 1u);
+    EXPECT_EQ(ds::view::format_channels(VK_FORMAT_R16G16_SFLOAT), 2u);
+    EXPECT_EQ(ds::view::format_channels(VK_FORMAT_B10G11R11_UFLOAT_PACK32), 3u);
+    EXPECT_EQ(ds::view::format_channels(VK_FORMAT_A2B10G10R10_UNORM_PACK32), 4u);
+    EXPECT_EQ(ds::view::format_channels(VK_FORMAT_R16G16B16A16_SFLOAT), 4u);
 }
 
 }  // namespace

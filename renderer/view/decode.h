@@ -1,7 +1,8 @@
 #pragma once
-// The inspector viewer's CPU decoding: turns an InspectedImage (the floats a shader sampling a
-// graph image sees) into 8-bit pixels to show, and one texel into a readout a graphics engineer
-// can read (linear depth, decoded normal, counts...). Pure functions: no Vulkan calls, no ImGui.
+// The view library's image decode: turns an InspectedImage (the floats a shader sampling a
+// graph image sees) into 8-bit pixels to show (the inspector's viewer; captures later).
+// readout.h reads one texel, heat.h holds the count heat map. Pure functions: no Vulkan
+// calls, no ImGui; only the data types (renderer/view/image.h) and the format table.
 //
 // How each semantic is shown (decode):
 // - ReverseZDepth / ForwardZDepth: DepthView::Linear shows the linear view distance, near dark
@@ -30,13 +31,13 @@
 // (channel 3 of HdrColor, LdrColor) shows as stored, clamped to 0..1: no exposure, no encode.
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "renderer/renderer.h"
+#include "renderer/graph/semantic.h"
+#include "renderer/view/image.h"
 
-namespace ds::ui {
+namespace ds::view {
 
 enum class DepthView : uint8_t { Linear, Raw };
 
@@ -76,40 +77,9 @@ bool is_sky_depth(float stored, bool reverse_z);
 // ReverseZDepth or ForwardZDepth (perspective depth that linearises; not ShadowDepth).
 bool is_perspective_depth(graph::Semantic semantic);
 
-// Meaningful channels of a format: 1 for depth, stencil and R formats, 2 for RG, 3 for RGB
-// and B10G11R11, 4 otherwise (A2B10G10R10 included).
+// Meaningful channels of a format, from the format table (renderer/format): 1 for depth,
+// stencil and R formats, 2 for RG, 3 for RGB and B10G11R11, 4 otherwise (A2B10G10R10 and
+// formats the table does not know included).
 uint32_t format_channels(VkFormat format);
 
-// The count heat map: t in 0..1 over black -> blue -> cyan -> green -> yellow -> red -> white;
-// t <= 0 is black; quantised to the 256 steps decode uses. count_color maps a count over a
-// black..white range exactly as decode does.
-std::array<uint8_t, 3> heat_color(float t);
-std::array<uint8_t, 3> count_color(float count, float black, float white);
-struct LegendStop {
-    float count = 0;  // the count this colour means
-    std::array<uint8_t, 3> rgb{};
-};
-// Stops for a legend of a Count view's range (DecodedView::black/white): the first is black
-// (counts <= black); then every count when the range is at most 8 whole counts, else the
-// first colour above black and five evenly spaced counts ending at white (whole counts when
-// black and white are).
-std::vector<LegendStop> count_legend(float black, float white);
-
-struct Readout {
-    uint32_t x = 0, y = 0;
-    std::array<float, 4> raw{};  // the texel as read
-    uint32_t channels = 4;       // meaningful channels of the format
-    std::string raw_text;        // "0.0123400" / "(0.512, 0.998, 0.497, 1.000)" / "17"
-    // "linear depth 12.345 (scene units)", "sky (far plane)", "normal (0.02, 1.00, -0.01)",
-    // "roughness 0.500", "AO 0.830", "17 fragments", "linear rgb (...), luminance 0.5", ...
-    std::string decoded_text;
-    std::optional<float> linear_depth;           // perspective depth semantics, not sky
-    std::optional<std::array<float, 3>> normal;  // EncodedNormal, normalised (none if zero)
-    bool sky = false;                            // perspective depth at the far value
-};
-// The texel at (x, y), row 0 = top; none outside the image (or for malformed texel data).
-// UnormScalar is labelled from the image name: "roughness" (name contains "rough"), "shadow"
-// (contains "shadow"), else "value". Other has raw_text only.
-std::optional<Readout> readout(const InspectedImage& image, uint32_t x, uint32_t y);
-
-}  // namespace ds::ui
+}  // namespace ds::view

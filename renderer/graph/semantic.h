@@ -1,0 +1,22 @@
+#pragma once
+// The semantic every graph image carries (DESIGN decision 7): how the viewer and the capture
+// writer decode and show it. Its own header, free of Vulkan, so the view library
+// (renderer/view) can read it without the graph.
+#include <cstdint>
+
+namespace ds::graph {
+
+enum class Semantic : uint8_t {
+    ReverseZDepth,  // near 1, far 0
+    ForwardZDepth,  // near 0, far 1
+    ShadowDepth,
+    EncodedNormal,  // n * 0.5 + 0.5 (A2B10G10R10)
+    UnormScalar,    // roughness and other [0, 1] scalars
+    AO,
+    HdrColor,
+    LdrColor,
+    Count,  // u32 counters (exact per-pixel invocation counts)
+    Other,
+};
+
+}  // namespace ds::graph

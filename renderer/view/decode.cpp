@@ -1,0 +1,321 @@
+#include "renderer/view/decode.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "renderer/format/format.h"
+#include "renderer/view/pixel.h"
+
+namespace ds::view {
+
+namespace {
+
+using detail::heat_index;
+using detail::kSrgbLutSize;
+using detail::Range;
+using detail::Rgb;
+using detail::srgb8;
+using detail::unorm8;
+using graph::Semantic;
+
+// --- Look-up table (built once, read-only afterwards) --------------------------------------
+
+struct SrgbLut {
+    std::array<uint8_t, kSrgbLutSize> table{};
+    SrgbLut() {
+        for (int i = 0; i < kSrgbLutSize; ++i) {
+            double v = double(i) / (kSrgbLutSize - 1);
+            double s = v <= 0.0031308 ? v * 12.92 : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+            table[size_t(i)] = uint8_t(std::clamp(s * 255.0 + 0.5, 0.0, 255.0));
+        }
+    }
+};
+
+// --- Per-texel helpers ---------------------------------------------------------------------
+
+inline void put(uint8_t* p, uint8_t r, uint8_t g, uint8_t b) {
+    p[0] = r;
+    p[1] = g;
+    p[2] = b;
+    p[3] = 255;
+}
+inline void put(uint8_t* p, const Rgb& c) {
+    put(p, c[0], c[1], c[2]);
+}
+inline void put_grey(uint8_t* p, uint8_t v) {
+    put(p, v, v, v);
+}
+
+// Finite min/max of a quantity over the image, skipping what `get` rejects (returns NaN).
+struct MinMax {
+    float lo = std::numeric_limits<float>::infinity();
+    float hi = -std::numeric_limits<float>::infinity();
+    void add(float v) {
+        if (std::isfinite(v)) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+    }
+    bool empty() const { return !(lo <= hi); }
+};
+
+template <typename Quantity>
+MinMax fit(const float* texels, size_t count, Quantity&& quantity) {
+    MinMax m;
+    for (size_t i = 0; i < count; ++i) m.add(quantity(texels + 4 * i));
+    return m;
+}
+
+Range choose_range(const ViewParams& params, const MinMax& fitted, float default_black,
+                   float default_white) {
+    if (!params.auto_fit) return Range::manual(params.black, params.white);
+    if (fitted.empty()) return Range::manual(default_black, default_white);
+    if (fitted.lo == fitted.hi) return Range::flat(fitted.lo);
+    return Range::manual(fitted.lo, fitted.hi);
+}
+
+template <typename Fn>
+void each_texel(const float* texels, size_t count, uint8_t* out, Fn&& fn) {
+    for (size_t i = 0; i < count; ++i) fn(texels + 4 * i, out + 4 * i);
+}
+
+// --- Decoders, one per kind of view --------------------------------------------------------
+
+void decode_perspective_depth(const InspectedImage& image, const ViewParams& params, size_t count,
+                              uint8_t* out, DecodedView& view) {
+    const bool reverse = image.semantic == Semantic::ReverseZDepth;
+    const float n = image.znear, f = image.zfar;
+    const float nf = n * f, fmn = f - n;
+    const float* texels = image.texels.data();
+    // The sky test is written out here (not is_sky_depth) to keep the loops branch-light.
+    auto sky = [reverse](float s) { return reverse ? !(s > 0.0f) : !(s < 1.0f); };
+    if (params.depth == DepthView::Linear) {
+        auto lin = [reverse, nf, fmn, n, f](float s) {
+            return reverse ? nf / (s * fmn + n) : nf / (f - s * fmn);
+        };
+        MinMax m;
+        if (params.auto_fit) {
+            m = fit(texels, count, [&](const float* t) {
+                return sky(t[0]) ? std::numeric_limits<float>::quiet_NaN() : lin(t[0]);
+            });
+        }
+        Range r = choose_range(params, m, n, f);
+        each_texel(texels, count, out, [&](const float* t, uint8_t* p) {
+            float s = t[0];
+            if (!std::isfinite(s)) return put(p, kNonFiniteColor);
+            if (sky(s)) return put(p, kSkyColor);
+            float d = lin(s);
+            if (!std::isfinite(d)) return put(p, kNonFiniteColor);
+            put_grey(p, unorm8(r.t(d)));
+        });
+        view.black = r.black;
+        view.white = r.white;
+        view.unit = "scene units";
+    } else {
+        MinMax m;
+        if (params.auto_fit) {
+            m = fit(texels, count, [&](const float* t) {
+                return sky(t[0]) ? std::numeric_limits<float>::quiet_NaN() : t[0];
+            });
+        }
+        Range r = choose_range(params, m, 0.0f, 1.0f);
+        each_texel(texels, count, out, [&](const float* t, uint8_t* p) {
+            float s = t[0];
+            if (!std::isfinite(s)) return put(p, kNonFiniteColor);
+            if (sky(s)) return put(p, kSkyColor);
+            put_grey(p, unorm8(r.t(s)));
+        });
+        view.black = r.black;
+        view.white = r.white;
+        view.unit = "raw depth";
+    }
+}
+
+// One quantity (channel `c`) as grey over the range.
+void decode_grey(const InspectedImage& image, const ViewParams& params, size_t count, uint8_t* out,
+                 DecodedView& view, int c) {
+    const float* texels = image.texels.data();
+    MinMax m;
+    if (params.auto_fit) m = fit(texels, count, [c](const float* t) { return t[c]; });
+    Range r = choose_range(params, m, 0.0f, 1.0f);
+    each_texel(texels, count, out, [&](const float* t, uint8_t* p) {
+        float v = t[c];
+        if (!std::isfinite(v)) return put(p, kNonFiniteColor);
+        put_grey(p, unorm8(r.t(v)));
+    });
+    view.black = r.black;
+    view.white = r.white;
+}
+
+void decode_count(const InspectedImage& image, const ViewParams& params, size_t count, uint8_t* out,
+                  DecodedView& view) {
+    const float* texels = image.texels.data();
+    Range r;
+    if (params.auto_fit) {
+        MinMax m = fit(texels, count, [](const float* t) { return t[0]; });
+        r = Range::manual(0.0f, !m.empty() && m.hi > 0.0f ? m.hi : 1.0f);
+    } else {
+        r = Range::manual(params.black, params.white);
+    }
+    const Rgb* heat = detail::heat_table();
+    each_texel(texels, count, out, [&](const float* t, uint8_t* p) {
+        float v = t[0];
+        if (!std::isfinite(v)) return put(p, kNonFiniteColor);
+        put(p, heat[heat_index(r.t(v))]);
+    });
+    view.black = r.black;
+    view.white = r.white;
+    view.unit = "count";
+}
+
+// Colours and normals: no range. Encode = sRGB-encode rgb (HDR, *_SRGB formats); `scale`
+// multiplies rgb first (exposure). Alpha is always as stored.
+template <bool Encode>
+void decode_colour(const InspectedImage& image, const ViewParams& params, size_t count,
+                   uint8_t* out, float scale) {
+    const float* texels = image.texels.data();
+    const uint8_t* lut = detail::srgb_table();
+    auto channel8 = [lut, scale](float v) {
+        if constexpr (Encode) {
+            return srgb8(lut, v * scale);
+        } else {
+            return unorm8(v * scale);
+        }
+    };
+    const int c = params.channel;
+    if (c < 0) {
+        each_texel(texels, count, out, [&](const float* t, uint8_t* p) {
+            if (!std::isfinite(t[0]) || !std::isfinite(t[1]) || !std::isfinite(t[2])) {
+                return put(p, kNonFiniteColor);
+            }
+            put(p, channel8(t[0]), channel8(t[1]), channel8(t[2]));
+        });
+    } else if (c == 3) {
+        each_texel(texels, count, out, [&](const float* t, uint8_t* p) {
+            if (!std::isfinite(t[3])) return put(p, kNonFiniteColor);
+            put_grey(p, unorm8(t[3]));
+        });
+    } else {
+        each_texel(texels, count, out, [&](const float* t, uint8_t* p) {
+            if (!std::isfinite(t[c])) return put(p, kNonFiniteColor);
+            put_grey(p, channel8(t[c]));
+        });
+    }
+}
+
+// Other: the first channels as rgb (grey for one channel) over one range for all of them.
+void decode_other(const InspectedImage& image, const ViewParams& params, size_t count, uint8_t* out,
+                  DecodedView& view) {
+    const uint32_t channels = format_channels(image.format);
+    if (params.channel >= 0 || channels == 1) {
+        decode_grey(image, params, count, out, view, params.channel >= 0 ? params.channel : 0);
+        return;
+    }
+    const float* texels = image.texels.data();
+    const int shown = channels >= 3 ? 3 : 2;
+    MinMax m;
+    if (params.auto_fit) {
+        for (size_t i = 0; i < count; ++i) {
+            const float* t = texels + 4 * i;
+            for (int k = 0; k < shown; ++k) m.add(t[k]);
+        }
+    }
+    Range r = choose_range(params, m, 0.0f, 1.0f);
+    each_texel(texels, count, out, [&](const float* t, uint8_t* p) {
+        if (!std::isfinite(t[0]) || !std::isfinite(t[1]) || (shown == 3 && !std::isfinite(t[2]))) {
+            return put(p, kNonFiniteColor);
+        }
+        put(p, unorm8(r.t(t[0])), unorm8(r.t(t[1])), shown == 3 ? unorm8(r.t(t[2])) : 0);
+    });
+    view.black = r.black;
+    view.white = r.white;
+}
+
+}  // namespace
+
+const uint8_t* detail::srgb_table() {
+    static const SrgbLut lut;
+    return lut.table.data();
+}
+
+// --- Public API ----------------------------------------------------------------------------
+
+float linear_depth(float stored, bool reverse_z, float znear, float zfar) {
+    const float n = znear, f = zfar;
+    return reverse_z ? n * f / (stored * (f - n) + n) : n * f / (f - stored * (f - n));
+}
+
+bool is_sky_depth(float stored, bool reverse_z) {
+    return reverse_z ? stored <= 0.0f : stored >= 1.0f;
+}
+
+bool is_perspective_depth(graph::Semantic semantic) {
+    return semantic == Semantic::ReverseZDepth || semantic == Semantic::ForwardZDepth;
+}
+
+uint32_t format_channels(VkFormat f) {
+    const format::Info* info = format::find(f);
+    return info ? info->channels : 4;  // unknown: all four, as sampled
+}
+
+void decode_into(const InspectedImage& image, const ViewParams& params, DecodedView& out) {
+    const size_t count = size_t(image.width) * image.height;
+    out.black = 0.0f;
+    out.white = 1.0f;
+    out.unit.clear();
+    if (count == 0 || image.texels.size() != count * 4) {
+        out.width = out.height = 0;
+        out.rgba8.clear();
+        return;
+    }
+    out.width = image.width;
+    out.height = image.height;
+    out.rgba8.resize(count * 4);
+    uint8_t* p = out.rgba8.data();
+    const int channel = params.channel >= 0 && params.channel <= 3 ? params.channel : -1;
+    ViewParams vp = params;
+    vp.channel = channel;
+
+    switch (image.semantic) {
+        case Semantic::ReverseZDepth:
+        case Semantic::ForwardZDepth:
+            decode_perspective_depth(image, vp, count, p, out);
+            break;
+        case Semantic::ShadowDepth:
+            decode_grey(image, vp, count, p, out, 0);
+            out.unit = "raw depth";
+            break;
+        case Semantic::UnormScalar:
+        case Semantic::AO:
+            decode_grey(image, vp, count, p, out, 0);
+            break;
+        case Semantic::Count:
+            decode_count(image, vp, count, p, out);
+            break;
+        case Semantic::EncodedNormal:
+            decode_colour<false>(image, vp, count, p, 1.0f);
+            break;
+        case Semantic::LdrColor:
+            if (format::is_srgb(image.format)) {
+                decode_colour<true>(image, vp, count, p, 1.0f);
+            } else {
+                decode_colour<false>(image, vp, count, p, 1.0f);
+            }
+            break;
+        case Semantic::HdrColor:
+            decode_colour<true>(image, vp, count, p, std::exp2(params.exposure));
+            break;
+        case Semantic::Other:
+            decode_other(image, vp, count, p, out);
+            break;
+    }
+}
+
+DecodedView decode(const InspectedImage& image, const ViewParams& params) {
+    DecodedView view;
+    decode_into(image, params, view);
+    return view;
+}
+
+}  // namespace ds::view

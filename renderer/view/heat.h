@@ -1,0 +1,25 @@
+#pragma once
+// The count heat map of the view library: the colours a Count image decodes to (decode.h) and
+// the legend that explains them, from the same table so the legend matches the pixels.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace ds::view {
+
+// The count heat map: t in 0..1 over black -> blue -> cyan -> green -> yellow -> red -> white;
+// t <= 0 is black; quantised to the 256 steps decode uses. count_color maps a count over a
+// black..white range exactly as decode does.
+std::array<uint8_t, 3> heat_color(float t);
+std::array<uint8_t, 3> count_color(float count, float black, float white);
+struct LegendStop {
+    float count = 0;  // the count this colour means
+    std::array<uint8_t, 3> rgb{};
+};
+// Stops for a legend of a Count view's range (DecodedView::black/white): the first is black
+// (counts <= black); then every count when the range is at most 8 whole counts, else the
+// first colour above black and five evenly spaced counts ending at white (whole counts when
+// black and white are).
+std::vector<LegendStop> count_legend(float black, float white);
+
+}  // namespace ds::view

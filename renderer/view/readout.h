@@ -1,0 +1,31 @@
+#pragma once
+// The view library's per-texel readout: one texel of an InspectedImage as a graphics engineer
+// reads it (linear depth, decoded normal, counts...), for the inspector's hover line. Pure
+// functions: no Vulkan calls, no ImGui.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "renderer/view/image.h"
+
+namespace ds::view {
+
+struct Readout {
+    uint32_t x = 0, y = 0;
+    std::array<float, 4> raw{};  // the texel as read
+    uint32_t channels = 4;       // meaningful channels of the format
+    std::string raw_text;        // "0.0123400" / "(0.512, 0.998, 0.497, 1.000)" / "17"
+    // "linear depth 12.345 (scene units)", "sky (far plane)", "normal (0.02, 1.00, -0.01)",
+    // "roughness 0.500", "AO 0.830", "17 fragments", "linear rgb (...), luminance 0.5", ...
+    std::string decoded_text;
+    std::optional<float> linear_depth;           // perspective depth semantics, not sky
+    std::optional<std::array<float, 3>> normal;  // EncodedNormal, normalised (none if zero)
+    bool sky = false;                            // perspective depth at the far value
+};
+// The texel at (x, y), row 0 = top; none outside the image (or for malformed texel data).
+// UnormScalar is labelled from the image name: "roughness" (name contains "rough"), "shadow"
+// (contains "shadow"), else "value". Other has raw_text only.
+std::optional<Readout> readout(const InspectedImage& image, uint32_t x, uint32_t y);
+
+}  // namespace ds::view
