@@ -4,6 +4,7 @@
 #include <renderdoc_app.h>
 
 #include "app/commands.h"
+#include "app/exit_code.h"
 #include "app/frame_json.h"
 #include "renderer/capture/image_writer.h"
 #include "renderer/capture/output_dir.h"
@@ -35,15 +36,6 @@ Settings settings_from(const Options& o) {
 std::filesystem::path capture_dir(const Options& o, const scene::Scene& scene) {
     if (!o.out.empty()) return o.out;
     return capture::default_capture_dir(DS_CAPTURE_ROOT, scene.name);
-}
-
-// Validation messages were printed as they came; the exit code tells scripts.
-int exit_code_for(const Renderer& renderer) {
-    const uint64_t messages = renderer.validation_message_count();
-    if (messages == 0) return 0;
-    std::fprintf(stderr, "depthscope: %llu validation message(s)\n",
-                 static_cast<unsigned long long>(messages));
-    return 3;
 }
 
 }  // namespace
@@ -127,7 +119,7 @@ int run_capture(const Options& o) {
     if (o.dump_graph) std::printf("%s\n", renderer.graph_dump().c_str());
     out.commit();
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());
-    return exit_code_for(renderer);
+    return validation_exit_code(renderer);
 }
 
 int run_export_scene(const Options& o) {
