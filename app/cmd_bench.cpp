@@ -12,6 +12,7 @@
 #include "app/commands.h"
 #include "app/exit_code.h"
 #include "renderer/capture/report.h"
+#include "renderer/device_info.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 #include "ui/headless.h"
@@ -142,7 +143,7 @@ int run_bench(const Options& o) {
     renderer.set_scene(scene);
     std::printf("bench: %s at %ux%u, %d frames after %d warm-up, on %s%s\n", scene.name.c_str(),
                 o.size.width, o.size.height, o.bench_frames, o.bench_warmup,
-                renderer.device_report().candidate.name.c_str(),
+                device_info(renderer).name.c_str(),
                 o.ui ? ", inspector drawn offscreen every frame" : "");
     // --ui: the inspector at --size over a scene frame of --size, drawn every frame.
     std::unique_ptr<ui::HeadlessUi> ui;

@@ -11,10 +11,10 @@
 #include "renderer/capture/renderdoc.h"
 #include "renderer/capture/report.h"
 #include "renderer/common/error.h"
+#include "renderer/device_info.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/builtin/builtin.h"
 #include "renderer/scene/loader.h"
-#include "renderer/vk/capabilities.h"
 #include "ui/headless.h"
 
 #ifndef DS_CAPTURE_ROOT
@@ -91,10 +91,10 @@ int run_capture(const Options& o) {
         capture::write_png_rgba8(out.staging_path("final.png"), frame.width, frame.height,
                                  frame.rgba8);
     }
-    const auto& device = renderer.device_report();
-    capture::ReportInput report{.device_name = device.candidate.name,
-                                .driver = device.driver_name + " " + device.driver_info,
-                                .api_version = vk::version_string(device.candidate.api_version),
+    const DeviceInfo device = device_info(renderer);
+    capture::ReportInput report{.device_name = device.name,
+                                .driver = device.driver,
+                                .api_version = device.api_version,
                                 .scene = &scene,
                                 .width = frame.width,
                                 .height = frame.height,
