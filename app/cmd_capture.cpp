@@ -5,7 +5,6 @@
 
 #include "app/commands.h"
 #include "app/exit_code.h"
-#include "app/frame_json.h"
 #include "renderer/capture/image_writer.h"
 #include "renderer/capture/output_dir.h"
 #include "renderer/capture/renderdoc.h"
@@ -91,31 +90,13 @@ int run_capture(const Options& o) {
         capture::write_png_rgba8(out.staging_path("final.png"), frame.width, frame.height,
                                  frame.rgba8);
     }
-    const DeviceInfo device = device_info(renderer);
-    capture::ReportInput report{.device_name = device.name,
-                                .driver = device.driver,
-                                .api_version = device.api_version,
-                                .scene = &scene,
-                                .width = frame.width,
-                                .height = frame.height,
-                                .settings = &settings,
-                                .gpu_ms = frame.gpu_ms,
-                                .cpu_ms = frame.cpu_ms,
-                                .validation_messages = renderer.validation_message_count()};
-    nlohmann::json json = capture::make_report(report);
-    json["passes"] = passes_json(frame);
-    json["counters"] = counters_note();
-    json["skipped"] = frame.skipped;
-    if (frame.covered_pixels) json["coverage"] = {{"covered_pixels", *frame.covered_pixels}};
-    json["msaa"] = {{"samples", frame.msaa.samples}};
-    if (frame.msaa.samples > 1) {
-        json["msaa"]["depth_resolve"] = frame.msaa.depth_resolve;
-        if (frame.msaa.edge_pixels) json["msaa"]["edge_pixels"] = *frame.msaa.edge_pixels;
-    }
-    if (frame.masked_discards)
-        json["masked_discards"] = {{"invoked", frame.masked_discards->invoked},
-                                   {"discarded", frame.masked_discards->discarded}};
-    capture::write_json(out.staging_path("report.json"), json);
+    const nlohmann::json report =
+        capture::frame_report({.device = device_info(renderer),
+                               .scene = scene,
+                               .settings = settings,
+                               .frame = frame,
+                               .validation_messages = renderer.validation_message_count()});
+    capture::write_json(out.staging_path("report.json"), report);
     if (o.dump_graph) std::printf("%s\n", renderer.graph_dump().c_str());
     out.commit();
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());
