@@ -10,7 +10,9 @@
 
 #include "app/bench.h"
 #include "app/commands.h"
+#include "app/exit_code.h"
 #include "renderer/capture/report.h"
+#include "renderer/device_info.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 #include "ui/headless.h"
@@ -23,7 +25,8 @@ struct RunResult {
     Summary frame;         // GPU: the frame's graph (+ the UI's with --ui)
     Summary wall;          // host: the whole frame, submit to result (+ ImGui, decode, composite)
     Summary beyond_scene;  // wall minus the scene graph's GPU ms: what is not the scene
-    std::vector<std::pair<std::string, Summary>> passes;  // execution order
+    std::vector<PassResult> passes;  // execution order, each as first seen
+    std::vector<Summary> pass_ms;    // GPU, one per pass
     std::vector<std::string> skipped;
     bool ui = false;  // the inspector drawn over each frame (bench --ui)
 };
@@ -36,17 +39,24 @@ struct Measured {
 
 using FrameSource = std::function<Measured()>;
 
+// The UI composite, timed as one more pass of a bench --ui run.
+PassResult ui_pass() {
+    PassResult pass;
+    pass.name = "ui";
+    return pass;
+}
+
 // Frames from each source in turn (warm-up, then measured): with --ui the plain frame and the
 // inspector's alternate, so both see the same machine and the ratio holds within one run.
 std::vector<RunResult> measure(const std::vector<FrameSource>& sources, const Options& o) {
     struct Samples {
         std::vector<double> frame_ms, wall_ms, beyond_ms;
-        std::vector<std::string> order;
+        std::vector<PassResult> order;
         std::map<std::string, std::vector<double>> pass_ms;
         std::vector<std::string> skipped;
-        void add(const std::string& name, double ms) {
-            if (!pass_ms.count(name)) order.push_back(name);
-            pass_ms[name].push_back(ms);
+        void add(const PassResult& pass, double ms) {
+            if (!pass_ms.count(pass.name)) order.push_back(pass);
+            pass_ms[pass.name].push_back(ms);
         }
     };
     for (int i = 0; i < o.bench_warmup; ++i)
@@ -63,8 +73,8 @@ std::vector<RunResult> measure(const std::vector<FrameSource>& sources, const Op
             s.frame_ms.push_back(m.frame->gpu_ms + m.ui_gpu_ms.value_or(0.0));
             s.beyond_ms.push_back(s.wall_ms.back() - m.frame->gpu_ms);
             s.skipped = m.frame->skipped;
-            for (const PassResult& p : m.frame->passes) s.add(p.name, p.gpu_ms);
-            if (m.ui_gpu_ms) s.add("ui", *m.ui_gpu_ms);
+            for (const PassResult& p : m.frame->passes) s.add(p, p.gpu_ms);
+            if (m.ui_gpu_ms) s.add(ui_pass(), *m.ui_gpu_ms);
         }
     }
     std::vector<RunResult> runs;
@@ -74,8 +84,9 @@ std::vector<RunResult> measure(const std::vector<FrameSource>& sources, const Op
         run.frame = summarize(samples[k].frame_ms);
         run.wall = summarize(samples[k].wall_ms);
         run.beyond_scene = summarize(samples[k].beyond_ms);
-        for (const auto& name : samples[k].order)
-            run.passes.emplace_back(name, summarize(samples[k].pass_ms[name]));
+        run.passes = samples[k].order;
+        for (const PassResult& p : run.passes)
+            run.pass_ms.push_back(summarize(samples[k].pass_ms[p.name]));
         run.ui = k > 0;
         runs.push_back(std::move(run));
     }
@@ -89,8 +100,10 @@ void print_run(const RunResult& run, size_t index) {
     if (run.ui) label += " + inspector";
     std::printf("\nrun %zu:%s\n", index + 1, label.c_str());
     std::printf("  %-18s %9s %9s %9s   (GPU ms)\n", "pass", "median", "min", "max");
-    for (const auto& [name, s] : run.passes) {
-        std::printf("  %-18s %9.3f %9.3f %9.3f\n", name.c_str(), s.median, s.min, s.max);
+    for (size_t i = 0; i < run.passes.size(); ++i) {
+        const Summary& s = run.pass_ms[i];
+        std::printf("  %-18s %9.3f %9.3f %9.3f\n", run.passes[i].name.c_str(), s.median, s.min,
+                    s.max);
     }
     std::printf("  %-18s %9.3f %9.3f %9.3f\n", "frame", run.frame.median, run.frame.min,
                 run.frame.max);
@@ -108,10 +121,12 @@ nlohmann::json runs_json(const std::vector<RunResult>& runs, const Settings& bas
     for (const RunResult& run : runs) {
         Settings settings = base;
         for (const auto& [name, value] : run.assignments) settings.set(name, value);
-        nlohmann::json passes = nlohmann::json::array();
-        for (const auto& [name, s] : run.passes) {
-            passes.push_back({{"name", name}, {"gpu_ms", summary_json(s)}});
-        }
+        const nlohmann::json passes = capture::passes_json(run.passes, [&](size_t i) {
+            nlohmann::json measured{{"gpu_ms", summary_json(run.pass_ms[i])}};
+            // bench's own row for the inspector's composite is no pass of the frame.
+            if (run.passes[i].name == ui_pass().name) measured["kind"] = "ui";
+            return measured;
+        });
         out.push_back({{"settings", settings.values()},
                        {"frame_ms", summary_json(run.frame)},
                        {"wall_ms", summary_json(run.wall)},
@@ -141,7 +156,7 @@ int run_bench(const Options& o) {
     renderer.set_scene(scene);
     std::printf("bench: %s at %ux%u, %d frames after %d warm-up, on %s%s\n", scene.name.c_str(),
                 o.size.width, o.size.height, o.bench_frames, o.bench_warmup,
-                renderer.device_report().candidate.name.c_str(),
+                device_info(renderer).name.c_str(),
                 o.ui ? ", inspector drawn offscreen every frame" : "");
     // --ui: the inspector at --size over a scene frame of --size, drawn every frame.
     std::unique_ptr<ui::HeadlessUi> ui;
@@ -194,7 +209,8 @@ int run_bench(const Options& o) {
                                                {"runs", runs_json(runs, base)}});
         std::printf("\nbench: wrote %s\n", o.out.c_str());
     }
-    return renderer.validation_message_count() ? 3 : 0;
+    // No count line: bench never printed one (the messages themselves came as they were seen).
+    return validation_exit_code(renderer, /*print_count=*/false);
 }
 
 }  // namespace ds::app

@@ -4,16 +4,16 @@
 #include <renderdoc_app.h>
 
 #include "app/commands.h"
-#include "app/frame_json.h"
+#include "app/exit_code.h"
 #include "renderer/capture/image_writer.h"
 #include "renderer/capture/output_dir.h"
 #include "renderer/capture/renderdoc.h"
 #include "renderer/capture/report.h"
 #include "renderer/common/error.h"
+#include "renderer/device_info.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/builtin/builtin.h"
 #include "renderer/scene/loader.h"
-#include "renderer/vk/capabilities.h"
 #include "ui/headless.h"
 
 #ifndef DS_CAPTURE_ROOT
@@ -35,15 +35,6 @@ Settings settings_from(const Options& o) {
 std::filesystem::path capture_dir(const Options& o, const scene::Scene& scene) {
     if (!o.out.empty()) return o.out;
     return capture::default_capture_dir(DS_CAPTURE_ROOT, scene.name);
-}
-
-// Validation messages were printed as they came; the exit code tells scripts.
-int exit_code_for(const Renderer& renderer) {
-    const uint64_t messages = renderer.validation_message_count();
-    if (messages == 0) return 0;
-    std::fprintf(stderr, "depthscope: %llu validation message(s)\n",
-                 static_cast<unsigned long long>(messages));
-    return 3;
 }
 
 }  // namespace
@@ -99,35 +90,17 @@ int run_capture(const Options& o) {
         capture::write_png_rgba8(out.staging_path("final.png"), frame.width, frame.height,
                                  frame.rgba8);
     }
-    const auto& device = renderer.device_report();
-    capture::ReportInput report{.device_name = device.candidate.name,
-                                .driver = device.driver_name + " " + device.driver_info,
-                                .api_version = vk::version_string(device.candidate.api_version),
-                                .scene = &scene,
-                                .width = frame.width,
-                                .height = frame.height,
-                                .settings = &settings,
-                                .gpu_ms = frame.gpu_ms,
-                                .cpu_ms = frame.cpu_ms,
-                                .validation_messages = renderer.validation_message_count()};
-    nlohmann::json json = capture::make_report(report);
-    json["passes"] = passes_json(frame);
-    json["counters"] = counters_note();
-    json["skipped"] = frame.skipped;
-    if (frame.covered_pixels) json["coverage"] = {{"covered_pixels", *frame.covered_pixels}};
-    json["msaa"] = {{"samples", frame.msaa.samples}};
-    if (frame.msaa.samples > 1) {
-        json["msaa"]["depth_resolve"] = frame.msaa.depth_resolve;
-        if (frame.msaa.edge_pixels) json["msaa"]["edge_pixels"] = *frame.msaa.edge_pixels;
-    }
-    if (frame.masked_discards)
-        json["masked_discards"] = {{"invoked", frame.masked_discards->invoked},
-                                   {"discarded", frame.masked_discards->discarded}};
-    capture::write_json(out.staging_path("report.json"), json);
+    const nlohmann::json report =
+        capture::frame_report({.device = device_info(renderer),
+                               .scene = scene,
+                               .settings = settings,
+                               .frame = frame,
+                               .validation_messages = renderer.validation_message_count()});
+    capture::write_json(out.staging_path("report.json"), report);
     if (o.dump_graph) std::printf("%s\n", renderer.graph_dump().c_str());
     out.commit();
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());
-    return exit_code_for(renderer);
+    return validation_exit_code(renderer);
 }
 
 int run_export_scene(const Options& o) {

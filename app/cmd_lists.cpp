@@ -4,29 +4,16 @@
 #include <string>
 
 #include "app/commands.h"
-#include "renderer/common/error.h"
+#include "renderer/device_info.h"
 #include "renderer/scene/builtin/builtin.h"
 #include "renderer/settings/settings.h"
-#include "renderer/vk/capabilities.h"
 
 namespace ds::app {
 
 int run_info(const Options& options) {
-    const auto reports = vk::probe_all_devices();
-    std::vector<vk::DeviceCandidate> candidates;
-    for (const auto& r : reports) candidates.push_back(r.candidate);
-    // The same rule the renderer uses. With no suitable device, still list them all (each says
-    // why it was refused); a --device request that matches nothing stays an error.
-    uint32_t selected = UINT32_MAX;
-    try {
-        selected = vk::select_device(candidates, options.device);
-    } catch (const Error&) {
-        if (!options.device.empty()) throw;
-    }
-    for (const auto& r : reports) {
-        std::printf("%s%s\n", r.candidate.index == selected ? "[selected] " : "",
-                    vk::format_report(r).c_str());
-    }
+    // A --device request that matches nothing throws; with no suitable device all are listed.
+    for (const ListedDevice& d : list_devices(options.device))
+        std::printf("%s%s\n", d.selected ? "[selected] " : "", d.description.c_str());
     return 0;
 }
 

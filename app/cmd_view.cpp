@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "app/commands.h"
+#include "app/exit_code.h"
 #include "renderer/common/error.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
@@ -100,7 +101,6 @@ int run_view(const Options& o) {
     ImGui::GetIO().IniFilename = persist ? ini_file.c_str() : nullptr;
     ui::apply_style();
     ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
-    int exit_code = 0;
     {
         ui::Presenter presenter(renderer.context(), window.format());
         ui::Inspector inspector(renderer, start.settings, std::move(scene), {});
@@ -143,12 +143,7 @@ int run_view(const Options& o) {
     }
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext(imgui);
-    if (const uint64_t messages = renderer.validation_message_count()) {
-        std::fprintf(stderr, "depthscope: %llu validation message(s)\n",
-                     static_cast<unsigned long long>(messages));
-        exit_code = 3;
-    }
-    return exit_code;
+    return validation_exit_code(renderer);
 }
 
 }  // namespace ds::app

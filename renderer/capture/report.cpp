@@ -29,18 +29,85 @@ nlohmann::json scene_summary(const scene::Scene& s) {
     };
 }
 
-nlohmann::json make_report(const ReportInput& in) {
-    nlohmann::json settings = nlohmann::json::object();
-    for (const auto& [name, value] : in.settings->values()) settings[name] = value;
+nlohmann::json counters_note() {
     return {
-        {"tool", "depthscope"},
-        {"device", {{"name", in.device_name}, {"driver", in.driver}, {"api", in.api_version}}},
-        {"scene", scene_summary(*in.scene)},
-        {"size", {{"width", in.width}, {"height", in.height}}},
-        {"settings", settings},
-        {"frame", {{"gpu_ms", in.gpu_ms}, {"cpu_ms", in.cpu_ms}}},
-        {"validation_messages", in.validation_messages},
+        {"stats",
+         "the device's pipeline statistics; lavapipe counts fragment shader invocations once "
+         "per rasterized 4x4 block, before the depth test, so they cannot show what a prepass "
+         "saves"},
+        {"shaded_fragments",
+         "exact: fragments that ran the fragment shader after the depth and alpha tests, "
+         "counted per pixel by the shaders (count_fragments=on)"},
     };
+}
+
+nlohmann::json passes_json(const std::vector<PassResult>& passes,
+                           const PassMeasurements& measured) {
+    nlohmann::json out = nlohmann::json::array();
+    for (size_t i = 0; i < passes.size(); ++i) {
+        nlohmann::json pass = {{"name", passes[i].name},
+                               {"kind", graph::pass_role_name(passes[i].role)}};
+        pass.update(measured(i));
+        out.push_back(std::move(pass));
+    }
+    return out;
+}
+
+namespace {
+
+nlohmann::json settings_json(const Settings& settings) {
+    nlohmann::json json = nlohmann::json::object();  // {} even when there are none
+    for (const auto& [name, value] : settings.values()) json[name] = value;
+    return json;
+}
+
+// One frame's measurements of a pass: GPU time, the device's statistics, the exact count.
+nlohmann::json frame_pass_measurements(const PassResult& p) {
+    nlohmann::json json = {
+        {"gpu_ms", p.gpu_ms},
+        {"stats",
+         {{"vertex_shader_invocations", p.vertex_shader_invocations},
+          {"fragment_shader_invocations", p.fragment_shader_invocations},
+          {"clipping_primitives", p.clipping_primitives}}},
+    };
+    if (p.shaded_fragments) json["shaded_fragments"] = *p.shaded_fragments;
+    return json;
+}
+
+nlohmann::json msaa_json(const MsaaResult& msaa) {
+    nlohmann::json json = {{"samples", msaa.samples}};
+    if (msaa.samples > 1) {
+        json["depth_resolve"] = msaa.depth_resolve;
+        if (msaa.edge_pixels) json["edge_pixels"] = *msaa.edge_pixels;
+    }
+    return json;
+}
+
+}  // namespace
+
+nlohmann::json frame_report(const ReportInput& in) {
+    const FrameResult& f = in.frame;
+    nlohmann::json json = {
+        {"tool", "depthscope"},
+        {"device",
+         {{"name", in.device.name}, {"driver", in.device.driver}, {"api", in.device.api_version}}},
+        {"scene", scene_summary(in.scene)},
+        {"size", {{"width", f.width}, {"height", f.height}}},
+        {"settings", settings_json(in.settings)},
+        {"frame", {{"gpu_ms", f.gpu_ms}, {"cpu_ms", f.cpu_ms}}},
+        {"validation_messages", in.validation_messages},
+        {"passes",
+         passes_json(f.passes, [&](size_t i) { return frame_pass_measurements(f.passes[i]); })},
+        {"counters", counters_note()},
+        {"skipped", f.skipped},
+        {"msaa", msaa_json(f.msaa)},
+    };
+    // Left out when not counted, so that a reader never takes "not counted" for zero.
+    if (f.covered_pixels) json["coverage"] = {{"covered_pixels", *f.covered_pixels}};
+    if (f.masked_discards)
+        json["masked_discards"] = {{"invoked", f.masked_discards->invoked},
+                                   {"discarded", f.masked_discards->discarded}};
+    return json;
 }
 
 void write_json(const std::filesystem::path& path, const nlohmann::json& json) {

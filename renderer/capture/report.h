@@ -1,31 +1,43 @@
 #pragma once
-// report.json: what was rendered, where, with which settings, and what it cost.
+// report.json: what was rendered, where, with which settings, and what it cost. The one place
+// that turns a frame's results into JSON: capture writes frame_report(), bench's runs use
+// passes_json().
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <string>
+#include <functional>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/device_info.h"
+#include "renderer/renderer.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
 
 namespace ds::capture {
 
+// Everything report.json says; the size and the timings are the frame's.
 struct ReportInput {
-    std::string device_name;
-    std::string driver;
-    std::string api_version;
-    const scene::Scene* scene = nullptr;
-    uint32_t width = 0;
-    uint32_t height = 0;
-    const Settings* settings = nullptr;
-    double gpu_ms = 0.0;
-    double cpu_ms = 0.0;
+    DeviceInfo device;
+    const scene::Scene& scene;
+    const Settings& settings;
+    const FrameResult& frame;
     uint64_t validation_messages = 0;
 };
 
-nlohmann::json make_report(const ReportInput& in);
+// report.json's object.
+nlohmann::json frame_report(const ReportInput& in);
+
+// What the caller measured of passes[index], as an object merged into the pass's entry.
+using PassMeasurements = std::function<nlohmann::json(size_t index)>;
+// Every passes array (report.json's, each bench run's) is built here, in execution order: each
+// entry says what the pass is (its name) and holds what the caller measured of it.
+nlohmann::json passes_json(const std::vector<PassResult>& passes, const PassMeasurements& measured);
+
 nlohmann::json scene_summary(const scene::Scene& scene);
+// What the device's statistics and the exact counters mean (the report keeps both numbers).
+nlohmann::json counters_note();
 
 // Writes pretty JSON; throws ds::Error when the file cannot be written.
 void write_json(const std::filesystem::path& path, const nlohmann::json& json);

@@ -1,0 +1,95 @@
+// frame_report() and passes_json(): which fields report.json has, and when the optional ones
+// appear (only when measured, so that "not counted" never reads as zero).
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "renderer/capture/report.h"
+
+namespace ds::capture {
+namespace {
+
+std::set<std::string> keys(const nlohmann::json& object) {
+    std::set<std::string> out;
+    for (const auto& item : object.items()) out.insert(item.key());
+    return out;
+}
+
+FrameResult two_pass_frame() {
+    FrameResult frame;
+    frame.width = 32;
+    frame.height = 16;
+    frame.gpu_ms = 2.5;
+    frame.passes.resize(2);
+    frame.passes[0].name = "depth_prepass";
+    frame.passes[0].vertex_shader_invocations = 30;
+    frame.passes[1].name = "forward";
+    frame.passes[1].shaded_fragments = 512;
+    frame.skipped = {"gtao: skipped (prepass off)"};
+    return frame;
+}
+
+nlohmann::json report_of(const FrameResult& frame, const Settings& settings = {}) {
+    scene::Scene scene;
+    scene.name = "made-up";
+    return frame_report({.device = {.name = "gpu", .driver = "driver 1", .api_version = "1.3.0"},
+                         .scene = scene,
+                         .settings = settings,
+                         .frame = frame,
+                         .validation_messages = 2});
+}
+
+TEST(Report, HasEveryFieldOfAFrameAndOnlyTheMeasuredOptionalOnes) {
+    const nlohmann::json report = report_of(two_pass_frame());
+    EXPECT_EQ(keys(report), (std::set<std::string>{"tool", "device", "scene", "size", "settings",
+                                                   "frame", "validation_messages", "passes",
+                                                   "counters", "skipped", "msaa"}));
+    EXPECT_EQ(report["device"]["driver"], "driver 1");
+    EXPECT_EQ(report["size"]["width"], 32);
+    EXPECT_EQ(report["frame"]["gpu_ms"], 2.5);
+    EXPECT_EQ(report["validation_messages"], 2);
+    EXPECT_EQ(report["skipped"].size(), 1u);
+    EXPECT_EQ(report["msaa"], (nlohmann::json{{"samples", 1}}));
+    EXPECT_TRUE(report["settings"].is_object());
+    EXPECT_EQ(report["settings"].size(), Settings{}.values().size());
+}
+
+TEST(Report, PassesKeepOrderStatsAndTheExactCountOnlyWhereCounted) {
+    const nlohmann::json passes = report_of(two_pass_frame())["passes"];
+    ASSERT_EQ(passes.size(), 2u);
+    EXPECT_EQ(passes[0]["name"], "depth_prepass");
+    EXPECT_EQ(keys(passes[0]), (std::set<std::string>{"name", "kind", "gpu_ms", "stats"}));
+    EXPECT_EQ(passes[0]["kind"], "frame");
+    EXPECT_EQ(passes[0]["stats"]["vertex_shader_invocations"], 30);
+    EXPECT_EQ(keys(passes[1]),
+              (std::set<std::string>{"name", "kind", "gpu_ms", "stats", "shaded_fragments"}));
+    EXPECT_EQ(passes[1]["shaded_fragments"], 512);
+}
+
+TEST(Report, OptionalCountsAppearWhenMeasured) {
+    FrameResult frame = two_pass_frame();
+    frame.covered_pixels = 100;
+    frame.masked_discards = DiscardCounts{.invoked = 9, .discarded = 4};
+    frame.msaa.samples = 4;
+    frame.msaa.depth_resolve = "shader";
+    frame.msaa.edge_pixels = 7;
+    const nlohmann::json report = report_of(frame);
+    EXPECT_EQ(report["coverage"], (nlohmann::json{{"covered_pixels", 100}}));
+    EXPECT_EQ(report["masked_discards"], (nlohmann::json{{"invoked", 9}, {"discarded", 4}}));
+    EXPECT_EQ(report["msaa"],
+              (nlohmann::json{{"samples", 4}, {"depth_resolve", "shader"}, {"edge_pixels", 7}}));
+}
+
+TEST(Report, PassesJsonMergesWhatTheCallerMeasured) {
+    FrameResult frame = two_pass_frame();
+    frame.passes[1].role = graph::PassRole::ReadBack;
+    const nlohmann::json passes = passes_json(frame.passes, [](size_t i) {
+        return nlohmann::json{{"run", i}};
+    });
+    EXPECT_EQ(passes, (nlohmann::json{{{"name", "depth_prepass"}, {"kind", "frame"}, {"run", 0}},
+                                      {{"name", "forward"}, {"kind", "readback"}, {"run", 1}}}));
+}
+
+}  // namespace
+}  // namespace ds::capture
