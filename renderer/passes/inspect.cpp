@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "renderer/format/format.h"
 #include "renderer/readback/host_readback.h"
 
 namespace ds::passes {
@@ -12,22 +13,6 @@ namespace {
 constexpr VkFormat kTexelFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr const char* kShader = "inspect.comp";
 constexpr const char* kFinal = "final";  // read back as it is (ReadbackCopyPass)
-
-bool is_integer(VkFormat format) {
-    switch (format) {
-        case VK_FORMAT_R8_UINT:
-        case VK_FORMAT_R16_UINT:
-        case VK_FORMAT_R32_UINT:
-        case VK_FORMAT_R32G32_UINT:
-        case VK_FORMAT_R32G32B32A32_UINT:
-        case VK_FORMAT_R8_SINT:
-        case VK_FORMAT_R16_SINT:
-        case VK_FORMAT_R32_SINT:
-            return true;
-        default:
-            return false;
-    }
-}
 
 ComputeKernel make_kernel(const PassServices& services) {
     return ComputeKernel(services, kShader, {KernelBinding::Sampled, KernelBinding::Storage},
@@ -84,7 +69,7 @@ void InspectPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
     info_.height = extent.height;
     info_.samples = samples;
     info_.sample = in.inspect.sample < samples ? in.inspect.sample : 0;
-    ComputeKernel& k = kernel(is_integer(info_.format), samples > 1);
+    ComputeKernel& k = kernel(format::is_integer(info_.format), samples > 1);
     const int32_t sample_index = int32_t(info_.sample);
     graph.add_pass(
         name(),

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cstring>
 
+#include "renderer/format/format.h"
 #include "renderer/readback/host_readback.h"
 
 namespace ds::passes {
@@ -15,23 +16,19 @@ bool wants_depth(const FrameInputs& in) {
            in.options.count_fragments;
 }
 
+uint32_t depth_bits(VkFormat format) {
+    const format::Info* info = format::find(format);
+    return info ? info->depth_bits : 0;
+}
+
 // The bits a depth texel holds where nothing was drawn (the clear value "far").
 uint32_t far_bits(VkFormat format, float far_depth) {
     if (far_depth == 0.0f) return 0u;
-    switch (format) {
-        case VK_FORMAT_D16_UNORM:
-        case VK_FORMAT_D16_UNORM_S8_UINT:
-            return 0xffffu;
-        case VK_FORMAT_D24_UNORM_S8_UINT:
-        case VK_FORMAT_X8_D24_UNORM_PACK32:
-            return 0xffffffu;
-        default:
-            return std::bit_cast<uint32_t>(far_depth);
+    switch (depth_bits(format)) {
+        case 16: return 0xffffu;
+        case 24: return 0xffffffu;
+        default: return std::bit_cast<uint32_t>(far_depth);
     }
-}
-
-bool is_d32(VkFormat format) {
-    return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
 }
 
 }  // namespace
@@ -40,7 +37,7 @@ uint64_t ReadbackCopyPass::covered_texels(std::span<const std::byte> depth, VkFo
                                           float far_depth) {
     const uint32_t far = far_bits(format, far_depth);
     uint64_t covered = 0;
-    if (format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_D16_UNORM_S8_UINT) {
+    if (depth_bits(format) == 16) {
         for (size_t i = 0; i + 2 <= depth.size(); i += 2) {
             uint16_t v;
             std::memcpy(&v, depth.data() + i, 2);
@@ -49,9 +46,7 @@ uint64_t ReadbackCopyPass::covered_texels(std::span<const std::byte> depth, VkFo
         return covered;
     }
     // D24 formats leave the top byte undefined.
-    const bool d24 =
-        format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_X8_D24_UNORM_PACK32;
-    const uint32_t mask = d24 ? 0xffffffu : 0xffffffffu;
+    const uint32_t mask = depth_bits(format) == 24 ? 0xffffffu : 0xffffffffu;
     for (size_t i = 0; i + 4 <= depth.size(); i += 4) {
         uint32_t v;
         std::memcpy(&v, depth.data() + i, 4);
@@ -116,7 +111,7 @@ void ReadbackCopyPass::collect(const FrameCollect& c, std::span<PassResult>, Fra
     frame.covered_pixels =
         covered_texels(depth, services_.depth_format, c.in.options.far_depth());
     if (c.in.read_back == ReadBack::WithMsaaDepth && c.in.options.msaa() &&
-        is_d32(services_.depth_format)) {
+        depth_bits(services_.depth_format) == 32) {
         frame.msaa.resolved_depth.resize(depth.size() / sizeof(float));
         std::memcpy(frame.msaa.resolved_depth.data(), depth.data(), depth.size());
     }

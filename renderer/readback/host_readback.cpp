@@ -3,33 +3,19 @@
 #include <cstring>
 
 #include "renderer/common/error.h"
+#include "renderer/format/format.h"
 #include "renderer/vk/context.h"
-#include "renderer/vk/image.h"
 
 namespace ds {
 namespace {
 
-// Bytes one texel takes in a buffer copy (the depth aspect alone for depth/stencil formats:
-// D24 copies out as 4 bytes, its top byte undefined).
+// Bytes one texel takes in a buffer copy of its depth (or colour) aspect: depth copies out
+// as 2 bytes (D16) or 4 (D24 in the low bits of a word, D32 as a float), whatever stencil the
+// format has.
 VkDeviceSize copy_texel_bytes(VkFormat format) {
-    switch (format) {
-        case VK_FORMAT_R8_UNORM:
-        case VK_FORMAT_R8_UINT:
-            return 1;
-        case VK_FORMAT_D16_UNORM:
-        case VK_FORMAT_D16_UNORM_S8_UINT:
-        case VK_FORMAT_R16_SFLOAT:
-        case VK_FORMAT_R16_UINT:
-            return 2;
-        case VK_FORMAT_R16G16B16A16_SFLOAT:
-        case VK_FORMAT_R32G32_UINT:
-            return 8;
-        case VK_FORMAT_R32G32B32A32_SFLOAT:
-        case VK_FORMAT_R32G32B32A32_UINT:
-            return 16;
-        default:  // 32-bit colour, R32, D32, D24
-            return 4;
-    }
+    if (const uint32_t depth_bits = format::find(format) ? format::find(format)->depth_bits : 0)
+        return depth_bits == 16 ? 2 : 4;
+    return format::bytes_per_texel(format);
 }
 
 // The previous frame's host read of this buffer finished before its fence signalled.
@@ -79,7 +65,7 @@ graph::BufferHandle HostReadback::declare_copy(graph::RenderGraph& graph,
 void HostReadback::record_copy(graph::PassContext& ctx, graph::ImageHandle image,
                                graph::BufferHandle buffer) const {
     const VkExtent2D extent = ctx.extent(image);
-    const VkImageAspectFlags aspect = vk::aspect_flags(ctx.format(image));
+    const VkImageAspectFlags aspect = format::aspect_flags(ctx.format(image));
     VkBufferImageCopy region{};  // bufferRowLength 0: tightly packed, row 0 = top
     region.imageSubresource = {aspect & ~VkImageAspectFlags(VK_IMAGE_ASPECT_STENCIL_BIT), 0, 0, 1};
     region.imageExtent = {extent.width, extent.height, 1};

@@ -1,8 +1,10 @@
 // Passes: the frame's passes in execution order with their GPU cost (this frame and the
-// median of the last 120), shader invocations and a bar each; the selected pass's reads and
-// writes (click one to view it); the frame-time history.
+// median of the last 120), shader invocations and a bar each, clear and read-back passes
+// folded into one row; the selected pass's reads and writes (click one to view it); the
+// frame-time history.
 #include <algorithm>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include <imgui.h>
@@ -28,6 +30,40 @@ void declarations(PanelIo& io, const PassResult& pass) {
     };
     list("reads ", pass.reads);
     list("writes", pass.writes);
+}
+
+void pass_row(PanelIo& io, const PassResult& p, double worst) {
+    const Inspector& in = io.inspector;
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    const bool selected = p.name == in.selected_pass();
+    std::string label = p.name;
+    if (p.role != graph::PassRole::Frame) label += std::string(" (") + graph::pass_role_name(p.role) + ")";
+    if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns))
+        io.actions.push_back(SelectPass{selected ? std::string() : p.name});
+    ImGui::TableNextColumn();
+    ImGui::Text("%.2f", p.gpu_ms);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.2f", in.history().median(p.name));
+    ImGui::TableNextColumn();
+    ImGui::Text("%llu", static_cast<unsigned long long>(p.vertex_shader_invocations));
+    ImGui::TableNextColumn();
+    ImGui::Text("%llu", static_cast<unsigned long long>(p.fragment_shader_invocations));
+    ImGui::TableNextColumn();
+    const float fraction = worst > 0 ? float(p.gpu_ms / worst) : 0.0f;
+    ImGui::ProgressBar(fraction, ImVec2(-1, ImGui::GetTextLineHeight()), "");
+}
+
+// The folded group of clear and read-back passes; true when it is open (then TreePop()).
+bool support_row(int count, double ms) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    char label[64];
+    std::snprintf(label, sizeof label, "clear + read-back (%d)###support", count);
+    const bool open = ImGui::TreeNodeEx(label, ImGuiTreeNodeFlags_SpanFullWidth);
+    ImGui::TableNextColumn();
+    ImGui::TextDisabled("%.2f", ms);
+    return open;
 }
 
 }  // namespace
@@ -57,23 +93,22 @@ void passes_panel(PanelIo& io, const PanelLayout& layout) {
         ImGui::TableSetupColumn("FS inv");
         ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableHeadersRow();
+        // The frame's own passes; clears and read-backs fold into one row (they are timed and
+        // barriered like any pass, but are not the frame a user tunes).
+        double support_ms = 0.0;
+        int support = 0;
         for (const PassResult& p : frame.passes) {
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            const bool selected = p.name == in.selected_pass();
-            if (ImGui::Selectable(p.name.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns))
-                io.actions.push_back(SelectPass{selected ? std::string() : p.name});
-            ImGui::TableNextColumn();
-            ImGui::Text("%.2f", p.gpu_ms);
-            ImGui::TableNextColumn();
-            ImGui::Text("%.2f", history.median(p.name));
-            ImGui::TableNextColumn();
-            ImGui::Text("%llu", static_cast<unsigned long long>(p.vertex_shader_invocations));
-            ImGui::TableNextColumn();
-            ImGui::Text("%llu", static_cast<unsigned long long>(p.fragment_shader_invocations));
-            ImGui::TableNextColumn();
-            const float fraction = worst > 0 ? float(p.gpu_ms / worst) : 0.0f;
-            ImGui::ProgressBar(fraction, ImVec2(-1, ImGui::GetTextLineHeight()), "");
+            if (p.role == graph::PassRole::Frame) {
+                pass_row(io, p, worst);
+            } else {
+                support_ms += p.gpu_ms;
+                ++support;
+            }
+        }
+        if (support > 0 && support_row(support, support_ms)) {
+            for (const PassResult& p : frame.passes)
+                if (p.role != graph::PassRole::Frame) pass_row(io, p, worst);
+            ImGui::TreePop();
         }
         ImGui::EndTable();
     }
