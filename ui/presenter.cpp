@@ -6,7 +6,6 @@
 #include <imgui.h>
 
 #include "renderer/common/error.h"
-#include "renderer/vk/barrier.h"
 #include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
 
@@ -61,6 +60,7 @@ Presenter::Presenter(vk::Context& context, VkFormat target_format)
     render_pass_ = create_render_pass(context_, format_);
     frames_ = std::make_unique<vk::FrameRing>(context_);
     graph_ = std::make_unique<graph::RenderGraph>(context_);
+    readback_ = std::make_unique<HostReadback>(context_);
 
     ImGui_ImplVulkan_InitInfo info{};
     info.Instance = context_.instance();
@@ -84,6 +84,7 @@ Presenter::~Presenter() {
     vkDeviceWaitIdle(context_.device());
     if (backend_) ImGui_ImplVulkan_Shutdown();
     frames_.reset();
+    readback_.reset();
     graph_.reset();
 }
 
@@ -127,7 +128,8 @@ void Presenter::ensure_display(uint32_t width, uint32_t height, vk::DestroyList&
 }
 
 void Presenter::record(VkCommandBuffer cmd, const Target& target, const graph::ExternalState& final,
-                       const ViewerBlit& viewer, ImDrawData* draw, vk::DestroyList& retired) {
+                       const ViewerBlit& viewer, ImDrawData* draw, vk::DestroyList& retired,
+                       bool read_back) {
     BlitRegion region{};
     const bool blit = clip_blit(viewer, {target.extent.width, target.extent.height}, region);
     graph::RenderGraph& g = *graph_;
@@ -142,6 +144,8 @@ void Presenter::record(VkCommandBuffer cmd, const Target& target, const graph::E
     out.initial = {};  // UNDEFINED: every UI frame draws the whole target
     out.final = final;
     const graph::ImageHandle ui = g.import_image("ui_target", out);
+    target_ = ui;
+    readback_->begin_frame(retired);
 
     graph::ImageHandle display;
     if (blit) {
@@ -181,9 +185,7 @@ void Presenter::record(VkCommandBuffer cmd, const Target& target, const graph::E
             vkCmdClearColorImage(ctx.cmd(), ctx.image(ui), ctx.layout(ui), &kBackground, 1, &range);
             if (!blit) return;
             // The clear and the blit both write the target: order them.
-            vk::memory_barrier(ctx.cmd(), VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                               VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                               VK_ACCESS_2_TRANSFER_WRITE_BIT);
+            ctx.dependency(ui, Access::TransferDst, Access::TransferDst);
             VkImageBlit b{};
             b.srcSubresource = b.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             b.srcOffsets[0] = {region.sx0, region.sy0, 0};
@@ -207,13 +209,28 @@ void Presenter::record(VkCommandBuffer cmd, const Target& target, const graph::E
             vkCmdEndRenderPass(ctx.cmd());
         };
     });
+    if (read_back) {
+        g.set_role(graph::PassRole::ReadBack);
+        g.add_pass(
+            "ui_readback",
+            [&](graph::PassBuilder& b) {
+                const graph::BufferHandle host = readback_->declare_copy(g, b, ui);
+                return [this, ui, host](graph::PassContext& ctx) {
+                    readback_->record_copy(ctx, ui, host);
+                };
+            },
+            graph::PassKind::Transfer);
+    }
     g.compile();
     last_graph_frame_ = g.execute(cmd);
 }
 
+// The UI composite's cost: its passes, not the offscreen read-back (a window has none).
 UiFrameStats Presenter::collect(uint64_t id) const {
     UiFrameStats stats;
-    for (const graph::PassResult& p : graph_->collect(id)) stats.gpu_ms += p.gpu_ms;
+    const std::vector<graph::PassResult> passes = graph_->collect(id);
+    for (size_t i = 0; i < passes.size(); ++i)
+        if (graph_->passes()[i].role != graph::PassRole::ReadBack) stats.gpu_ms += passes[i].gpu_ms;
     return stats;
 }
 
@@ -236,31 +253,21 @@ std::vector<uint8_t> Presenter::render_offscreen(VkExtent2D extent, const Viewer
             framebuffers_.erase(offscreen_.view());
             frame.retired.defer(std::move(offscreen_));
         }
-        if (offscreen_readback_) frame.retired.defer(std::move(offscreen_readback_));
         offscreen_ = vk::Image(
             context_, {extent.width, extent.height, 1, kOffscreenFormat,
                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
                            VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                        VK_SAMPLE_COUNT_1_BIT, "ui offscreen"});
-        offscreen_readback_ = vk::Buffer(context_, {VkDeviceSize(extent.width) * extent.height * 4,
-                                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                    vk::MemoryUsage::Readback, "ui read-back"});
     }
     const Target target{offscreen_.handle(), offscreen_.view(), extent};
-    record(frame.cmd, target, graph::ExternalState::transfer_src(), viewer, draw, frame.retired);
-    VkBufferImageCopy copy{};
-    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.imageExtent = {extent.width, extent.height, 1};
-    vkCmdCopyImageToBuffer(frame.cmd, offscreen_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           offscreen_readback_.handle(), 1, &copy);
-    vk::memory_barrier(frame.cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    record(frame.cmd, target, graph::ExternalState::transfer_src(), viewer, draw, frame.retired,
+           /*read_back=*/true);
     frames_->submit(frame);
     frames_->wait(frame);
     if (stats) *stats = collect(last_graph_frame_);
-    offscreen_readback_.invalidate();
+    const std::span<const std::byte> bgra = readback_->image_bytes(target_);
     std::vector<uint8_t> rgba(size_t(extent.width) * extent.height * 4);
-    const std::byte* bgra = offscreen_readback_.mapped();
+    if (bgra.size() < rgba.size()) throw Error("ui: the offscreen read-back is incomplete");
     for (size_t i = 0; i < rgba.size(); i += 4) {  // B8G8R8A8 -> RGBA
         rgba[i + 0] = uint8_t(bgra[i + 2]);
         rgba[i + 1] = uint8_t(bgra[i + 1]);

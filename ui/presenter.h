@@ -16,6 +16,7 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/graph/graph.h"
+#include "renderer/readback/host_readback.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/frame.h"
@@ -70,8 +71,10 @@ class Presenter {
     void wait_idle();
 
   private:
+    // `read_back`: a ui_readback pass copies the target to a host buffer (render_offscreen).
     void record(VkCommandBuffer cmd, const Target& target, const graph::ExternalState& final,
-                const ViewerBlit& viewer, ImDrawData* draw, vk::DestroyList& retired);
+                const ViewerBlit& viewer, ImDrawData* draw, vk::DestroyList& retired,
+                bool read_back = false);
     void ensure_display(uint32_t width, uint32_t height, vk::DestroyList& retired);
     VkFramebuffer framebuffer(const Target& target);
     UiFrameStats collect(uint64_t id) const;
@@ -86,7 +89,8 @@ class Presenter {
     vk::Image display_;  // the viewer's pixels, RGBA8
     vk::Buffer staging_;
     vk::Image offscreen_;
-    vk::Buffer offscreen_readback_;
+    std::unique_ptr<HostReadback> readback_;  // the offscreen target's pixels
+    graph::ImageHandle target_;               // the last frame's target in graph_
     uint64_t last_graph_frame_ = 0;
     bool backend_ = false;
 };
