@@ -75,7 +75,9 @@ void HostReadback::record_copy(graph::PassContext& ctx, graph::ImageHandle image
 
 graph::BufferHandle HostReadback::import_storage(graph::RenderGraph& graph, const std::string& name,
                                                  VkDeviceSize bytes, VkDeviceSize zeroed) {
-    vk::Buffer& b = buffer(name, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    // Shaders write it; transfer passes may fill or copy into it too.
+    vk::Buffer& b =
+        buffer(name, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     if (zeroed) {
         const std::vector<std::byte> zeros(zeroed);
         b.write(zeros.data(), zeros.size());  // flushed; the submit makes it visible

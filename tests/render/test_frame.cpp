@@ -145,3 +145,40 @@ TEST(Frame, DumpGraphPrintsPassesResourcesAndBarriers) {
         EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
     }
 }
+
+// Read-back, clears and the shader depth resolve are graph passes: dumped with their role and
+// barriers (the last ones make the host buffers visible to the host), reported with a kind
+// and a GPU time.
+TEST(Frame, ReadBackClearsAndTheShaderResolveArePassesOfTheGraph) {
+    auto dir = fresh_dir("dump-readback") / "cap";
+    auto r = run_depthscope(
+        "capture --validate --dump-graph --scene atrium --size 160x90 --set msaa=4 "
+        "--set count_fragments=on --out " +
+        dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* text :
+         {"clear_counts (transfer, clear)", "readback_final (transfer, readback)",
+          "readback_depth (transfer, readback)", "readback_counts (transfer, readback)",
+          "msaa_probe (compute, readback)", "read depth: transfer src [TRANSFER_SRC_OPTIMAL]",
+          "barrier readback_final: buffer, COPY|BLIT|RESOLVE|CLEAR/TRANSFER_WRITE -> HOST/HOST_READ"})
+        EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
+    const auto report = nlohmann::json::parse(read_file(dir / "report.json"));
+    std::vector<std::string> readback;
+    for (const auto& p : report["passes"]) {
+        ASSERT_TRUE(p.contains("kind")) << p.dump();
+        EXPECT_TRUE(p.contains("gpu_ms")) << p.dump();
+        if (p["kind"] == "readback") readback.push_back(p["name"]);
+    }
+    EXPECT_EQ(readback, (std::vector<std::string>{"readback_final", "readback_depth",
+                                                  "readback_counts", "msaa_probe"}));
+    EXPECT_EQ(find_pass(report, "clear_counts")["kind"], "clear");
+    // Lavapipe has no MAX depth resolve: the shader one is its own pass after the prepass.
+    if (report["msaa"]["depth_resolve"] == "shader") {
+        const auto names = pass_names(report["passes"]);
+        ASSERT_GE(names.size(), 3u);
+        EXPECT_EQ(names[1], "depth_prepass");
+        EXPECT_EQ(names[2], "depth_resolve");
+        EXPECT_NE(r.out.find("read msaa_depth: sampled (fragment) [SHADER_READ_ONLY_OPTIMAL]"),
+                  std::string::npos);
+    }
+}
