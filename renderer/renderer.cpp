@@ -177,8 +177,9 @@ Renderer::Impl::Impl(const RendererOptions& options) {
     graph = std::make_unique<graph::RenderGraph>(*context);
     readback = std::make_unique<HostReadback>(*context);
     const VkFormat depth_format = context->report().depth_format;
-    const passes::PassServices services{*context,    *compiler,    frame_layout.handle(),
-                                        material_layout.handle(), depth_format, *readback};
+    const passes::PassServices services{
+        *context,     *compiler, frame_layout.handle(), material_layout.handle(),
+        depth_format, *readback};
     passes = make_frame_passes(services);
     targets = std::make_unique<FrameTargets>(*context, passes::kFinalFormat, depth_format,
                                              passes::kHdrFormat);
@@ -350,8 +351,7 @@ passes::FrameOptions Renderer::Impl::options_for(const Settings& settings) {
 }
 
 // Targets, graph and read-back ready for a frame of `size` (a new size is a camera cut).
-void Renderer::Impl::begin(VkExtent2D size, const passes::FrameOptions& options,
-                           vk::Frame& frame) {
+void Renderer::Impl::begin(VkExtent2D size, const passes::FrameOptions& options, vk::Frame& frame) {
     if (size.width != last_size.width || size.height != last_size.height) cut = true;
     last_size = size;
     targets->ensure(size, options.count_fragments, options.samples, frame.retired);

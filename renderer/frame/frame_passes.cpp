@@ -18,8 +18,7 @@
 
 namespace ds {
 
-std::vector<std::unique_ptr<passes::FramePass>> make_frame_passes(
-    const passes::PassServices& s) {
+std::vector<std::unique_ptr<passes::FramePass>> make_frame_passes(const passes::PassServices& s) {
     using namespace passes;
     using Resolve = DepthResolvePass::After;
     using Copy = ReadbackCopyPass::What;

@@ -57,8 +57,8 @@ void FrameTargets::ensure_msaa(VkSampleCountFlagBits samples, vk::DestroyList& r
 }
 
 void FrameTargets::retire_all(vk::DestroyList& retired) {
-    for (vk::Image* image : {&msaa_depth_, &msaa_hdr_, &final_, &depth_, &counts_[0], &counts_[1],
-                             &counts_[2]}) {
+    for (vk::Image* image :
+         {&msaa_depth_, &msaa_hdr_, &final_, &depth_, &counts_[0], &counts_[1], &counts_[2]}) {
         if (*image) retired.defer(std::move(*image));
         *image = vk::Image{};
     }
@@ -76,9 +76,9 @@ void FrameTargets::ensure(VkExtent2D size, bool counts, VkSampleCountFlagBits sa
     }
     if (counts && !counts_[0]) {
         for (size_t i = 0; i < counts_.size(); ++i)
-            counts_[i] = make_image(
-                kCountFormat, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                kCountNames[i]);
+            counts_[i] = make_image(kCountFormat,
+                                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                    kCountNames[i]);
     }
     ensure_msaa(samples, retired);
 }
@@ -106,9 +106,8 @@ void FrameTargets::import(graph::RenderGraph& graph, const passes::FrameOptions&
     res.depth = import_image("depth", depth_, depth_semantic, after_copy(), copied);
     if (options.msaa()) {
         // Last frame's probe read them; the contents are not needed.
-        const graph::ExternalState unused = {VK_IMAGE_LAYOUT_UNDEFINED,
-                                             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                             VK_ACCESS_2_NONE};
+        const graph::ExternalState unused = {
+            VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE};
         res.msaa_depth = import_image("msaa_depth", msaa_depth_, depth_semantic, unused, probed());
         res.msaa_hdr =
             import_image("msaa_hdr", msaa_hdr_, graph::Semantic::HdrColor, unused, probed());

@@ -161,8 +161,9 @@ void PassContext::dependency(ImageHandle h, Access before, Access after) const {
     const ResourceInfo& r = graph_.resource(h.index, true, "dependency()");
     const PassInfo& pass = graph_.passes_[pass_];
     auto declared = [&](Access a) {
-        return std::any_of(pass.accesses.begin(), pass.accesses.end(),
-                           [&](const AccessInfo& i) { return i.resource == h.index && i.access == a; });
+        return std::any_of(pass.accesses.begin(), pass.accesses.end(), [&](const AccessInfo& i) {
+            return i.resource == h.index && i.access == a;
+        });
     };
     if (!declared(before) || !declared(after))
         throw Error("render graph: pass '" + pass.name + "', '" + r.name +

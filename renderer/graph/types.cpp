@@ -12,18 +12,24 @@ VkExtent2D ImageSize::resolve(VkExtent2D output) const {
 
 const char* pass_kind_name(PassKind kind) {
     switch (kind) {
-        case PassKind::Graphics: return "graphics";
-        case PassKind::Compute: return "compute";
-        case PassKind::Transfer: return "transfer";
+        case PassKind::Graphics:
+            return "graphics";
+        case PassKind::Compute:
+            return "compute";
+        case PassKind::Transfer:
+            return "transfer";
     }
     return "?";
 }
 
 const char* pass_role_name(PassRole role) {
     switch (role) {
-        case PassRole::Frame: return "frame";
-        case PassRole::Clear: return "clear";
-        case PassRole::ReadBack: return "readback";
+        case PassRole::Frame:
+            return "frame";
+        case PassRole::Clear:
+            return "clear";
+        case PassRole::ReadBack:
+            return "readback";
     }
     return "?";
 }

@@ -2,7 +2,6 @@
 
 #include "renderer/passes/pass_util.h"
 
-
 namespace ds::passes {
 
 using graph::Access;

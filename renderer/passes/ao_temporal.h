@@ -26,7 +26,8 @@ class AoTemporalPass final : public FramePass {
 
     explicit AoTemporalPass(const PassServices& services);  // builds the pipeline
     const char* name() const override { return "ao_temporal"; }
-    void rebuild_pipelines(vk::DestroyList& retired) override;       // fail-safe (ComputeKernel::rebuild)
+    void rebuild_pipelines(
+        vk::DestroyList& retired) override;  // fail-safe (ComputeKernel::rebuild)
     std::optional<std::string> skipped(const FrameInputs& in) const override;
 
     // Declares "ao_temporal" when resources.ao_filtered is valid: reads depth, ao_filtered and

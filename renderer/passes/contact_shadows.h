@@ -25,7 +25,8 @@ class ContactShadowsPass final : public FramePass {
 
     explicit ContactShadowsPass(const PassServices& services);  // builds the pipeline
     const char* name() const override { return "contact_shadows"; }
-    void rebuild_pipelines(vk::DestroyList& retired) override;  // fail-safe (ComputeKernel::rebuild)
+    void rebuild_pipelines(
+        vk::DestroyList& retired) override;  // fail-safe (ComputeKernel::rebuild)
     std::optional<std::string> skipped(const FrameInputs& in) const override;
 
     // Declares "contact_shadows" when in.options.contact_shadows: reads depth, normals

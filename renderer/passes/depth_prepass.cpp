@@ -5,8 +5,8 @@
 #include <string>
 
 #include "renderer/gpu_scene/gpu_scene.h"
-#include "renderer/readback/host_readback.h"
 #include "renderer/passes/scene_draw.h"
+#include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/functions.h"

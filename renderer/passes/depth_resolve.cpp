@@ -39,8 +39,7 @@ vk::Pipeline DepthResolvePass::create(const NoVariant&, const ShaderStages& s) c
                              s);
 }
 
-void DepthResolvePass::add(graph::RenderGraph& graph, const FrameInputs& in,
-                           FrameResources& res) {
+void DepthResolvePass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const FrameOptions& o = in.options;
     if (!o.msaa() || native_depth_resolve(services_.context.report(), o.reverse_z)) return;
     if (o.prepass != (after_ == After::Prepass)) return;

@@ -67,8 +67,8 @@ class ForwardPass final : public FramePass {
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         bool operator==(const Variant&) const = default;
         size_t hash() const {
-            return hash_fields(prepass_inputs, alpha_mask, non_invariant, counting,
-                               sample_shading, alpha_to_coverage, int(samples));
+            return hash_fields(prepass_inputs, alpha_mask, non_invariant, counting, sample_shading,
+                               alpha_to_coverage, int(samples));
         }
     };
 

@@ -54,8 +54,8 @@ inline constexpr uint32_t kFrameContactShadows = 1u << 2;  // contact image vali
 inline constexpr uint32_t kFrameReverseZ = 1u << 3;
 
 // Formats of the frame's imported colour targets (FrameTargets creates them).
-inline constexpr VkFormat kFinalFormat = VK_FORMAT_R8G8B8A8_SRGB;        // tonemap writes it
-inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;   // scene colour
+inline constexpr VkFormat kFinalFormat = VK_FORMAT_R8G8B8A8_SRGB;      // tonemap writes it
+inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // scene colour
 
 // The settings of one frame, parsed once (names and meanings: the registry's help text).
 struct FrameOptions {

@@ -47,7 +47,8 @@ class FramePass {
     virtual void on_sample_count_changed(VkSampleCountFlagBits /*samples*/) {}
     // After the fence: `own` are the results of the graph passes it added, in order (empty
     // when it added none); frame-level results (counts, read-back data) go into `frame`.
-    virtual void collect(const FrameCollect&, std::span<PassResult> /*own*/, FrameResult& /*frame*/) {}
+    virtual void collect(const FrameCollect&, std::span<PassResult> /*own*/,
+                         FrameResult& /*frame*/) {}
 };
 
 }  // namespace ds::passes

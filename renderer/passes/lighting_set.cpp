@@ -2,9 +2,9 @@
 
 #include <array>
 
-#include "renderer/vk/upload.h"
 #include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
+#include "renderer/vk/upload.h"
 
 namespace ds::passes {
 namespace {

@@ -93,8 +93,7 @@ void MsaaProbePass::record(graph::PassContext& ctx, const Bound& bound, int32_t 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.handle());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle(), 0, 1, &set_, 0,
                             nullptr);
-    const Push push{extent.width, extent.height, samples,
-                    copy_depth ? 1 : 0};
+    const Push push{extent.width, extent.height, samples, copy_depth ? 1 : 0};
     vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, group_count(extent.width), group_count(extent.height), 1);
 }

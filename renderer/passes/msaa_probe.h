@@ -39,7 +39,7 @@ class MsaaProbePass final : public FramePass {
     vk::DescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     vk::PipelineLayout layout_;
-    vk::Pipeline pipeline_;  // built by the first msaa frame
+    vk::Pipeline pipeline_;    // built by the first msaa frame
     graph::BufferHandle out_;  // this frame's, if probed
     VkDeviceSize depth_values_ = 0;
 };

@@ -13,8 +13,8 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/graph/graph.h"
-#include "renderer/passes/pipeline_variants.h"
 #include "renderer/passes/frame.h"
+#include "renderer/passes/pipeline_variants.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/frame.h"

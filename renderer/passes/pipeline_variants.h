@@ -70,7 +70,8 @@ class PipelineVariants {
 
     void rebuild(vk::DestroyList& retired) {
         std::vector<std::pair<Key, ShaderStages>> stages;
-        for (const auto& entry : pipelines_) stages.emplace_back(entry.first, compile_(entry.first));
+        for (const auto& entry : pipelines_)
+            stages.emplace_back(entry.first, compile_(entry.first));
         Map fresh;
         for (const auto& [key, s] : stages) fresh.emplace(key, create_(key, s));
         // An in-flight frame may still use the old pipelines.

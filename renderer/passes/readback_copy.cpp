@@ -25,9 +25,12 @@ uint32_t depth_bits(VkFormat format) {
 uint32_t far_bits(VkFormat format, float far_depth) {
     if (far_depth == 0.0f) return 0u;
     switch (depth_bits(format)) {
-        case 16: return 0xffffu;
-        case 24: return 0xffffffu;
-        default: return std::bit_cast<uint32_t>(far_depth);
+        case 16:
+            return 0xffffu;
+        case 24:
+            return 0xffffffu;
+        default:
+            return std::bit_cast<uint32_t>(far_depth);
     }
 }
 
@@ -79,8 +82,7 @@ std::vector<graph::ImageHandle> ReadbackCopyPass::images(const FrameInputs& in,
     return {};
 }
 
-void ReadbackCopyPass::add(graph::RenderGraph& graph, const FrameInputs& in,
-                           FrameResources& res) {
+void ReadbackCopyPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const std::vector<graph::ImageHandle> sources = images(in, res);
     if (sources.empty()) return;
     HostReadback& readback = services_.readback;
@@ -108,8 +110,7 @@ void ReadbackCopyPass::collect(const FrameCollect& c, std::span<PassResult>, Fra
     if (what_ != What::Depth) return;  // count sums are the counting passes' to report
     const std::span<const std::byte> depth = c.readback.image_bytes(c.res.depth);
     if (depth.empty()) return;
-    frame.covered_pixels =
-        covered_texels(depth, services_.depth_format, c.in.options.far_depth());
+    frame.covered_pixels = covered_texels(depth, services_.depth_format, c.in.options.far_depth());
     if (c.in.read_back == ReadBack::WithMsaaDepth && c.in.options.msaa() &&
         depth_bits(services_.depth_format) == 32) {
         frame.msaa.resolved_depth.resize(depth.size() / sizeof(float));

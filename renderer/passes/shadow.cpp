@@ -33,8 +33,7 @@ void ShadowPass::rebuild_pipelines(vk::DestroyList& retired) {
 ShaderStages ShadowPass::compile(const Variant& v) const {
     ShaderStages s;
     s.vert = services_.compiler.compile("shadow.vert", shader::Stage::Vertex).spirv;
-    if (v.mask)
-        s.frag = services_.compiler.compile("shadow.frag", shader::Stage::Fragment).spirv;
+    if (v.mask) s.frag = services_.compiler.compile("shadow.frag", shader::Stage::Fragment).spirv;
     return s;
 }
 

@@ -1,11 +1,10 @@
 #include "renderer/passes/transparent.h"
 
-#include "renderer/readback/host_readback.h"
-
 #include <vector>
 
 #include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/passes/scene_draw.h"
+#include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/functions.h"

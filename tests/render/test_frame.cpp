@@ -160,7 +160,8 @@ TEST(Frame, ReadBackClearsAndTheShaderResolveArePassesOfTheGraph) {
          {"clear_counts (transfer, clear)", "readback_final (transfer, readback)",
           "readback_depth (transfer, readback)", "readback_counts (transfer, readback)",
           "msaa_probe (compute, readback)", "read depth: transfer src [TRANSFER_SRC_OPTIMAL]",
-          "barrier readback_final: buffer, COPY|BLIT|RESOLVE|CLEAR/TRANSFER_WRITE -> HOST/HOST_READ"})
+          "barrier readback_final: buffer, COPY|BLIT|RESOLVE|CLEAR/TRANSFER_WRITE -> "
+          "HOST/HOST_READ"})
         EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
     const auto report = nlohmann::json::parse(read_file(dir / "report.json"));
     std::vector<std::string> readback;

@@ -99,8 +99,8 @@ TEST_F(GraphReadback, StorageBuffersStartZeroedByTheHost) {
                 [&](PassBuilder& b) {
                     b.write(counters, Access::TransferDst);
                     return [counters, fill_from](PassContext& ctx) {
-                        vkCmdFillBuffer(ctx.cmd(), ctx.buffer(counters), fill_from,
-                                        16 - fill_from, 0x11111111u);
+                        vkCmdFillBuffer(ctx.cmd(), ctx.buffer(counters), fill_from, 16 - fill_from,
+                                        0x11111111u);
                     };
                 },
                 PassKind::Transfer);
@@ -139,8 +139,9 @@ TEST_F(GraphReadback, TransferPassesHaveNoAttachmentsOrShaders) {
     auto transfer = [&](std::function<void(PassBuilder&)> setup) {
         graph_->add_pass("copy", setup, nullptr, PassKind::Transfer);
     };
-    expect_error([&] { transfer([&](PassBuilder& b) { b.write(image, Access::ColorAttachment); }); },
-                 "a transfer pass has no attachments");
+    expect_error(
+        [&] { transfer([&](PassBuilder& b) { b.write(image, Access::ColorAttachment); }); },
+        "a transfer pass has no attachments");
     expect_error([&] { transfer([&](PassBuilder& b) { b.read(image, Access::Sampled); }); },
                  "a transfer pass runs no shader (sampled)");
 }

@@ -130,8 +130,8 @@ GpuRig::GpuRig() {
 }
 
 passes::PassServices GpuRig::services() {
-    return {*context_,           *compiler_, frame_layout_.handle(), VK_NULL_HANDLE,
-            VK_FORMAT_D32_SFLOAT, *readback_};
+    return {*context_,      *compiler_,           frame_layout_.handle(),
+            VK_NULL_HANDLE, VK_FORMAT_D32_SFLOAT, *readback_};
 }
 
 void GpuRig::upload(const SyntheticFrame& frame) {
