@@ -4,16 +4,13 @@
 #include <string>
 #include <vector>
 
+#include "renderer/common/device_info.h"
+
 namespace ds {
 
 class Renderer;
 
 // The renderer's device, as report.json names it.
-struct DeviceInfo {
-    std::string name;         // "llvmpipe (LLVM 15.0.6, 256 bits)"
-    std::string driver;       // driver name and info: "llvmpipe Mesa 22.3.6 (LLVM 15.0.6)"
-    std::string api_version;  // "1.3.230"
-};
 DeviceInfo device_info(const Renderer& renderer);
 
 // One device as `depthscope info` lists it.

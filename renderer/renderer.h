@@ -1,8 +1,9 @@
 #pragma once
 // The renderer facade: Settings + Scene + Camera in, pixels and timings out. Inside, every
-// frame is a render graph: shadow -> depth_prepass -> gtao -> ao_spatial -> ao_temporal ->
+// frame is a render graph declared by the ordered pass list (renderer/frame/frame_passes.cpp):
+// shadow -> depth_prepass -> (depth_resolve) -> gtao -> ao_spatial -> ao_temporal ->
 // contact_shadows -> forward -> skybox -> transparent -> tonemap, passes switched off by the
-// settings left out.
+// settings left out, then the read-backs the caller asked for (FrameResult, frame_result.h).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -15,11 +16,11 @@
 #include "renderer/passes/frame_result.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
-#include "renderer/vk/capabilities.h"
 
 namespace ds::vk {
 class Context;
-}
+struct DeviceReport;  // renderer/vk/capabilities.h, for the few that need the device's facts
+}  // namespace ds::vk
 
 namespace ds {
 

@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/device_info.h"
-#include "renderer/renderer.h"
+#include "renderer/common/device_info.h"
+#include "renderer/passes/frame_result.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
 

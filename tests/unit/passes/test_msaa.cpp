@@ -13,6 +13,7 @@
 #include "renderer/common/error.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
+#include "renderer/vk/capabilities.h"
 #include "tests/unit/passes/shared_renderer.h"
 
 namespace {
