@@ -7,6 +7,21 @@
 namespace ds::app {
 namespace {
 
+// The subcommands whose results are read after parsing.
+struct Subcommands {
+    CLI::App* view = nullptr;
+    CLI::App* info = nullptr;
+    CLI::App* capture = nullptr;
+    CLI::App* export_cmd = nullptr;
+    CLI::App* bench = nullptr;
+};
+
+// --size texts, parsed once the command is known: the window's (view) or the render's.
+struct SizeTexts {
+    std::string render;
+    std::string window;
+};
+
 // Options every rendering subcommand shares.
 void add_render_options(CLI::App& cmd, Options& o, bool with_scene) {
     cmd.add_flag("--validate", o.validate,
@@ -18,6 +33,109 @@ void add_render_options(CLI::App& cmd, Options& o, bool with_scene) {
     }
     cmd.add_option("--set", o.sets, "setting as name=value, repeatable (see `settings`)")
         ->type_name("NAME=VALUE");
+}
+
+// The inspector: `depthscope [view] [--scene NAME|PATH] [--set k=v]... [--frames N]`.
+void add_view_options(CLI::App& cmd, Options& o, std::string& window_text) {
+    add_render_options(cmd, o, /*with_scene=*/true);
+    cmd.add_option("--frames", o.view_frames, "close the window after N frames (0: never)")
+        ->check(CLI::Range(0, 100000000));
+    cmd.add_option("--size", window_text, "window size WIDTHxHEIGHT (default 1600x900)");
+}
+
+CLI::App* add_capture_command(CLI::App& app, Options& o, std::string& size_text) {
+    auto* capture = app.add_subcommand(
+        "capture", "render one frame headless; write DIR/final.png and DIR/report.json");
+    add_render_options(*capture, o, /*with_scene=*/true);
+    capture->add_option("--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)");
+    capture->add_option("--out", o.out, "output folder (default captures/YYYYmmdd-HHMMSS-SCENE/)");
+    capture->add_flag("--renderdoc", o.renderdoc,
+                      "bracket the frame with RenderDoc's StartFrameCapture/EndFrameCapture and "
+                      "store the .rdc in the output folder (needs RenderDoc loaded)");
+
+    capture->add_flag("--ui", o.ui,
+                      "draw the inspector (every panel) over the frame into final.png, "
+                      "offscreen; --size is the UI's size");
+    capture->add_option("--view", o.view_resource,
+                        "with --ui: the graph resource the viewer shows (default final)");
+    capture->add_flag("--dump-graph", o.dump_graph,
+                      "print the compiled render graph: passes, resources, barriers");
+    return capture;
+}
+
+CLI::App* add_export_scene_command(CLI::App& app, Options& o) {
+    auto* export_cmd = app.add_subcommand(
+        "export-scene", "write a built-in scene as OUT.gltf + OUT.bin + PNG textures");
+    export_cmd->add_option("name", o.scene, "built-in scene name")->required();
+    export_cmd->add_option("out", o.out, "output .gltf path")->required();
+    export_cmd->add_option("--set", o.sets, "scene setting as name=value, repeatable");
+    return export_cmd;
+}
+
+CLI::App* add_bench_command(CLI::App& app, Options& o, std::string& size_text) {
+    auto* bench = app.add_subcommand(
+        "bench", "render frames headless for each settings combination; per-pass GPU medians");
+    add_render_options(*bench, o, /*with_scene=*/true);
+    bench->add_option("--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)");
+    bench->add_option("--frames", o.bench_frames, "measured frames per combination (default 20)")
+        ->check(CLI::Range(1, 100000));
+    bench->add_option("--warmup", o.bench_warmup, "unmeasured frames first (default 5)")
+        ->check(CLI::Range(0, 100000));
+    bench
+        ->add_option("--matrix", o.matrix,
+                     "setting=value1,value2,...: one run per combination, repeatable")
+        ->type_name("NAME=V1,V2");
+    bench->add_option("--json", o.out, "also write the results as JSON to FILE");
+    bench->add_flag("--ui", o.ui,
+                    "draw the inspector offscreen every frame (its cost is measured)");
+    return bench;
+}
+
+// Every subcommand in help order; the top level takes the inspector's options too.
+Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
+    Subcommands c;
+    add_view_options(app, o, sizes.window);
+    c.view = app.add_subcommand("view", "the inspector in a window (the default command)");
+    add_view_options(*c.view, o, sizes.window);
+
+    c.info = app.add_subcommand("info", "list Vulkan devices and their capabilities");
+    c.info->add_option("--device", o.device, "mark this device as selected (index or name)");
+    app.add_subcommand("scenes", "list the built-in scenes, one line each");
+    app.add_subcommand("settings", "list every setting: name, type, default, range, help");
+
+    c.capture = add_capture_command(app, o, sizes.render);
+    c.export_cmd = add_export_scene_command(app, o);
+    c.bench = add_bench_command(app, o, sizes.render);
+    return c;
+}
+
+// The inspector's options are also the top level's (`depthscope --scene x`); before a
+// command they would be lost or merged by surprise, so they must follow it.
+void reject_options_before_command(const CLI::App& app) {
+    if (app.get_subcommands().size() != 1) return;
+    for (const char* name : {"--validate", "--device", "--scene", "--set", "--frames", "--size"})
+        if (app.count(name))
+            throw UsageError(std::string(name) + " before the command '" +
+                             app.get_subcommands().front()->get_name() +
+                             "': put options after the command (see --help)");
+}
+
+// The parse's results into `o`: the command, the sizes and whether a scene was named.
+void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Options& o) {
+    if (c.view->parsed()) o.command = Command::View;
+    if (c.info->parsed()) o.command = Command::Info;
+    if (app.got_subcommand("scenes")) o.command = Command::Scenes;
+    if (app.got_subcommand("settings")) o.command = Command::Settings;
+    if (c.capture->parsed()) o.command = Command::Capture;
+    if (c.export_cmd->parsed()) o.command = Command::ExportScene;
+    if (c.bench->parsed()) o.command = Command::Bench;
+    if (!sizes.render.empty()) o.size = parse_size(sizes.render);
+    if (!sizes.window.empty()) {
+        o.window = parse_size(sizes.window);
+        if (o.command == Command::Default) o.size = o.window;  // the headless fallback
+    }
+    for (CLI::App* cmd : {&app, c.view, c.capture, c.bench})
+        if (cmd->count("--scene")) o.scene_given = true;
 }
 
 }  // namespace
@@ -40,63 +158,8 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
         "renders a headless capture of the default scene.\n"
         "Exit codes: 0 ok, 1 runtime or input error, 2 usage error, 3 validation messages seen."};
     app.require_subcommand(0, 1);
-    std::string size_text;
-
-    // The inspector: `depthscope [view] [--scene NAME|PATH] [--set k=v]... [--frames N]`.
-    std::string window_text;
-    auto add_view_options = [&](CLI::App& cmd) {
-        add_render_options(cmd, o, /*with_scene=*/true);
-        cmd.add_option("--frames", o.view_frames, "close the window after N frames (0: never)")
-            ->check(CLI::Range(0, 100000000));
-        cmd.add_option("--size", window_text, "window size WIDTHxHEIGHT (default 1600x900)");
-    };
-    add_view_options(app);
-    auto* view = app.add_subcommand("view", "the inspector in a window (the default command)");
-    add_view_options(*view);
-
-    auto* info = app.add_subcommand("info", "list Vulkan devices and their capabilities");
-    info->add_option("--device", o.device, "mark this device as selected (index or name)");
-    app.add_subcommand("scenes", "list the built-in scenes, one line each");
-    app.add_subcommand("settings", "list every setting: name, type, default, range, help");
-
-    auto* capture = app.add_subcommand(
-        "capture", "render one frame headless; write DIR/final.png and DIR/report.json");
-    add_render_options(*capture, o, /*with_scene=*/true);
-    capture->add_option("--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)");
-    capture->add_option("--out", o.out, "output folder (default captures/YYYYmmdd-HHMMSS-SCENE/)");
-    capture->add_flag("--renderdoc", o.renderdoc,
-                      "bracket the frame with RenderDoc's StartFrameCapture/EndFrameCapture and "
-                      "store the .rdc in the output folder (needs RenderDoc loaded)");
-
-    capture->add_flag("--ui", o.ui,
-                      "draw the inspector (every panel) over the frame into final.png, "
-                      "offscreen; --size is the UI's size");
-    capture->add_option("--view", o.view_resource,
-                        "with --ui: the graph resource the viewer shows (default final)");
-    capture->add_flag("--dump-graph", o.dump_graph,
-                      "print the compiled render graph: passes, resources, barriers");
-
-    auto* export_cmd = app.add_subcommand(
-        "export-scene", "write a built-in scene as OUT.gltf + OUT.bin + PNG textures");
-    export_cmd->add_option("name", o.scene, "built-in scene name")->required();
-    export_cmd->add_option("out", o.out, "output .gltf path")->required();
-    export_cmd->add_option("--set", o.sets, "scene setting as name=value, repeatable");
-
-    auto* bench = app.add_subcommand(
-        "bench", "render frames headless for each settings combination; per-pass GPU medians");
-    add_render_options(*bench, o, /*with_scene=*/true);
-    bench->add_option("--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)");
-    bench->add_option("--frames", o.bench_frames, "measured frames per combination (default 20)")
-        ->check(CLI::Range(1, 100000));
-    bench->add_option("--warmup", o.bench_warmup, "unmeasured frames first (default 5)")
-        ->check(CLI::Range(0, 100000));
-    bench
-        ->add_option("--matrix", o.matrix,
-                     "setting=value1,value2,...: one run per combination, repeatable")
-        ->type_name("NAME=V1,V2");
-    bench->add_option("--json", o.out, "also write the results as JSON to FILE");
-    bench->add_flag("--ui", o.ui,
-                    "draw the inspector offscreen every frame (its cost is measured)");
+    SizeTexts sizes;
+    const Subcommands commands = add_commands(app, o, sizes);
 
     try {
         app.parse(argc, argv);
@@ -108,30 +171,8 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
         throw UsageError(std::string(e.what()) + " (see --help)");
     }
 
-    // The inspector's options are also the top level's (`depthscope --scene x`); before a
-    // command they would be lost or merged by surprise, so they must follow it.
-    if (app.get_subcommands().size() == 1) {
-        for (const char* name :
-             {"--validate", "--device", "--scene", "--set", "--frames", "--size"})
-            if (app.count(name))
-                throw UsageError(std::string(name) + " before the command '" +
-                                 app.get_subcommands().front()->get_name() +
-                                 "': put options after the command (see --help)");
-    }
-    if (view->parsed()) o.command = Command::View;
-    if (info->parsed()) o.command = Command::Info;
-    if (app.got_subcommand("scenes")) o.command = Command::Scenes;
-    if (app.got_subcommand("settings")) o.command = Command::Settings;
-    if (capture->parsed()) o.command = Command::Capture;
-    if (export_cmd->parsed()) o.command = Command::ExportScene;
-    if (bench->parsed()) o.command = Command::Bench;
-    if (!size_text.empty()) o.size = parse_size(size_text);
-    if (!window_text.empty()) {
-        o.window = parse_size(window_text);
-        if (o.command == Command::Default) o.size = o.window;  // the headless fallback
-    }
-    for (CLI::App* cmd : {&app, view, capture, bench})
-        if (cmd->count("--scene")) o.scene_given = true;
+    reject_options_before_command(app);
+    apply_parse(app, commands, sizes, o);
     return std::nullopt;
 }
 

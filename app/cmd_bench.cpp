@@ -46,6 +46,13 @@ PassResult ui_pass() {
     return pass;
 }
 
+// The base settings with one combination of the matrix over them.
+Settings combined(const Settings& base, const std::vector<Assignment>& combination) {
+    Settings settings = base;
+    for (const auto& [name, value] : combination) settings.set(name, value);
+    return settings;
+}
+
 // Frames from each source in turn (warm-up, then measured): with --ui the plain frame and the
 // inspector's alternate, so both see the same machine and the ratio holds within one run.
 std::vector<RunResult> measure(const std::vector<FrameSource>& sources, const Options& o) {
@@ -119,8 +126,7 @@ nlohmann::json summary_json(const Summary& s) {
 nlohmann::json runs_json(const std::vector<RunResult>& runs, const Settings& base) {
     nlohmann::json out = nlohmann::json::array();
     for (const RunResult& run : runs) {
-        Settings settings = base;
-        for (const auto& [name, value] : run.assignments) settings.set(name, value);
+        const Settings settings = combined(base, run.assignments);
         const nlohmann::json passes = capture::passes_json(run.passes, [&](size_t i) {
             nlohmann::json measured{{"gpu_ms", summary_json(run.pass_ms[i])}};
             // bench's own row for the inspector's composite is no pass of the frame.
@@ -137,6 +143,60 @@ nlohmann::json runs_json(const std::vector<RunResult>& runs, const Settings& bas
     return out;
 }
 
+void print_header(const Options& o, const scene::Scene& scene, const Renderer& renderer) {
+    std::printf("bench: %s at %ux%u, %d frames after %d warm-up, on %s%s\n", scene.name.c_str(),
+                o.size.width, o.size.height, o.bench_frames, o.bench_warmup,
+                device_info(renderer).name.c_str(),
+                o.ui ? ", inspector drawn offscreen every frame" : "");
+}
+
+void print_ui_cost(const RunResult& plain, const RunResult& with_ui) {
+    // Frame times swing more than the UI costs on a CPU device: the UI's cost is what a
+    // frame spends beyond its scene graph's GPU time, against the same for plain frames.
+    const double cost = with_ui.beyond_scene.median - plain.beyond_scene.median;
+    std::printf(
+        "\ninspector: wall median %.1f -> %.1f ms; beyond the scene's GPU time "
+        "%.1f -> %.1f ms: the UI costs %.1f ms, %.1f %% of the frame\n",
+        plain.wall.median, with_ui.wall.median, plain.beyond_scene.median,
+        with_ui.beyond_scene.median, cost, 100.0 * cost / with_ui.wall.median);
+}
+
+// One combination's runs (plain, then with the inspector under --ui), printed as they end.
+void bench_combination(const Options& o, Renderer& renderer, const scene::Scene& scene,
+                       ui::HeadlessUi* ui, const Settings& base,
+                       const std::vector<Assignment>& combination, std::vector<RunResult>& runs) {
+    const Settings settings = combined(base, combination);
+    FrameResult last;
+    std::vector<FrameSource> sources{[&] {
+        last = renderer.render(scene.camera, settings, o.size.width, o.size.height, ReadBack::No);
+        return Measured{&last, std::nullopt};
+    }};
+    if (ui) {
+        for (const auto& [name, value] : combination)
+            ui->inspector().apply(ui::SetSetting{name, value});
+        sources.push_back([&] {
+            ui->frame();
+            return Measured{&ui->inspector().frame(), ui->last_stats().gpu_ms};
+        });
+    }
+    for (RunResult& run : measure(sources, o)) {
+        run.assignments = combination;
+        runs.push_back(std::move(run));
+        print_run(runs.back(), runs.size() - 1);
+    }
+    if (ui) print_ui_cost(runs[runs.size() - 2], runs.back());
+}
+
+void write_results(const Options& o, const scene::Scene& scene, const Settings& base,
+                   const std::vector<RunResult>& runs) {
+    capture::write_json_atomically(o.out, {{"scene", scene.name},
+                                           {"size", {o.size.width, o.size.height}},
+                                           {"frames", o.bench_frames},
+                                           {"warmup", o.bench_warmup},
+                                           {"runs", runs_json(runs, base)}});
+    std::printf("\nbench: wrote %s\n", o.out.c_str());
+}
+
 }  // namespace
 
 int run_bench(const Options& o) {
@@ -144,20 +204,14 @@ int run_bench(const Options& o) {
     for (const auto& assignment : o.sets) base.apply(assignment);
     const auto combinations = expand_matrix(o.matrix);
     // Check every combination before the first frame: a typo should not cost a long run.
-    for (const auto& combination : combinations) {
-        Settings s = base;
-        for (const auto& [name, value] : combination) s.set(name, value);
-    }
+    for (const auto& combination : combinations) combined(base, combination);  // throws
     const scene::Scene scene = scene::load_scene(o.scene, base);
     RendererOptions renderer_options;
     renderer_options.validate = o.validate;
     renderer_options.device = o.device;
     Renderer renderer(renderer_options);
     renderer.set_scene(scene);
-    std::printf("bench: %s at %ux%u, %d frames after %d warm-up, on %s%s\n", scene.name.c_str(),
-                o.size.width, o.size.height, o.bench_frames, o.bench_warmup,
-                device_info(renderer).name.c_str(),
-                o.ui ? ", inspector drawn offscreen every frame" : "");
+    print_header(o, scene, renderer);
     // --ui: the inspector at --size over a scene frame of --size, drawn every frame.
     std::unique_ptr<ui::HeadlessUi> ui;
     if (o.ui)
@@ -166,49 +220,9 @@ int run_bench(const Options& o) {
                                               VkExtent2D{o.size.width, o.size.height});
 
     std::vector<RunResult> runs;
-    for (const auto& combination : combinations) {
-        Settings settings = base;
-        for (const auto& [name, value] : combination) settings.set(name, value);
-        FrameResult last;
-        std::vector<FrameSource> sources{[&] {
-            last =
-                renderer.render(scene.camera, settings, o.size.width, o.size.height, ReadBack::No);
-            return Measured{&last, std::nullopt};
-        }};
-        if (ui) {
-            for (const auto& [name, value] : combination)
-                ui->inspector().apply(ui::SetSetting{name, value});
-            sources.push_back([&] {
-                ui->frame();
-                return Measured{&ui->inspector().frame(), ui->last_stats().gpu_ms};
-            });
-        }
-        for (RunResult& run : measure(sources, o)) {
-            run.assignments = combination;
-            runs.push_back(std::move(run));
-            print_run(runs.back(), runs.size() - 1);
-        }
-        if (ui) {
-            const RunResult& plain = runs[runs.size() - 2];
-            const RunResult& with_ui = runs.back();
-            // Frame times swing more than the UI costs on a CPU device: the UI's cost is what a
-            // frame spends beyond its scene graph's GPU time, against the same for plain frames.
-            const double cost = with_ui.beyond_scene.median - plain.beyond_scene.median;
-            std::printf(
-                "\ninspector: wall median %.1f -> %.1f ms; beyond the scene's GPU time "
-                "%.1f -> %.1f ms: the UI costs %.1f ms, %.1f %% of the frame\n",
-                plain.wall.median, with_ui.wall.median, plain.beyond_scene.median,
-                with_ui.beyond_scene.median, cost, 100.0 * cost / with_ui.wall.median);
-        }
-    }
-    if (!o.out.empty()) {
-        capture::write_json_atomically(o.out, {{"scene", scene.name},
-                                               {"size", {o.size.width, o.size.height}},
-                                               {"frames", o.bench_frames},
-                                               {"warmup", o.bench_warmup},
-                                               {"runs", runs_json(runs, base)}});
-        std::printf("\nbench: wrote %s\n", o.out.c_str());
-    }
+    for (const auto& combination : combinations)
+        bench_combination(o, renderer, scene, ui.get(), base, combination, runs);
+    if (!o.out.empty()) write_results(o, scene, base, runs);
     // No count line: bench never printed one (the messages themselves came as they were seen).
     return validation_exit_code(renderer, /*print_count=*/false);
 }

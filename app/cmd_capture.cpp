@@ -37,6 +37,78 @@ std::filesystem::path capture_dir(const Options& o, const scene::Scene& scene) {
     return capture::default_capture_dir(DS_CAPTURE_ROOT, scene.name);
 }
 
+// --renderdoc: RenderDoc's API, attached before any output exists; else null.
+std::unique_ptr<capture::RenderDoc> attach_renderdoc(const Options& o) {
+    std::unique_ptr<capture::RenderDoc> renderdoc;
+    if (o.renderdoc && !(renderdoc = capture::RenderDoc::attach())) {
+        throw UsageError(
+            "--renderdoc: RenderDoc is not loaded in this process (run under `renderdoccmd "
+            "capture`)");
+    }
+    return renderdoc;
+}
+
+// RenderDoc around the frame that is written, with --renderdoc; without it, nothing.
+struct FrameCapture {
+    capture::RenderDoc* renderdoc = nullptr;
+    void* device_pointer = nullptr;
+    std::filesystem::path path_template;
+
+    void start() const {
+        if (renderdoc) renderdoc->start(device_pointer, path_template);
+    }
+    void end() const {
+        if (renderdoc) renderdoc->end(device_pointer);
+    }
+};
+
+// --ui: the inspector over the frame, offscreen, through the window's code: the first UI
+// frame lays the panels out, the next ones show the frames before them. Writes final.png.
+FrameResult capture_ui_frame(const Options& o, Renderer& renderer, const Settings& settings,
+                             const scene::Scene& scene, const capture::OutputDir& out,
+                             const FrameCapture& rdc) {
+    ui::HeadlessUi headless(renderer, settings, scene, {o.size.width, o.size.height});
+    headless.inspector().queue(ui::SelectResource{o.view_resource});
+    std::vector<uint8_t> pixels;
+    for (int i = 0; i < kUiCaptureFrames; ++i) {
+        if (i + 1 == kUiCaptureFrames) rdc.start();
+        pixels = headless.frame();
+    }
+    rdc.end();
+    capture::write_png_rgba8(out.staging_path("final.png"), o.size.width, o.size.height, pixels);
+    FrameResult frame = headless.inspector().frame();
+    if (!frame.inspected) {
+        std::string images;
+        for (const ResourceSummary& r : frame.resources)
+            if (r.is_image) images += (images.empty() ? "" : ", ") + r.name;
+        throw UsageError("--view " + o.view_resource + ": this frame has no such image (" + images +
+                         ")");
+    }
+    return frame;
+}
+
+// The frame alone, read back and written as final.png.
+FrameResult capture_plain_frame(const Options& o, Renderer& renderer, const Settings& settings,
+                                const scene::Scene& scene, const capture::OutputDir& out,
+                                const FrameCapture& rdc) {
+    rdc.start();
+    FrameResult frame = renderer.render(scene.camera, settings, o.size.width, o.size.height);
+    rdc.end();
+    capture::write_png_rgba8(out.staging_path("final.png"), frame.width, frame.height, frame.rgba8);
+    return frame;
+}
+
+void write_report(const Renderer& renderer, const scene::Scene& scene, const Settings& settings,
+                  const FrameResult& frame, const capture::OutputDir& out) {
+    const nlohmann::json report =
+        capture::frame_report({.device = device_info(renderer),
+                               .scene = scene,
+                               .settings = settings,
+                               .frame = frame,
+                               .validation_messages = renderer.validation_message_count()});
+    capture::write_json(out.staging_path("report.json"), report);
+}
+
 }  // namespace
 
 int run_capture(const Options& o) {
@@ -46,12 +118,7 @@ int run_capture(const Options& o) {
     for (const auto& w : scene.warnings) {
         std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
     }
-    std::unique_ptr<capture::RenderDoc> renderdoc;
-    if (o.renderdoc && !(renderdoc = capture::RenderDoc::attach())) {
-        throw UsageError(
-            "--renderdoc: RenderDoc is not loaded in this process (run under `renderdoccmd "
-            "capture`)");
-    }
+    const std::unique_ptr<capture::RenderDoc> renderdoc = attach_renderdoc(o);
     capture::OutputDir out(capture_dir(o, scene));
 
     RendererOptions renderer_options;
@@ -59,44 +126,12 @@ int run_capture(const Options& o) {
     renderer_options.device = o.device;
     Renderer renderer(renderer_options);
     renderer.set_scene(scene);
-    void* device_pointer = RENDERDOC_DEVICEPOINTER_FROM_VKINSTANCE(renderer.instance());
-    FrameResult frame;
-    if (o.ui) {
-        // The inspector over the frame, offscreen, through the window's code: the first UI
-        // frame lays the panels out, the next ones show the frames before them.
-        ui::HeadlessUi headless(renderer, settings, scene, {o.size.width, o.size.height});
-        headless.inspector().queue(ui::SelectResource{o.view_resource});
-        std::vector<uint8_t> pixels;
-        for (int i = 0; i < kUiCaptureFrames; ++i) {
-            if (renderdoc && i + 1 == kUiCaptureFrames)
-                renderdoc->start(device_pointer, out.staging_path("frame"));
-            pixels = headless.frame();
-        }
-        if (renderdoc) renderdoc->end(device_pointer);
-        capture::write_png_rgba8(out.staging_path("final.png"), o.size.width, o.size.height,
-                                 pixels);
-        frame = headless.inspector().frame();
-        if (!frame.inspected) {
-            std::string images;
-            for (const ResourceSummary& r : frame.resources)
-                if (r.is_image) images += (images.empty() ? "" : ", ") + r.name;
-            throw UsageError("--view " + o.view_resource + ": this frame has no such image (" +
-                             images + ")");
-        }
-    } else {
-        if (renderdoc) renderdoc->start(device_pointer, out.staging_path("frame"));
-        frame = renderer.render(scene.camera, settings, o.size.width, o.size.height);
-        if (renderdoc) renderdoc->end(device_pointer);
-        capture::write_png_rgba8(out.staging_path("final.png"), frame.width, frame.height,
-                                 frame.rgba8);
-    }
-    const nlohmann::json report =
-        capture::frame_report({.device = device_info(renderer),
-                               .scene = scene,
-                               .settings = settings,
-                               .frame = frame,
-                               .validation_messages = renderer.validation_message_count()});
-    capture::write_json(out.staging_path("report.json"), report);
+    const FrameCapture rdc{renderdoc.get(),
+                           RENDERDOC_DEVICEPOINTER_FROM_VKINSTANCE(renderer.instance()),
+                           out.staging_path("frame")};
+    const FrameResult frame = o.ui ? capture_ui_frame(o, renderer, settings, scene, out, rdc)
+                                   : capture_plain_frame(o, renderer, settings, scene, out, rdc);
+    write_report(renderer, scene, settings, frame, out);
     if (o.dump_graph) std::printf("%s\n", renderer.graph_dump().c_str());
     out.commit();
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());

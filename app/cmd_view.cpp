@@ -39,6 +39,113 @@ std::string scene_spec(const scene::Scene& scene) {
     return scene.source.rfind(prefix, 0) == 0 ? scene.source.substr(prefix.size()) : scene.source;
 }
 
+// Where the inspector keeps its state between sessions; all empty without a config folder.
+struct ConfigFiles {
+    std::filesystem::path dir;
+    std::filesystem::path state_file;  // scene and settings
+    std::string ini_file;              // ImGui's window layout
+};
+
+ConfigFiles config_files() {
+    ConfigFiles f;
+    f.dir = ui::config_dir();
+    f.state_file = f.dir.empty() ? f.dir : f.dir / "settings.ini";
+    f.ini_file = f.dir.empty() ? std::string() : (f.dir / "imgui.ini").string();
+    return f;
+}
+
+// The saved state; lines it could not use are warnings, not errors.
+ui::SavedState load_saved_state(const std::filesystem::path& state_file) {
+    ui::SavedState saved = state_file.empty() ? ui::SavedState{} : ui::load_state(state_file);
+    for (const std::string& line : saved.ignored)
+        std::fprintf(stderr, "depthscope: warning: %s: ignored '%s'\n", state_file.c_str(),
+                     line.c_str());
+    return saved;
+}
+
+// A saved scene that no longer loads falls back to the default; a --scene does not.
+scene::Scene load_start_scene(const Options& o, const Start& start) {
+    try {
+        return scene::load_scene(start.scene, start.settings);
+    } catch (const std::exception& e) {
+        if (o.scene_given) throw;
+        std::fprintf(stderr, "depthscope: warning: saved scene: %s\n", e.what());
+        return scene::load_scene(o.scene, start.settings);
+    }
+}
+
+RendererOptions window_renderer_options(const Options& o) {
+    RendererOptions renderer_options;
+    renderer_options.validate = o.validate;
+    renderer_options.device = o.device;
+    renderer_options.instance_extensions = ui::Window::instance_extensions();
+    renderer_options.swapchain = true;
+    return renderer_options;
+}
+
+// The session's first line: the scene and the settings that differ from the defaults.
+void print_session(const scene::Scene& scene, const Settings& settings) {
+    std::string changed;
+    for (const std::string& name : settings.diff(Settings{}))
+        changed += " " + name + "=" + settings.get(name);
+    std::printf("depthscope: inspector: %s%s%s\n", scene.name.c_str(), changed.empty() ? "" : ",",
+                changed.c_str());
+    std::fflush(stdout);
+}
+
+// Whether state can be saved: an unusable config folder costs persistence, not the session.
+bool prepare_config_dir(const std::filesystem::path& dir) {
+    if (dir.empty()) return false;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir)) {
+        std::fprintf(stderr, "depthscope: warning: %s: %s; layout and settings will not be saved\n",
+                     dir.c_str(), ec ? ec.message().c_str() : "not a folder");
+        return false;
+    }
+    return true;
+}
+
+// Frames until the window closes or --frames are drawn; returns the count drawn.
+uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& presenter,
+                    ui::Inspector& inspector) {
+    uint64_t frames = 0;
+    while (!window.should_close() && (o.view_frames == 0 || frames < uint64_t(o.view_frames))) {
+        window.poll_events();
+        const VkExtent2D fb = window.framebuffer_size();
+        if (fb.width == 0 || fb.height == 0) {  // minimised: nothing to draw
+            window.wait_events();
+            continue;
+        }
+        ui::Window::Acquired target;
+        bool changed = false;
+        if (!window.acquire(target, changed)) {
+            if (changed) presenter.forget_targets();
+            window.wait_events();  // no swapchain to draw into yet
+            continue;
+        }
+        if (changed) presenter.forget_targets();
+        ImGui_ImplGlfw_NewFrame();  // input, then the frame
+        ImDrawData* draw = inspector.run_frame();
+        presenter.present({target.image, target.view, target.extent}, inspector.viewer_blit(), draw,
+                          target.acquired, target.rendered);
+        window.present(target, changed);
+        if (changed) presenter.forget_targets();
+        ++frames;
+    }
+    return frames;
+}
+
+// Scene, settings and window layout for the next session; a failed save is a warning.
+void save_session(const ConfigFiles& files, const ui::Inspector& inspector) {
+    try {
+        ui::save_state(files.state_file, scene_spec(inspector.scene()), inspector.settings());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "depthscope: warning: %s\n", e.what());
+    }
+    ImGui::SaveIniSettingsToDisk(files.ini_file.c_str());
+}
+
 }  // namespace
 
 bool display_available() {
@@ -48,95 +155,28 @@ bool display_available() {
 }
 
 int run_view(const Options& o) {
-    const std::filesystem::path dir = ui::config_dir();
-    const std::filesystem::path state_file = dir.empty() ? dir : dir / "settings.ini";
-    const std::string ini_file = dir.empty() ? std::string() : (dir / "imgui.ini").string();
-    const ui::SavedState saved = state_file.empty() ? ui::SavedState{} : ui::load_state(state_file);
-    for (const std::string& line : saved.ignored)
-        std::fprintf(stderr, "depthscope: warning: %s: ignored '%s'\n", state_file.c_str(),
-                     line.c_str());
+    const ConfigFiles files = config_files();
+    const ui::SavedState saved = load_saved_state(files.state_file);
     Start start = start_state(o, saved);
-    // A saved scene that no longer loads falls back to the default; a --scene does not.
-    scene::Scene scene = [&] {
-        try {
-            return scene::load_scene(start.scene, start.settings);
-        } catch (const std::exception& e) {
-            if (o.scene_given) throw;
-            std::fprintf(stderr, "depthscope: warning: saved scene: %s\n", e.what());
-            return scene::load_scene(o.scene, start.settings);
-        }
-    }();
+    scene::Scene scene = load_start_scene(o, start);
 
-    RendererOptions renderer_options;
-    renderer_options.validate = o.validate;
-    renderer_options.device = o.device;
-    renderer_options.instance_extensions = ui::Window::instance_extensions();
-    renderer_options.swapchain = true;
-    Renderer renderer(renderer_options);
+    Renderer renderer(window_renderer_options(o));
     // After the renderer, so it goes first: the swapchain and surface before the device.
     ui::Window window(o.window.width, o.window.height, "depthscope — " + scene.name);
     window.attach(renderer.context());
+    print_session(scene, start.settings);
 
-    {
-        std::string changed;
-        for (const std::string& name : start.settings.diff(Settings{}))
-            changed += " " + name + "=" + start.settings.get(name);
-        std::printf("depthscope: inspector: %s%s%s\n", scene.name.c_str(),
-                    changed.empty() ? "" : ",", changed.c_str());
-        std::fflush(stdout);
-    }
     ImGuiContext* imgui = ImGui::CreateContext();
-    // An unusable config folder costs persistence, not the session.
-    bool persist = !dir.empty();
-    if (persist) {
-        std::error_code ec;
-        std::filesystem::create_directories(dir, ec);
-        if (ec || !std::filesystem::is_directory(dir)) {
-            std::fprintf(stderr,
-                         "depthscope: warning: %s: %s; layout and settings will not be saved\n",
-                         dir.c_str(), ec ? ec.message().c_str() : "not a folder");
-            persist = false;
-        }
-    }
-    ImGui::GetIO().IniFilename = persist ? ini_file.c_str() : nullptr;
+    const bool persist = prepare_config_dir(files.dir);
+    ImGui::GetIO().IniFilename = persist ? files.ini_file.c_str() : nullptr;
     ui::apply_style();
     ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
     {
         ui::Presenter presenter(renderer.context(), window.format());
         ui::Inspector inspector(renderer, start.settings, std::move(scene), {});
-        uint64_t frames = 0;
-        while (!window.should_close() && (o.view_frames == 0 || frames < uint64_t(o.view_frames))) {
-            window.poll_events();
-            const VkExtent2D fb = window.framebuffer_size();
-            if (fb.width == 0 || fb.height == 0) {  // minimised: nothing to draw
-                window.wait_events();
-                continue;
-            }
-            ui::Window::Acquired target;
-            bool changed = false;
-            if (!window.acquire(target, changed)) {
-                if (changed) presenter.forget_targets();
-                window.wait_events();  // no swapchain to draw into yet
-                continue;
-            }
-            if (changed) presenter.forget_targets();
-            ImGui_ImplGlfw_NewFrame();  // input, then the frame
-            ImDrawData* draw = inspector.run_frame();
-            presenter.present({target.image, target.view, target.extent}, inspector.viewer_blit(),
-                              draw, target.acquired, target.rendered);
-            window.present(target, changed);
-            if (changed) presenter.forget_targets();
-            ++frames;
-        }
+        const uint64_t frames = run_frames(o, window, presenter, inspector);
         presenter.wait_idle();
-        if (persist) {
-            try {
-                ui::save_state(state_file, scene_spec(inspector.scene()), inspector.settings());
-            } catch (const std::exception& e) {
-                std::fprintf(stderr, "depthscope: warning: %s\n", e.what());
-            }
-        }
-        if (persist) ImGui::SaveIniSettingsToDisk(ini_file.c_str());
+        if (persist) save_session(files, inspector);
         const VkExtent2D last = window.framebuffer_size();
         std::printf("depthscope: %llu frames (window %ux%u)\n",
                     static_cast<unsigned long long>(frames), last.width, last.height);

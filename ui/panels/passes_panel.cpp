@@ -38,7 +38,8 @@ void pass_row(PanelIo& io, const PassResult& p, double worst) {
     ImGui::TableNextColumn();
     const bool selected = p.name == in.selected_pass();
     std::string label = p.name;
-    if (p.role != graph::PassRole::Frame) label += std::string(" (") + graph::pass_role_name(p.role) + ")";
+    if (p.role != graph::PassRole::Frame)
+        label += std::string(" (") + graph::pass_role_name(p.role) + ")";
     if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns))
         io.actions.push_back(SelectPass{selected ? std::string() : p.name});
     ImGui::TableNextColumn();
@@ -66,6 +67,64 @@ bool support_row(int count, double ms) {
     return open;
 }
 
+// The table of passes: the frame's own passes, then clears and read-backs folded into one
+// row (they are timed and barriered like any pass, but are not the frame a user tunes).
+void pass_table(PanelIo& io, const FrameResult& frame) {
+    double worst = 0.0;
+    for (const PassResult& p : frame.passes) worst = std::max(worst, p.gpu_ms);
+
+    const ImGuiTableFlags flags =
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
+    if (!ImGui::BeginTable("passes", 6, flags)) return;
+    ImGui::TableSetupColumn("pass");
+    ImGui::TableSetupColumn("ms");
+    ImGui::TableSetupColumn("median");
+    ImGui::TableSetupColumn("VS inv");
+    ImGui::TableSetupColumn("FS inv");
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableHeadersRow();
+    double support_ms = 0.0;
+    int support = 0;
+    for (const PassResult& p : frame.passes) {
+        if (p.role == graph::PassRole::Frame) {
+            pass_row(io, p, worst);
+        } else {
+            support_ms += p.gpu_ms;
+            ++support;
+        }
+    }
+    if (support > 0 && support_row(support, support_ms)) {
+        for (const PassResult& p : frame.passes)
+            if (p.role != graph::PassRole::Frame) pass_row(io, p, worst);
+        ImGui::TreePop();
+    }
+    ImGui::EndTable();
+}
+
+// The selected pass: its name, reads and writes, and shaded fragments where counted.
+void selected_pass(PanelIo& io, const FrameResult& frame) {
+    for (const PassResult& p : frame.passes) {
+        if (p.name != io.inspector.selected_pass()) continue;
+        ImGui::Separator();
+        ImGui::Text("%s", p.name.c_str());
+        declarations(io, p);
+        if (p.shaded_fragments)
+            ImGui::Text("shaded fragments %llu",
+                        static_cast<unsigned long long>(*p.shaded_fragments));
+    }
+}
+
+void frame_time_plot(const PassHistory& history) {
+    ImGui::Separator();
+    std::vector<float> plot(history.frame_ms.begin(), history.frame_ms.end());
+    float top = 0.0f;
+    for (float v : plot) top = std::max(top, v);
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "frame GPU ms, last %zu (max %.1f)", plot.size(), top);
+    ImGui::PlotLines("##frame", plot.data(), int(plot.size()), 0, overlay, 0.0f,
+                     top * 1.2f + 0.001f, ImVec2(ImGui::GetContentRegionAvail().x, 70));
+}
+
 }  // namespace
 
 void passes_panel(PanelIo& io, const PanelLayout& layout) {
@@ -75,63 +134,15 @@ void passes_panel(PanelIo& io, const PanelLayout& layout) {
         ImGui::End();
         return;
     }
-    const Inspector& in = io.inspector;
-    const FrameResult& frame = in.frame();
-    const PassHistory& history = in.history();
+    const FrameResult& frame = io.inspector.frame();
     ImGui::Text("frame %.2f ms GPU, %.2f ms CPU record, %ux%u", frame.gpu_ms, frame.cpu_ms,
                 frame.width, frame.height);
-    double worst = 0.0;
-    for (const PassResult& p : frame.passes) worst = std::max(worst, p.gpu_ms);
-
-    const ImGuiTableFlags flags =
-        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-    if (ImGui::BeginTable("passes", 6, flags)) {
-        ImGui::TableSetupColumn("pass");
-        ImGui::TableSetupColumn("ms");
-        ImGui::TableSetupColumn("median");
-        ImGui::TableSetupColumn("VS inv");
-        ImGui::TableSetupColumn("FS inv");
-        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableHeadersRow();
-        // The frame's own passes; clears and read-backs fold into one row (they are timed and
-        // barriered like any pass, but are not the frame a user tunes).
-        double support_ms = 0.0;
-        int support = 0;
-        for (const PassResult& p : frame.passes) {
-            if (p.role == graph::PassRole::Frame) {
-                pass_row(io, p, worst);
-            } else {
-                support_ms += p.gpu_ms;
-                ++support;
-            }
-        }
-        if (support > 0 && support_row(support, support_ms)) {
-            for (const PassResult& p : frame.passes)
-                if (p.role != graph::PassRole::Frame) pass_row(io, p, worst);
-            ImGui::TreePop();
-        }
-        ImGui::EndTable();
-    }
+    pass_table(io, frame);
     if (!frame.skipped.empty()) {
         for (const std::string& s : frame.skipped) ImGui::TextDisabled("%s", s.c_str());
     }
-    for (const PassResult& p : frame.passes) {
-        if (p.name != in.selected_pass()) continue;
-        ImGui::Separator();
-        ImGui::Text("%s", p.name.c_str());
-        declarations(io, p);
-        if (p.shaded_fragments)
-            ImGui::Text("shaded fragments %llu",
-                        static_cast<unsigned long long>(*p.shaded_fragments));
-    }
-    ImGui::Separator();
-    std::vector<float> plot(history.frame_ms.begin(), history.frame_ms.end());
-    float top = 0.0f;
-    for (float v : plot) top = std::max(top, v);
-    char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "frame GPU ms, last %zu (max %.1f)", plot.size(), top);
-    ImGui::PlotLines("##frame", plot.data(), int(plot.size()), 0, overlay, 0.0f,
-                     top * 1.2f + 0.001f, ImVec2(ImGui::GetContentRegionAvail().x, 70));
+    selected_pass(io, frame);
+    frame_time_plot(io.inspector.history());
     ImGui::End();
 }
 

@@ -50,72 +50,93 @@ std::string number_for_keyword(PanelIo& io, const SettingDef& def) {
     return text;
 }
 
-void knob(PanelIo& io, const SettingDef& def) {
-    const Settings& settings = io.inspector.settings();
-    const std::string& value = settings.get(def.name);
-    auto set = [&](std::string v) { io.actions.push_back(SetSetting{def.name, std::move(v)}); };
+// A change is an action: it applies on the next frame.
+void set_knob(PanelIo& io, const SettingDef& def, std::string value) {
+    io.actions.push_back(SetSetting{def.name, std::move(value)});
+}
+
+void bool_knob(PanelIo& io, const SettingDef& def, const std::string& value) {
+    bool on = value == "on";
+    if (ImGui::Checkbox(def.name.c_str(), &on)) set_knob(io, def, on ? "on" : "off");
+}
+
+void enum_knob(PanelIo& io, const SettingDef& def, const std::string& value) {
+    if (ImGui::BeginCombo(def.name.c_str(), value.c_str())) {
+        for (const std::string& c : def.choices)
+            if (ImGui::Selectable(c.c_str(), c == value)) set_knob(io, def, c);
+        ImGui::EndCombo();
+    }
+}
+
+// A small range as a list of the values it accepts, a wide one as a slider.
+void int_knob(PanelIo& io, const SettingDef& def, const std::string& value) {
     const char* label = def.name.c_str();
+    int v = std::stoi(value);
+    if (def.max - def.min <= 8) {
+        if (ImGui::BeginCombo(label, value.c_str())) {
+            for (int option : accepted_ints(def)) {
+                const std::string text = std::to_string(option);
+                if (ImGui::Selectable(text.c_str(), option == v)) set_knob(io, def, text);
+            }
+            ImGui::EndCombo();
+        }
+    } else if (ImGui::SliderInt(label, &v, int(def.min), int(def.max))) {
+        set_knob(io, def, std::to_string(v));
+    }
+}
+
+// A keyword ("material") or a number: the keyword's box, then the slider it disables.
+void float_knob(PanelIo& io, const SettingDef& def, const std::string& value) {
+    const bool keyword =
+        std::find(def.choices.begin(), def.choices.end(), value) != def.choices.end();
+    if (!def.choices.empty()) {
+        bool use_keyword = keyword;
+        const std::string box = def.choices.front() + "##" + def.name;
+        if (ImGui::Checkbox(box.c_str(), &use_keyword))
+            set_knob(io, def, use_keyword ? def.choices.front() : number_for_keyword(io, def));
+        tooltip(def);
+        ImGui::SameLine();
+    }
+    float v = keyword ? 0.5f : std::stof(value);
+    if (keyword) ImGui::BeginDisabled();
+    if (ImGui::SliderFloat(def.name.c_str(), &v, float(def.min), float(def.max), "%.3g")) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.4g", v);
+        set_knob(io, def, text);
+    }
+    if (keyword) ImGui::EndDisabled();
+}
+
+// Free text (lists), applied on Enter.
+void text_knob(PanelIo& io, const SettingDef& def, const std::string& value) {
+    char buffer[256];
+    std::snprintf(buffer, sizeof buffer, "%s", value.c_str());
+    if (ImGui::InputText(def.name.c_str(), buffer, sizeof buffer,
+                         ImGuiInputTextFlags_EnterReturnsTrue))
+        set_knob(io, def, buffer);
+}
+
+// One knob: its type's widget, yellow when it differs from the default, the help as tooltip.
+void knob(PanelIo& io, const SettingDef& def) {
+    const std::string& value = io.inspector.settings().get(def.name);
     const bool changed = value != def.default_value;
     if (changed) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.4f, 1.0f));
     switch (def.type) {
-        case SettingType::Bool: {
-            bool on = value == "on";
-            if (ImGui::Checkbox(label, &on)) set(on ? "on" : "off");
+        case SettingType::Bool:
+            bool_knob(io, def, value);
             break;
-        }
-        case SettingType::Enum: {
-            if (ImGui::BeginCombo(label, value.c_str())) {
-                for (const std::string& c : def.choices)
-                    if (ImGui::Selectable(c.c_str(), c == value)) set(c);
-                ImGui::EndCombo();
-            }
+        case SettingType::Enum:
+            enum_knob(io, def, value);
             break;
-        }
-        case SettingType::Int: {
-            int v = std::stoi(value);
-            if (def.max - def.min <= 8) {
-                if (ImGui::BeginCombo(label, value.c_str())) {
-                    for (int option : accepted_ints(def)) {
-                        const std::string text = std::to_string(option);
-                        if (ImGui::Selectable(text.c_str(), option == v)) set(text);
-                    }
-                    ImGui::EndCombo();
-                }
-            } else if (ImGui::SliderInt(label, &v, int(def.min), int(def.max))) {
-                set(std::to_string(v));
-            }
+        case SettingType::Int:
+            int_knob(io, def, value);
             break;
-        }
-        case SettingType::Float: {
-            // A keyword ("material") or a number.
-            const bool keyword =
-                std::find(def.choices.begin(), def.choices.end(), value) != def.choices.end();
-            if (!def.choices.empty()) {
-                bool use_keyword = keyword;
-                const std::string box = def.choices.front() + "##" + def.name;
-                if (ImGui::Checkbox(box.c_str(), &use_keyword))
-                    set(use_keyword ? def.choices.front() : number_for_keyword(io, def));
-                tooltip(def);
-                ImGui::SameLine();
-            }
-            float v = keyword ? 0.5f : std::stof(value);
-            if (keyword) ImGui::BeginDisabled();
-            if (ImGui::SliderFloat(label, &v, float(def.min), float(def.max), "%.3g")) {
-                char text[32];
-                std::snprintf(text, sizeof text, "%.4g", v);
-                set(text);
-            }
-            if (keyword) ImGui::EndDisabled();
+        case SettingType::Float:
+            float_knob(io, def, value);
             break;
-        }
-        default: {  // free text (lists)
-            char buffer[256];
-            std::snprintf(buffer, sizeof buffer, "%s", value.c_str());
-            if (ImGui::InputText(label, buffer, sizeof buffer,
-                                 ImGuiInputTextFlags_EnterReturnsTrue))
-                set(buffer);
+        default:  // Map: free text
+            text_knob(io, def, value);
             break;
-        }
     }
     if (changed) ImGui::PopStyleColor();
     tooltip(def);

@@ -26,10 +26,9 @@ constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoBackground | ImGuiWindowF
                                     ImGuiWindowFlags_NoScrollWithMouse |
                                     ImGuiWindowFlags_NoCollapse;
 
-void controls(PanelIo& io, const FrameResult& frame) {
+// The resource picker, with the shown image's size and semantic after it.
+void resource_picker(PanelIo& io, const FrameResult& frame, const InspectedImage* image) {
     ViewerState& v = io.viewer;
-    const InspectedImage* image = frame.inspected ? &*frame.inspected : nullptr;
-    // Resource picker.
     ImGui::SetNextItemWidth(190);
     if (ImGui::BeginCombo("##resource", v.resource.c_str())) {
         for (const ResourceSummary& r : frame.resources) {
@@ -44,6 +43,10 @@ void controls(PanelIo& io, const FrameResult& frame) {
         ImGui::TextDisabled("%ux%u %s", image->width, image->height,
                             graph::semantic_name(image->semantic));
     }
+}
+
+// What only some images have: a sample index (MSAA) and the depth mode (perspective depth).
+void image_options(ViewerState& v, const InspectedImage* image) {
     if (image && image->samples > 1) {
         ImGui::SameLine();
         int sample = int(v.sample);
@@ -59,10 +62,12 @@ void controls(PanelIo& io, const FrameResult& frame) {
         ImGui::RadioButton("raw", &mode, int(DepthView::Raw));
         v.params.depth = DepthView(mode);
     }
-    // Range.
+}
+
+// The value range mapped to black and white: auto-fit or manual, in the view's unit.
+void range_controls(ViewerState& v, const DecodedView& view) {
     ImGui::Checkbox("auto-fit", &v.params.auto_fit);
     ImGui::SameLine();
-    const DecodedView& view = io.inspector.view();
     if (v.params.auto_fit) {  // show what auto-fit chose; editing switches to manual
         v.params.black = view.black;
         v.params.white = view.white;
@@ -79,6 +84,10 @@ void controls(PanelIo& io, const FrameResult& frame) {
         ImGui::SameLine();
         ImGui::TextDisabled("%s", view.unit.c_str());
     }
+}
+
+// The channel shown (all or one), and the exposure of an HDR colour.
+void channel_controls(ViewerState& v, const InspectedImage* image) {
     ImGui::SameLine();
     ImGui::TextUnformatted(" channel");
     static const char* kChannels[] = {"all", "R", "G", "B", "A"};
@@ -91,7 +100,9 @@ void controls(PanelIo& io, const FrameResult& frame) {
         ImGui::SetNextItemWidth(120);
         ImGui::SliderFloat("EV", &v.params.exposure, -8.0f, 8.0f, "%.1f");
     }
-    // Zoom and mouse mode.
+}
+
+void zoom_controls(ViewerState& v, const DecodedView& view) {
     ImGui::Text("zoom %.3gx", v.zoom);
     ImGui::SameLine();
     if (ImGui::SmallButton("1:1")) {
@@ -103,7 +114,10 @@ void controls(PanelIo& io, const FrameResult& frame) {
         v.zoom = std::min(v.w / float(view.width), v.h / float(view.height));
         v.centre = {0.5f, 0.5f};
     }
-    ImGui::SameLine();
+}
+
+// What the mouse drives over the image: the camera or the image's zoom and pan.
+void mouse_mode(ViewerState& v) {
     int mouse = int(v.mouse);
     ImGui::TextUnformatted("  mouse:");
     ImGui::SameLine();
@@ -116,6 +130,21 @@ void controls(PanelIo& io, const FrameResult& frame) {
         "Camera: left drag orbits, middle drag pans, wheel dollies, right drag + WASD/QE flies "
         "(shift: faster), F frames the scene.\nImage (or hold Ctrl): wheel zooms at the cursor, "
         "drag pans. Nearest-neighbour when zoomed in.");
+}
+
+// The decode controls above the image, a row each: the resource, its range and channel, the
+// zoom and mouse mode.
+void controls(PanelIo& io, const FrameResult& frame) {
+    ViewerState& v = io.viewer;
+    const InspectedImage* image = frame.inspected ? &*frame.inspected : nullptr;
+    const DecodedView& view = io.inspector.view();
+    resource_picker(io, frame, image);
+    image_options(v, image);
+    range_controls(v, view);
+    channel_controls(v, image);
+    zoom_controls(v, view);
+    ImGui::SameLine();
+    mouse_mode(v);
 }
 
 void legend(const DecodedView& view) {
