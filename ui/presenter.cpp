@@ -127,63 +127,50 @@ void Presenter::ensure_display(uint32_t width, uint32_t height, vk::DestroyList&
                               vk::MemoryUsage::Upload, "viewer staging"});
 }
 
-void Presenter::record(VkCommandBuffer cmd, const Target& target, const graph::ExternalState& final,
-                       const ViewerBlit& viewer, ImDrawData* draw, vk::DestroyList& retired,
-                       bool read_back) {
-    BlitRegion region{};
-    const bool blit = clip_blit(viewer, {target.extent.width, target.extent.height}, region);
+// ui_upload: the viewer's decoded pixels from the staging buffer into the display image.
+graph::ImageHandle Presenter::add_upload(const ViewerBlit& viewer, vk::DestroyList& retired) {
     graph::RenderGraph& g = *graph_;
-    g.begin_frame(target.extent, retired);
+    ensure_display(viewer.width, viewer.height, retired);
+    staging_.write(viewer.rgba8->data(), viewer.rgba8->size());
+    graph::ExternalImage d;
+    d.image = display_.handle();
+    d.view = display_.view();
+    d.desc = {.format = kDisplayFormat,
+              .size = graph::ImageSize::fixed(viewer.width, viewer.height),
+              .semantic = graph::Semantic::LdrColor};
+    d.initial = {};  // rewritten every frame
+    const graph::ImageHandle display = g.import_image("viewer_display", d);
+    graph::ExternalBuffer s;
+    s.buffer = staging_.handle();
+    s.size = staging_.size();
+    s.initial = {VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_HOST_BIT,
+                 VK_ACCESS_2_HOST_WRITE_BIT};
+    const graph::BufferHandle staging = g.import_buffer("viewer_staging", s);
+    g.add_pass("ui_upload", [&](graph::PassBuilder& b) {
+        b.read(staging, Access::TransferSrc);
+        b.write(display, Access::TransferDst);
+        return [=, w = viewer.width, h = viewer.height](graph::PassContext& ctx) {
+            VkBufferImageCopy copy{};
+            copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            copy.imageExtent = {w, h, 1};
+            vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(staging), ctx.image(display),
+                                   ctx.layout(display), 1, &copy);
+        };
+    });
+    return display;
+}
 
-    graph::ExternalImage out;
-    out.image = target.image;
-    out.view = target.view;
-    out.desc = {.format = format_,
-                .size = graph::ImageSize::fixed(target.extent.width, target.extent.height),
-                .semantic = graph::Semantic::LdrColor};
-    out.initial = {};  // UNDEFINED: every UI frame draws the whole target
-    out.final = final;
-    const graph::ImageHandle ui = g.import_image("ui_target", out);
-    target_ = ui;
-    readback_->begin_frame(retired);
-
-    graph::ImageHandle display;
-    if (blit) {
-        ensure_display(viewer.width, viewer.height, retired);
-        staging_.write(viewer.rgba8->data(), viewer.rgba8->size());
-        graph::ExternalImage d;
-        d.image = display_.handle();
-        d.view = display_.view();
-        d.desc = {.format = kDisplayFormat,
-                  .size = graph::ImageSize::fixed(viewer.width, viewer.height),
-                  .semantic = graph::Semantic::LdrColor};
-        d.initial = {};  // rewritten every frame
-        display = g.import_image("viewer_display", d);
-        graph::ExternalBuffer s;
-        s.buffer = staging_.handle();
-        s.size = staging_.size();
-        s.initial = {VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_HOST_BIT,
-                     VK_ACCESS_2_HOST_WRITE_BIT};
-        const graph::BufferHandle staging = g.import_buffer("viewer_staging", s);
-        g.add_pass("ui_upload", [&](graph::PassBuilder& b) {
-            b.read(staging, Access::TransferSrc);
-            b.write(display, Access::TransferDst);
-            return [=, w = viewer.width, h = viewer.height](graph::PassContext& ctx) {
-                VkBufferImageCopy copy{};
-                copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-                copy.imageExtent = {w, h, 1};
-                vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(staging), ctx.image(display),
-                                       ctx.layout(display), 1, &copy);
-            };
-        });
-    }
-    g.add_pass("ui_viewer", [&](graph::PassBuilder& b) {
-        if (blit) b.read(display, Access::TransferSrc);
+// ui_viewer: clears the target and blits the display image (when there is one) into the
+// viewer's rectangle.
+void Presenter::add_viewer(graph::ImageHandle ui, graph::ImageHandle display,
+                           const BlitRegion& region, bool nearest) {
+    graph_->add_pass("ui_viewer", [&](graph::PassBuilder& b) {
+        if (display.valid()) b.read(display, Access::TransferSrc);
         b.write(ui, Access::TransferDst);
-        return [=, nearest = viewer.nearest](graph::PassContext& ctx) {
+        return [=](graph::PassContext& ctx) {
             const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
             vkCmdClearColorImage(ctx.cmd(), ctx.image(ui), ctx.layout(ui), &kBackground, 1, &range);
-            if (!blit) return;
+            if (!display.valid()) return;
             // The clear and the blit both write the target: order them.
             ctx.dependency(ui, Access::TransferDst, Access::TransferDst);
             VkImageBlit b{};
@@ -196,7 +183,11 @@ void Presenter::record(VkCommandBuffer cmd, const Target& target, const graph::E
                            ctx.layout(ui), 1, &b, nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
         };
     });
-    g.add_pass("ui_imgui", [&](graph::PassBuilder& b) {
+}
+
+// ui_imgui: ImGui's draw data over the target, through the backend's render pass.
+void Presenter::add_imgui(graph::ImageHandle ui, const Target& target, ImDrawData* draw) {
+    graph_->add_pass("ui_imgui", [&](graph::PassBuilder& b) {
         b.write(ui, Access::ColorAttachment);
         return [this, draw, fb = framebuffer(target),
                 extent = target.extent](graph::PassContext& ctx) {
@@ -209,18 +200,47 @@ void Presenter::record(VkCommandBuffer cmd, const Target& target, const graph::E
             vkCmdEndRenderPass(ctx.cmd());
         };
     });
-    if (read_back) {
-        g.set_role(graph::PassRole::ReadBack);
-        g.add_pass(
-            "ui_readback",
-            [&](graph::PassBuilder& b) {
-                const graph::BufferHandle host = readback_->declare_copy(g, b, ui);
-                return [this, ui, host](graph::PassContext& ctx) {
-                    readback_->record_copy(ctx, ui, host);
-                };
-            },
-            graph::PassKind::Transfer);
-    }
+}
+
+// ui_readback (read-back role): the target into a host buffer (render_offscreen).
+void Presenter::add_readback(graph::ImageHandle ui) {
+    graph::RenderGraph& g = *graph_;
+    g.set_role(graph::PassRole::ReadBack);
+    g.add_pass(
+        "ui_readback",
+        [&](graph::PassBuilder& b) {
+            const graph::BufferHandle host = readback_->declare_copy(g, b, ui);
+            return [this, ui, host](graph::PassContext& ctx) {
+                readback_->record_copy(ctx, ui, host);
+            };
+        },
+        graph::PassKind::Transfer);
+}
+
+void Presenter::record(VkCommandBuffer cmd, const Target& target, const graph::ExternalState& final,
+                       const ViewerBlit& viewer, ImDrawData* draw, vk::DestroyList& retired,
+                       bool read_back) {
+    BlitRegion region{};
+    const bool blit = clip_blit(viewer, {target.extent.width, target.extent.height}, region);
+    graph::RenderGraph& g = *graph_;
+    g.begin_frame(target.extent, retired);
+    readback_->begin_frame(retired);
+
+    graph::ExternalImage out;
+    out.image = target.image;
+    out.view = target.view;
+    out.desc = {.format = format_,
+                .size = graph::ImageSize::fixed(target.extent.width, target.extent.height),
+                .semantic = graph::Semantic::LdrColor};
+    out.initial = {};  // UNDEFINED: every UI frame draws the whole target
+    out.final = final;
+    const graph::ImageHandle ui = g.import_image("ui_target", out);
+    target_ = ui;
+
+    const graph::ImageHandle display = blit ? add_upload(viewer, retired) : graph::ImageHandle{};
+    add_viewer(ui, display, region, viewer.nearest);
+    add_imgui(ui, target, draw);
+    if (read_back) add_readback(ui);
     g.compile();
     last_graph_frame_ = g.execute(cmd);
 }

@@ -71,6 +71,12 @@ class Presenter {
     void wait_idle();
 
   private:
+    // The UI frame's graph passes (ui_upload only when the viewer has an image to blit).
+    graph::ImageHandle add_upload(const ViewerBlit& viewer, vk::DestroyList& retired);
+    void add_viewer(graph::ImageHandle ui, graph::ImageHandle display, const BlitRegion& region,
+                    bool nearest);
+    void add_imgui(graph::ImageHandle ui, const Target& target, ImDrawData* draw);
+    void add_readback(graph::ImageHandle ui);
     // `read_back`: a ui_readback pass copies the target to a host buffer (render_offscreen).
     void record(VkCommandBuffer cmd, const Target& target, const graph::ExternalState& final,
                 const ViewerBlit& viewer, ImDrawData* draw, vk::DestroyList& retired,

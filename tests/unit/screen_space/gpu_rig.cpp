@@ -170,6 +170,32 @@ graph::ImageHandle GpuRig::import_r8(graph::RenderGraph& graph, const std::strin
     return graph.import_image(name, sampled_input(image, graph::Semantic::AO));
 }
 
+// One read-back pass (transfer, read-back role) copying every named image to the host.
+std::vector<graph::ImageHandle> GpuRig::add_read_back(graph::RenderGraph& graph,
+                                                      const std::vector<std::string>& names) {
+    readback_->begin_frame(retired_);
+    std::vector<graph::ImageHandle> images;
+    for (const std::string& name : names) {
+        images.push_back(graph.find_image(name));
+        if (!images.back().valid()) throw Error("read-back: no image '" + name + "' in the graph");
+    }
+    if (images.empty()) return images;
+    graph.set_role(graph::PassRole::ReadBack);
+    graph.add_pass(
+        "readback",
+        [&](graph::PassBuilder& b) {
+            std::vector<graph::BufferHandle> buffers;
+            for (graph::ImageHandle image : images)
+                buffers.push_back(readback_->declare_copy(graph, b, image));
+            return [this, images, buffers](graph::PassContext& ctx) {
+                for (size_t i = 0; i < images.size(); ++i)
+                    readback_->record_copy(ctx, images[i], buffers[i]);
+            };
+        },
+        graph::PassKind::Transfer);
+    return images;
+}
+
 FrameOutput GpuRig::run_frame(graph::RenderGraph& graph, const Declare& declare,
                               const std::vector<std::string>& read_back,
                               const passes::FrameOptions& options) {
@@ -195,48 +221,7 @@ FrameOutput GpuRig::run_frame(graph::RenderGraph& graph, const Declare& declare,
     in.frame_number = frame_number_;
     declare(graph, in, res);
 
-    // Read-back: one host buffer per image, copied in a last transfer pass.
-    struct Target {
-        std::string name;
-        graph::ImageHandle image;
-        graph::BufferHandle buffer;
-        VkFormat format;
-        VkExtent2D extent;
-    };
-    std::vector<Target> targets;
-    std::vector<vk::Buffer> buffers;
-    for (const std::string& name : read_back) {
-        const graph::ImageHandle image = graph.find_image(name);
-        if (!image.valid()) throw Error("read-back: no image '" + name + "' in the graph");
-        const graph::ResourceInfo& info = graph.resources()[image.index];
-        const VkDeviceSize size =
-            VkDeviceSize(info.extent.width) * info.extent.height * texel_size(info.image.format);
-        buffers.emplace_back(*context_, vk::BufferDesc{size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                       vk::MemoryUsage::Readback, "read-back"});
-        const graph::BufferHandle buffer = graph.import_buffer(
-            "readback " + name,
-            {buffers.back().handle(), size, {}, graph::ExternalState::host_read()});
-        targets.push_back({name, image, buffer, info.image.format, info.extent});
-    }
-    if (!targets.empty()) {
-        graph.add_pass(
-            "readback",
-            [&](graph::PassBuilder& b) {
-                for (const Target& t : targets) {
-                    b.read(t.image, Access::TransferSrc);
-                    b.write(t.buffer, Access::TransferDst);
-                }
-            },
-            [targets](graph::PassContext& ctx) {
-                for (const Target& t : targets) {
-                    VkBufferImageCopy region{};
-                    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-                    region.imageExtent = {t.extent.width, t.extent.height, 1};
-                    vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(t.image), ctx.layout(t.image),
-                                           ctx.buffer(t.buffer), 1, &region);
-                }
-            });
-    }
+    const std::vector<graph::ImageHandle> images = add_read_back(graph, read_back);
     graph.compile();
     uint64_t id = 0;
     context_->submit_once([&](VkCommandBuffer cmd) { id = graph.execute(cmd); });
@@ -245,10 +230,10 @@ FrameOutput GpuRig::run_frame(graph::RenderGraph& graph, const Declare& declare,
 
     FrameOutput out;
     out.passes = graph.collect(id);
-    for (size_t i = 0; i < targets.size(); ++i) {
-        buffers[i].invalidate();
-        out.images[targets[i].name] =
-            decode(targets[i].format, targets[i].extent, buffers[i].mapped());
+    for (size_t i = 0; i < images.size(); ++i) {
+        const graph::ResourceInfo& info = graph.resources()[images[i].index];
+        out.images[read_back[i]] =
+            decode(info.image.format, info.extent, readback_->image_bytes(images[i]).data());
     }
     return out;
 }

@@ -67,10 +67,12 @@ class GpuRig {
   private:
     GpuRig();
     void write_uniforms();
+    std::vector<graph::ImageHandle> add_read_back(graph::RenderGraph& graph,
+                                                  const std::vector<std::string>& names);
 
     std::unique_ptr<vk::Context> context_;
     std::unique_ptr<shader::Compiler> compiler_;
-    std::unique_ptr<HostReadback> readback_;  // PassServices needs one; no pass here reads back
+    std::unique_ptr<HostReadback> readback_;  // run_frame's read-back (and PassServices')
     vk::DescriptorSetLayout frame_layout_;
     vk::DescriptorPool frame_pool_;
     VkDescriptorSet frame_set_ = VK_NULL_HANDLE;
