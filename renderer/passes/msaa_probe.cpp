@@ -10,7 +10,8 @@
 namespace ds::passes {
 namespace {
 
-constexpr VkDeviceSize kHeaderBytes = 16;  // edge_pixels + padding (std430 array alignment)
+constexpr VkDeviceSize kHeaderBytes = 16;      // edge_pixels + padding (std430 array alignment)
+constexpr const char* kBuffer = "msaa_probe";  // its HostReadback buffer
 
 struct Push {
     uint32_t width, height;
@@ -50,6 +51,10 @@ void MsaaProbePass::rebuild_pipelines(vk::DestroyList& retired) {
     if (pipeline_) build(retired);  // fail-safe: the old one stays if this throws
 }
 
+void MsaaProbePass::on_sample_count_changed(VkSampleCountFlagBits samples) {
+    if (samples == VK_SAMPLE_COUNT_1_BIT) services_.readback.release(kBuffer);
+}
+
 void MsaaProbePass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     out_ = {};
     const bool full = in.read_back == ReadBack::Yes || in.read_back == ReadBack::WithMsaaDepth;
@@ -63,7 +68,7 @@ void MsaaProbePass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameR
     depth_values_ =
         copy_depth ? VkDeviceSize(extent.width) * extent.height * uint32_t(in.options.samples) : 0;
     const graph::BufferHandle out = services_.readback.import_storage(
-        graph, "msaa_probe", kHeaderBytes + depth_values_ * sizeof(float), kHeaderBytes);
+        graph, kBuffer, kHeaderBytes + depth_values_ * sizeof(float), kHeaderBytes);
     out_ = out;
     const graph::ImageHandle depth = res.msaa_depth, color = res.msaa_hdr;
     const int32_t samples = int32_t(in.options.samples);

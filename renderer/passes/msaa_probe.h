@@ -23,6 +23,8 @@ class MsaaProbePass final : public FramePass {
     graph::PassRole role() const override { return graph::PassRole::ReadBack; }
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
     void rebuild_pipelines(vk::DestroyList& retired) override;
+    // Back to 1x: its host buffer (every depth sample, with WithMsaaDepth) is let go.
+    void on_sample_count_changed(VkSampleCountFlagBits samples) override;
     void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
 
   private:

@@ -119,6 +119,15 @@ std::optional<uint64_t> HostReadback::u32_sum(graph::ImageHandle image) const {
     return sum;
 }
 
+void HostReadback::release(const std::string& name) {
+    const auto it = buffers_.find(name);
+    if (it == buffers_.end()) return;
+    for (auto e = frame_.begin(); e != frame_.end();)
+        e = e->second.buffer == &it->second ? frame_.erase(e) : std::next(e);
+    if (retired_) retired_->defer(std::move(it->second));
+    buffers_.erase(it);
+}
+
 void HostReadback::reset() {
     frame_.clear();
     buffers_.clear();

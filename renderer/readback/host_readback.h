@@ -50,6 +50,10 @@ class HostReadback {
     // A copied R32_UINT image's texels summed; none when it was not copied this frame.
     std::optional<uint64_t> u32_sum(graph::ImageHandle image) const;
 
+    // Lets the buffer `name` go (retired with the last frame's destroy list): a read-back that
+    // will not come back soon, such as msaa_probe's after msaa goes back to 1.
+    void release(const std::string& name);
+
     void reset();  // teardown (device idle)
 
   private:

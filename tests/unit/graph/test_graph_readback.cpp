@@ -86,6 +86,14 @@ TEST_F(GraphReadback, ACopyPassReadsAnImageBackByItsHandle) {
         image = clear_and_read_back(g, *readback_, colour(0.0f, 1.0f, 0.0f, 1.0f));
     });
     EXPECT_EQ(uint8_t(readback_->image_bytes(image)[1]), 255u);
+
+    // A released buffer is gone at once and made anew by the next copy.
+    readback_->release("readback_image");
+    EXPECT_TRUE(readback_->image_bytes(image).empty());
+    run({16, 16}, [&](RenderGraph& g) {
+        image = clear_and_read_back(g, *readback_, colour(0.0f, 0.0f, 1.0f, 1.0f));
+    });
+    EXPECT_EQ(uint8_t(readback_->image_bytes(image)[2]), 255u);
 }
 
 // A transfer pass fills part of a host storage buffer; the rest is the host's zeros.
