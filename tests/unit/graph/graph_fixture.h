@@ -3,9 +3,11 @@
 // declares, compiles, executes, submits and waits for one frame.
 #include <functional>
 #include <memory>
+#include <string>
 
 #include <gtest/gtest.h>
 
+#include "renderer/common/error.h"
 #include "renderer/graph/graph.h"
 #include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
@@ -82,6 +84,17 @@ inline VkClearValue colour(float r, float g, float b, float a = 1.0f) {
     v.color.float32[2] = b;
     v.color.float32[3] = a;
     return v;
+}
+
+// Runs `f`, which must throw a ds::Error whose message contains `fragment`.
+template <typename F>
+void expect_error(F&& f, const std::string& fragment) {
+    try {
+        f();
+        ADD_FAILURE() << "expected ds::Error containing '" << fragment << "'";
+    } catch (const ds::Error& e) {
+        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace ds::graph::test

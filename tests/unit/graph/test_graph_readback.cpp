@@ -122,16 +122,6 @@ TEST_F(GraphReadback, StorageBuffersStartZeroedByTheHost) {
     }
 }
 
-template <typename F>
-void expect_error(F&& f, const std::string& fragment) {
-    try {
-        f();
-        ADD_FAILURE() << "expected ds::Error containing '" << fragment << "'";
-    } catch (const ds::Error& e) {
-        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-    }
-}
-
 TEST_F(GraphReadback, TransferPassesHaveNoAttachmentsOrShaders) {
     vk::DestroyList retired;
     graph_->begin_frame({16, 16}, retired);

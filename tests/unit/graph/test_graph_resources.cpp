@@ -154,16 +154,6 @@ TEST_F(GraphVk, HistoryPingPongsAndResetsOnCutAndResize) {
     EXPECT_EQ(graph_->images_created(), 4u) << "one pair, recreated once on resize";
 }
 
-template <typename F>
-void expect_error(F&& f, const std::string& fragment) {
-    try {
-        f();
-        ADD_FAILURE() << "expected ds::Error containing '" << fragment << "'";
-    } catch (const ds::Error& e) {
-        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-    }
-}
-
 TEST_F(GraphVk, WrongDeclarationsAreClearErrors) {
     vk::DestroyList retired;
     expect_error([&] { graph_->add_pass("early", nullptr, nullptr); }, "begin_frame");
