@@ -296,6 +296,17 @@ std::string Renderer::graph_dump() const {
     return impl_->graph->dump();
 }
 
+std::optional<SurfaceInfo> Renderer::describe_surface(uint32_t id) const {
+    if (!impl_->scene) return std::nullopt;
+    const SurfaceTable& table = impl_->scene->surfaces();
+    const std::optional<SurfaceRef> ref = table.find(id);
+    if (!ref) return std::nullopt;
+    const SurfaceInstance& s = table.instances[ref->instance];
+    return SurfaceInfo{{table.mesh_names.at(s.mesh), table.material_names.at(s.material), s.node},
+                       ref->instance,
+                       ref->triangle};
+}
+
 uint64_t Renderer::validation_message_count() const {
     return impl_->context->validation_message_count();
 }

@@ -58,6 +58,9 @@ class Renderer {
     // The last frame's compiled graph as text (passes, resources, barriers); built on demand,
     // so frames that nobody dumps do not pay for the formatting.
     std::string graph_dump() const;
+    // The surface a surface_id texel names in the current scene (its instance's mesh,
+    // material and node, and the triangle); none for 0 (nothing drawn) or an unknown id.
+    std::optional<SurfaceInfo> describe_surface(uint32_t id) const;
     uint64_t validation_message_count() const;
     VkInstance instance() const;  // for RenderDoc's device pointer
     // The device, for the inspector's presentation layer (ui/), which draws on it.

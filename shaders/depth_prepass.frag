@@ -7,11 +7,15 @@
 //   ALPHA_MASK=2       masked_split=off: one pipeline for all geometry, testing MASK
 //                      materials only; the discard in it costs every draw its early-Z.
 //   COUNT_FRAGMENTS=1  count the fragments that ran (common/count.glsl).
+//   SURFACE_ID=1       also write the surface that won the depth test (attachment 2, u32).
 //   ALPHA_TO_COVERAGE, COUNT_DISCARDS: see common/alpha_test.glsl (with ALPHA_MASK only).
 #extension GL_GOOGLE_include_directive : require
 
 #ifndef ALPHA_MASK
 #define ALPHA_MASK 0
+#endif
+#ifndef SURFACE_ID
+#define SURFACE_ID 0
 #endif
 
 #include "common/alpha_test.glsl"
@@ -29,6 +33,10 @@ layout(location = 3) in vec4 in_tangent;
 
 layout(location = 0) out vec4 out_normal;
 layout(location = 1) out float out_roughness;
+#if SURFACE_ID
+layout(location = 4) flat in uint in_surface_base;
+layout(location = 2) out uint out_surface;
+#endif
 
 void main() {
     float coverage = 1.0;  // output 0's alpha: the sample mask with alpha-to-coverage
@@ -50,4 +58,7 @@ void main() {
     out_normal = vec4(encode_normal(shading_normal(vertex_normal(in_normal), in_tangent, in_uv0)),
                       coverage);
     out_roughness = material_roughness(in_uv0);
+#if SURFACE_ID
+    out_surface = in_surface_base + uint(gl_PrimitiveID) + 1u;
+#endif
 }

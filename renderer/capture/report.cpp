@@ -55,6 +55,22 @@ nlohmann::json passes_json(const std::vector<PassResult>& passes,
 
 namespace {
 
+nlohmann::json surface_json(const SurfaceName& s) {
+    return {{"mesh", s.mesh}, {"material", s.material}, {"node", s.node}};
+}
+
+nlohmann::json zfight_json(const ZfightResult& z) {
+    nlohmann::json pairs = nlohmann::json::array();
+    for (const ZfightPair& p : z.pairs)
+        pairs.push_back({{"a", surface_json(p.a)},
+                         {"b", surface_json(p.b)},
+                         {"pixels", p.pixels},
+                         {"min_steps", p.min_steps}});
+    nlohmann::json json = {{"steps", z.steps}, {"pixels", z.pixels}, {"pairs", pairs}};
+    if (z.dropped) json["dropped_records"] = z.dropped;
+    return json;
+}
+
 nlohmann::json settings_json(const Settings& settings) {
     nlohmann::json json = nlohmann::json::object();  // {} even when there are none
     for (const auto& [name, value] : settings.values()) json[name] = value;
@@ -107,6 +123,7 @@ nlohmann::json frame_report(const ReportInput& in) {
     if (f.masked_discards)
         json["masked_discards"] = {{"invoked", f.masked_discards->invoked},
                                    {"discarded", f.masked_discards->discarded}};
+    if (f.zfight) json["zfight"] = zfight_json(*f.zfight);
     return json;
 }
 

@@ -15,6 +15,7 @@
 #include "renderer/passes/skybox.h"
 #include "renderer/passes/tonemap.h"
 #include "renderer/passes/transparent.h"
+#include "renderer/passes/zfight.h"
 
 namespace ds {
 
@@ -34,6 +35,7 @@ std::vector<std::unique_ptr<passes::FramePass>> make_frame_passes(const passes::
     add(std::make_unique<AoSpatialPass>(s));
     add(std::make_unique<AoTemporalPass>(s));
     add(std::make_unique<ContactShadowsPass>(s));
+    add(std::make_unique<ZfightPass>(s));  // diagnostics: against the prepass's result
     add(std::make_unique<ForwardPass>(s));
     add(std::make_unique<DepthResolvePass>(s, Resolve::Forward));  // prepass=off
     add(std::make_unique<SkyboxPass>(s));

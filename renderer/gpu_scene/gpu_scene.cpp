@@ -123,12 +123,34 @@ void GpuScene::upload_geometry(const scene::Scene& scene, vk::UploadBatch& batch
     batch.buffer(indices_, indices.data(), ibytes);
 }
 
+std::optional<SurfaceRef> SurfaceTable::find(uint32_t id) const {
+    if (id == 0) return std::nullopt;
+    const uint32_t index = id - 1;
+    // The last instance whose base is at or below the index.
+    auto it = std::upper_bound(instances.begin(), instances.end(), index,
+                               [](uint32_t v, const SurfaceInstance& s) { return v < s.base; });
+    if (it == instances.begin()) return std::nullopt;
+    --it;
+    if (index - it->base >= it->triangles) return std::nullopt;
+    return SurfaceRef{uint32_t(it - instances.begin()), index - it->base};
+}
+
 void GpuScene::upload_instances(const scene::Scene& scene, vk::UploadBatch& batch) {
     std::vector<GpuInstance> gpu;
     gpu.reserve(scene.instances.size());
+    for (const scene::Mesh& mesh : scene.meshes) surfaces_.mesh_names.push_back(mesh.name);
+    for (const scene::Material& m : scene.materials) surfaces_.material_names.push_back(m.name);
+    uint64_t base = 0;
     for (const scene::Instance& inst : scene.instances) {
         if (inst.mesh >= scene.meshes.size()) throw Error("scene: instance of a missing mesh");
-        gpu.push_back({inst.world, normal_matrix(inst.world)});
+        const scene::Mesh& mesh = scene.meshes[inst.mesh];
+        const uint32_t triangles = uint32_t(mesh.indices.size() / 3);
+        if (base + triangles >= UINT32_MAX)
+            throw Error("scene: more than 2^32 - 2 triangles in all instances (surface ids)");
+        surfaces_.instances.push_back(
+            {uint32_t(base), triangles, inst.mesh, mesh.material, inst.node});
+        gpu.push_back({inst.world, normal_matrix(inst.world), uint32_t(base), {}});
+        base += triangles;
         const glm::vec3 center = scene.meshes[inst.mesh].bounds.center();
         instance_centers_.push_back(glm::vec3(inst.world * glm::vec4(center, 1.0f)));
     }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,8 +48,30 @@ inline constexpr uint32_t kMaterialAlphaMask = 2u;  // alphaMode MASK (one-pipel
 struct GpuInstance {
     glm::mat4 model{1.0f};
     glm::mat4 normal_matrix{1.0f};
+    uint32_t surface_base = 0;  // surface id of the instance's triangle 0 (SurfaceTable)
+    uint32_t pad[3] = {};
 };
-static_assert(sizeof(GpuInstance) == 128);
+static_assert(sizeof(GpuInstance) == 144);
+
+// Surfaces (DESIGN: Z-fighting): each triangle of each instance is one surface, id
+// `base + triangle + 1` (0: nothing drawn). The table names them for reports and readouts.
+struct SurfaceInstance {
+    uint32_t base = 0;       // id of triangle 0, minus 1
+    uint32_t triangles = 0;  // of its mesh
+    uint32_t mesh = 0;       // scene::Scene indices
+    uint32_t material = 0;
+    std::string node;
+};
+struct SurfaceRef {
+    uint32_t instance = 0;  // index into SurfaceTable::instances (= scene instance index)
+    uint32_t triangle = 0;
+};
+struct SurfaceTable {
+    std::vector<SurfaceInstance> instances;  // in scene instance order
+    std::vector<std::string> mesh_names, material_names;
+    // The instance and triangle of a surface id; none for 0 or an id past the last surface.
+    std::optional<SurfaceRef> find(uint32_t id) const;
+};
 
 struct GpuMesh {
     uint32_t first_index = 0;
@@ -80,6 +103,7 @@ class GpuScene {
     VkDescriptorSet material_set(uint32_t material) const { return material_sets_.at(material); }
 
     const std::vector<GpuMesh>& meshes() const { return meshes_; }
+    const SurfaceTable& surfaces() const { return surfaces_; }
     const std::vector<scene::DrawGroup>& draw_groups() const { return draw_groups_; }
     // World-space centre of each instance's bounds (sorting blended draws).
     const std::vector<glm::vec3>& instance_centers() const { return instance_centers_; }
@@ -128,6 +152,7 @@ class GpuScene {
     std::vector<GpuMesh> meshes_;
     std::vector<scene::DrawGroup> draw_groups_;
     std::vector<glm::vec3> instance_centers_;
+    SurfaceTable surfaces_;
     std::vector<vk::MipFill> mip_fills_;
     uint32_t white_image_ = 0;  // indices into images_
     uint32_t flat_normal_image_ = 0;

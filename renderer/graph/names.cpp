@@ -150,6 +150,8 @@ const char* semantic_name(Semantic semantic) {
             return "LdrColor";
         case Semantic::Count:
             return "Count";
+        case Semantic::SurfaceId:
+            return "SurfaceId";
         case Semantic::Other:
             return "Other";
     }

@@ -15,7 +15,8 @@ enum class Semantic : uint8_t {
     AO,
     HdrColor,
     LdrColor,
-    Count,  // u32 counters (exact per-pixel invocation counts)
+    Count,      // u32 counters (exact per-pixel invocation counts)
+    SurfaceId,  // u32 surface ids (0: nothing drawn; gpu_scene.h SurfaceTable)
     Other,
 };
 

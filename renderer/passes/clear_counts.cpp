@@ -4,14 +4,20 @@
 
 namespace ds::passes {
 
-void ClearCountsPass::add(graph::RenderGraph& graph, const FrameInputs&, FrameResources& res) {
+void ClearCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     std::vector<graph::ImageHandle> counts;
     for (graph::ImageHandle h : {res.prepass_counts, res.forward_counts, res.transparent_counts})
         if (h.valid()) counts.push_back(h);
-    if (counts.empty()) return;
+    if (counts.empty() && !in.options.zfight) return;
     graph.add_pass(
         name(),
         [&](graph::PassBuilder& b) {
+            if (in.options.zfight) {  // the zfight pass's competitors per pixel
+                res.zfight = b.create_image("zfight", {.format = VK_FORMAT_R32_UINT,
+                                                       .size = graph::ImageSize::relative(1.0f),
+                                                       .semantic = graph::Semantic::Count});
+                counts.push_back(res.zfight);
+            }
             for (graph::ImageHandle h : counts) b.write(h, graph::Access::TransferDst);
             return [counts](graph::PassContext& ctx) {
                 const VkClearColorValue zero{};

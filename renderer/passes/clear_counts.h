@@ -1,8 +1,8 @@
 #pragma once
-// clear_counts (clear role; count_fragments=on): zeroes the u32 count images the counting
-// passes (depth_prepass, forward, transparent) add into, first in the frame, so the graph
-// plans the transfer-to-shader dependency like any other instead of a barrier inside each
-// counting pass.
+// clear_counts (clear role; count_fragments=on or zfight=on): zeroes the u32 count images
+// the counting passes (depth_prepass, forward, transparent; zfight, whose res.zfight image
+// it creates) add into, first in the frame, so the graph plans the transfer-to-shader
+// dependency like any other instead of a barrier inside each counting pass.
 #include "renderer/passes/frame_pass.h"
 
 namespace ds::passes {

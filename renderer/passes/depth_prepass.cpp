@@ -59,8 +59,14 @@ ShaderStages DepthPrepass::compile(const Variant& v) const {
     if (v.counting) defines.push_back({"COUNT_FRAGMENTS", "1"});
     if (v.alpha_to_coverage) defines.push_back({"ALPHA_TO_COVERAGE", "1"});
     if (v.count_discards) defines.push_back({"COUNT_DISCARDS", "1"});
+    std::vector<shader::Define> vert_defines;
+    if (v.surface_id) {
+        defines.push_back({"SURFACE_ID", "1"});
+        vert_defines.push_back({"SURFACE_ID", "1"});
+    }
     ShaderStages s;
-    s.vert = services_.compiler.compile("depth_prepass.vert", shader::Stage::Vertex).spirv;
+    s.vert =
+        services_.compiler.compile("depth_prepass.vert", shader::Stage::Vertex, vert_defines).spirv;
     s.frag =
         services_.compiler.compile("depth_prepass.frag", shader::Stage::Fragment, defines).spirv;
     return s;
@@ -68,10 +74,10 @@ ShaderStages DepthPrepass::compile(const Variant& v) const {
 
 vk::Pipeline DepthPrepass::create(const Variant& v, const ShaderStages& s) const {
     static constexpr const char* kNames[] = {"prepass opaque", "prepass mask", "prepass unsplit"};
-    return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
-        .color_attachment(kNormalFormat)
-        .color_attachment(kRoughnessFormat)
-        .depth_attachment(services_.depth_format)
+    vk::GraphicsPipelineBuilder b = scene_pipeline_builder(layout_.handle(), s.vert, s.frag);
+    b.color_attachment(kNormalFormat).color_attachment(kRoughnessFormat);
+    if (v.surface_id) b.color_attachment(kSurfaceFormat);
+    return b.depth_attachment(services_.depth_format)
         .samples(v.samples)
         .alpha_to_coverage(v.alpha_to_coverage)
         .build(services_.context, kNames[int(v.alpha)]);
@@ -80,7 +86,9 @@ vk::Pipeline DepthPrepass::create(const Variant& v, const ShaderStages& s) const
 void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     discards_ = {};
     if (!in.options.prepass) return;
-    const Variant opaque{.counting = res.prepass_counts.valid(), .samples = in.options.samples};
+    const Variant opaque{.counting = res.prepass_counts.valid(),
+                         .surface_id = in.options.surface_id,
+                         .samples = in.options.samples};
     // Only the pipeline with the alpha test changes: the opaque one keeps early-Z and its
     // variant, so normal frames share it.
     Variant tested = opaque;
@@ -152,11 +160,16 @@ DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInput
     b.read(res.frame_uniforms, Access::UniformRead,
            graph::Shader::Vertex | graph::Shader::Fragment);
     if (res.prepass_counts.valid()) declare_counts(b, res.prepass_counts);
+    if (in.options.surface_id)
+        res.surface_id = b.create_image(
+            "surface_id",
+            {.format = kSurfaceFormat, .size = full, .semantic = graph::Semantic::SurfaceId});
     Msaa msaa;
     if (!in.options.msaa()) {
         b.write(res.depth, Access::DepthAttachment);
         b.write(res.normals, Access::ColorAttachment);
         b.write(res.roughness, Access::ColorAttachment);
+        if (res.surface_id.valid()) b.write(res.surface_id, Access::ColorAttachment);
         return msaa;
     }
     const VkSampleCountFlagBits samples = in.options.samples;
@@ -173,6 +186,15 @@ DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInput
     b.write(msaa.roughness, Access::ColorAttachment);
     b.write(res.normals, Access::ResolveDst);
     b.write(res.roughness, Access::ResolveDst);
+    if (res.surface_id.valid()) {
+        msaa.surface_id =
+            b.create_image("msaa_surface_id", {.format = kSurfaceFormat,
+                                               .size = full,
+                                               .samples = samples,
+                                               .semantic = graph::Semantic::SurfaceId});
+        b.write(msaa.surface_id, Access::ColorAttachment);
+        b.write(res.surface_id, Access::ResolveDst);
+    }
     // Without a native nearest-sample resolve, depth_resolve writes res.depth next.
     if (native_depth_resolve(services_.context.report(), in.options.reverse_z))
         b.write(res.depth, Access::ResolveDst);
@@ -183,24 +205,34 @@ void DepthPrepass::begin(graph::PassContext& ctx, const FrameInputs& in, const F
                          const Msaa& msaa) const {
     VkCommandBuffer cmd = ctx.cmd();
     const std::array<float, 4> no_normal = {0.5f, 0.5f, 0.5f, 0.0f};  // the zero vector
+    const size_t count = res.surface_id.valid() ? 3 : 2;  // surface_id: cleared to 0, none
     if (!in.options.msaa()) {
         // Everything is stored: forward, GTAO, contact shadows and captures read it.
-        const std::array<VkRenderingAttachmentInfo, 2> colors = {
+        const std::array<VkRenderingAttachmentInfo, 3> colors = {
             color_attachment(ctx.view(res.normals), VK_ATTACHMENT_LOAD_OP_CLEAR, no_normal),
-            color_attachment(ctx.view(res.roughness), VK_ATTACHMENT_LOAD_OP_CLEAR)};
+            color_attachment(ctx.view(res.roughness), VK_ATTACHMENT_LOAD_OP_CLEAR),
+            count == 3 ? color_attachment(ctx.view(res.surface_id), VK_ATTACHMENT_LOAD_OP_CLEAR)
+                       : VkRenderingAttachmentInfo{}};
         const VkRenderingAttachmentInfo depth = depth_attachment(
             ctx.view(res.depth), ctx.layout(res.depth), VK_ATTACHMENT_LOAD_OP_CLEAR,
             VK_ATTACHMENT_STORE_OP_STORE, in.options.far_depth());
-        begin_rendering(cmd, ctx.extent(res.depth), colors, &depth);
+        begin_rendering(cmd, ctx.extent(res.depth), std::span(colors.data(), count), &depth);
         return;
     }
     // Only the resolved normals and roughness are read later: the samples need no store.
-    const std::array<VkRenderingAttachmentInfo, 2> colors = {
+    std::array<VkRenderingAttachmentInfo, 3> colors = {
         resolving_color_attachment(ctx.view(msaa.normals), ctx.view(res.normals),
                                    VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE,
                                    no_normal),
         resolving_color_attachment(ctx.view(msaa.roughness), ctx.view(res.roughness),
-                                   VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE)};
+                                   VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE),
+        VkRenderingAttachmentInfo{}};
+    if (count == 3) {  // integers resolve to one sample, never an average
+        colors[2] = resolving_color_attachment(ctx.view(msaa.surface_id), ctx.view(res.surface_id),
+                                               VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                               VK_ATTACHMENT_STORE_OP_DONT_CARE);
+        colors[2].resolveMode = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;
+    }
     // STORE: forward, skybox and transparent LOAD these samples (seed 000's lesson).
     VkRenderingAttachmentInfo depth = depth_attachment(
         ctx.view(res.msaa_depth), ctx.layout(res.msaa_depth), VK_ATTACHMENT_LOAD_OP_CLEAR,
@@ -211,7 +243,7 @@ void DepthPrepass::begin(graph::PassContext& ctx, const FrameInputs& in, const F
         depth.resolveImageView = ctx.view(res.depth);
         depth.resolveImageLayout = ctx.layout(res.depth);
     }
-    begin_rendering(cmd, ctx.extent(res.depth), colors, &depth);
+    begin_rendering(cmd, ctx.extent(res.depth), std::span(colors.data(), count), &depth);
 }
 
 void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,

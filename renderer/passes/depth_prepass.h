@@ -16,6 +16,9 @@
 //
 // alpha_to_coverage=on (msaa > 1): the pipeline with the alpha test writes a sharpened alpha
 // to output 0 (normals) and alpha-to-coverage cuts samples instead of the discard.
+// surface_id (knob surface_id, or zfight): a third attachment, R32_UINT res.surface_id, the
+// winning surface per pixel (at msaa > 1 resolved SAMPLE_ZERO, as integers must be).
+//
 // count_discards=on: that pipeline counts the fragments it ran and those it discarded into a
 // small host storage buffer (set 2, HostReadback), read after the frame's fence.
 #include <array>
@@ -40,6 +43,7 @@ class DepthPrepass final : public FramePass {
     static constexpr const char* kName = "depth_prepass";
     static constexpr VkFormat kNormalFormat = VK_FORMAT_A2B10G10R10_UNORM_PACK32;
     static constexpr VkFormat kRoughnessFormat = VK_FORMAT_R8_UNORM;
+    static constexpr VkFormat kSurfaceFormat = VK_FORMAT_R32_UINT;
 
     explicit DepthPrepass(const PassServices& services);
 
@@ -61,10 +65,11 @@ class DepthPrepass final : public FramePass {
         bool counting = false;           // COUNT_FRAGMENTS=1
         bool alpha_to_coverage = false;  // alpha-tested pipeline only
         bool count_discards = false;     // alpha-tested pipeline only
+        bool surface_id = false;         // SURFACE_ID=1: a third, u32 attachment
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         bool operator==(const Variant&) const = default;
         size_t hash() const {
-            return hash_fields(int(alpha), counting, alpha_to_coverage, count_discards,
+            return hash_fields(int(alpha), counting, alpha_to_coverage, count_discards, surface_id,
                                int(samples));
         }
     };
@@ -81,7 +86,7 @@ class DepthPrepass final : public FramePass {
     vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
     // msaa > 1: the multisampled normals and roughness (transients) of this frame.
     struct Msaa {
-        graph::ImageHandle normals, roughness;
+        graph::ImageHandle normals, roughness, surface_id;
     };
 
     Msaa declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res) const;

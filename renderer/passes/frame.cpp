@@ -32,6 +32,11 @@ FrameOptions FrameOptions::from(const Settings& s) {
     // Both act on multisampled targets only; at 1x they would change nothing but the key.
     o.sample_shading = s.get_bool("sample_shading") && o.msaa();
     o.alpha_to_coverage = s.get_bool("alpha_to_coverage") && o.msaa();
+    // Both diagnostics compare against the prepass's depth and winner; the detector compares
+    // at pixel centres, which a multisampled depth (stored at sample positions) is not.
+    o.zfight = s.get_bool("zfight") && o.prepass && !o.msaa();
+    o.zfight_steps = uint32_t(s.get_int("zfight_steps"));
+    o.surface_id = (s.get_bool("surface_id") || o.zfight) && o.prepass;
     return o;
 }
 

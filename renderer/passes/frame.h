@@ -74,6 +74,9 @@ struct FrameOptions {
     bool count_discards = false;     // masked prepass: fragments run and discarded
     bool sample_shading = false;     // effective: also needs msaa > 1
     bool alpha_to_coverage = false;  // effective: also needs msaa > 1
+    bool surface_id = false;         // effective: surface_id or zfight, and the prepass
+    bool zfight = false;             // effective: also needs the prepass and msaa=1
+    uint32_t zfight_steps = 4;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // msaa
 
     static FrameOptions from(const Settings& settings);
@@ -108,6 +111,10 @@ struct FrameResources {
     graph::ImageHandle prepass_counts;
     graph::ImageHandle forward_counts;
     graph::ImageHandle transparent_counts;
+    // Diagnostics (off: invalid). surface_id: R32_UINT, the prepass's winning surface per
+    // pixel (gpu_scene.h SurfaceTable; 0 = none); zfight: R32_UINT competitors per pixel.
+    graph::ImageHandle surface_id;
+    graph::ImageHandle zfight;
 };
 
 // Built once per Renderer; what a pass needs to create pipelines and record.

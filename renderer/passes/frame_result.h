@@ -2,6 +2,7 @@
 // What a frame gives back (FrameResult and its parts) and what a caller may ask of it
 // (ReadBack, InspectRequest). Plain data, below the passes: each pass fills its own part
 // after the frame's fence (FramePass::collect), the facade returns it.
+#include <compare>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -67,6 +68,34 @@ struct DiscardCounts {
     uint64_t discarded = 0;
 };
 
+// A surface as reports name it: the mesh, material and node of its instance (a surface is
+// one triangle of one instance; reports group by instance).
+struct SurfaceName {
+    std::string mesh, material, node;
+    auto operator<=>(const SurfaceName&) const = default;
+};
+
+// What a surface_id value names in the current scene (Renderer::describe_surface).
+struct SurfaceInfo {
+    SurfaceName name;
+    uint32_t instance = 0;  // scene instance index
+    uint32_t triangle = 0;  // of its mesh
+};
+
+// zfight=on: two instances whose surfaces fight, how many pixels they fight in and the
+// smallest gap seen, in representable depth steps.
+struct ZfightPair {
+    SurfaceName a, b;  // a: the one with the lower instance index (a == b: within one mesh)
+    uint64_t pixels = 0;
+    uint32_t min_steps = 0;
+};
+struct ZfightResult {
+    uint32_t steps = 0;             // zfight_steps
+    uint64_t pixels = 0;            // pixels with at least one competitor
+    std::vector<ZfightPair> pairs;  // most pixels first
+    uint64_t dropped = 0;           // competitor records past the buffer (pairs undercount)
+};
+
 struct FrameResult {
     uint32_t width = 0, height = 0;
     std::vector<uint8_t> rgba8;      // final image, sRGB-encoded, tightly packed, top row first;
@@ -80,6 +109,7 @@ struct FrameResult {
     std::vector<std::string> skipped;  // "gtao: skipped (prepass off)", in pass order
     MsaaResult msaa;
     std::optional<DiscardCounts> masked_discards;  // count_discards=on with the prepass
+    std::optional<ZfightResult> zfight;            // zfight=on with the prepass
     // Every resource of the frame's graph, in creation order (the inspect pass's own target
     // left out).
     std::vector<ResourceSummary> resources;

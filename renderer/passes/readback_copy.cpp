@@ -74,7 +74,7 @@ std::vector<graph::ImageHandle> ReadbackCopyPass::images(const FrameInputs& in,
         case What::Counts: {
             std::vector<graph::ImageHandle> out;
             for (graph::ImageHandle h :
-                 {res.prepass_counts, res.forward_counts, res.transparent_counts})
+                 {res.prepass_counts, res.forward_counts, res.transparent_counts, res.zfight})
                 if (h.valid()) out.push_back(h);
             return out;
         }

@@ -2,6 +2,7 @@
 // The node hierarchy of one glTF scene -> world transforms of mesh nodes and the first
 // perspective camera. Internal to renderer/scene; errors are InputError with a WHAT only.
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <tiny_gltf.h>
@@ -13,6 +14,7 @@ namespace ds::scene::detail {
 struct MeshPlacement {
     int gltf_mesh = 0;
     glm::mat4 world{1.0f};
+    std::string node;  // the glTF node's name, or "node N" for an unnamed one
 };
 
 struct SceneWalk {

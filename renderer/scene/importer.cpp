@@ -34,7 +34,7 @@ void build_draw_groups(Scene& scene, const std::vector<MeshPlacement>& placement
         auto operator<=>(const Key&) const = default;
     };
     std::map<Key, size_t> group_of;
-    std::vector<std::vector<glm::mat4>> worlds;  // per group
+    std::vector<std::vector<const MeshPlacement*>> placed;  // per group
     for (const MeshPlacement& placement : placements) {
         for (uint32_t mesh : meshes.by_gltf_mesh[static_cast<size_t>(placement.gltf_mesh)]) {
             const Material& material = scene.materials[scene.meshes[mesh].material];
@@ -42,16 +42,17 @@ void build_draw_groups(Scene& scene, const std::vector<MeshPlacement>& placement
             const auto [it, added] = group_of.try_emplace(key, scene.draw_groups.size());
             if (added) {
                 scene.draw_groups.push_back({mesh, key.alpha_mode, key.double_sided, 0, 0});
-                worlds.emplace_back();
+                placed.emplace_back();
             }
-            worlds[it->second].push_back(placement.world);
+            placed[it->second].push_back(&placement);
         }
     }
     for (size_t g = 0; g < scene.draw_groups.size(); ++g) {
         DrawGroup& group = scene.draw_groups[g];
         group.first_instance = static_cast<uint32_t>(scene.instances.size());
-        group.instance_count = static_cast<uint32_t>(worlds[g].size());
-        for (const glm::mat4& world : worlds[g]) scene.instances.push_back({group.mesh, world});
+        group.instance_count = static_cast<uint32_t>(placed[g].size());
+        for (const MeshPlacement* p : placed[g])
+            scene.instances.push_back({group.mesh, p->world, p->node});
     }
 }
 

@@ -107,6 +107,7 @@ struct Material {
 struct Instance {
     uint32_t mesh = 0;
     glm::mat4 world{1.0f};
+    std::string node;  // the node that places it (glTF name, or "node N"), for reports
 };
 
 // Instances that share (mesh, alpha mode, double-sided): drawn with one instanced draw

@@ -303,6 +303,20 @@ SettingsRegistry::SettingsRegistry() {
                   "count fragments the masked prepass pipeline ran and discarded "
                   "(masked_discards in the report)",
                   I::Pipelines),
+        // Diagnostics: each adds its passes and images only when on.
+        bool_knob("surface_id", "diagnostics", false,
+                  "the prepass also writes surface_id: per pixel, the surface (triangle of an "
+                  "instance) that won the depth test (on whenever zfight is)",
+                  I::Pipelines),
+        bool_knob("zfight", "diagnostics", false,
+                  "Z-fight detector: re-rasterises opaque and masked geometry and counts, per "
+                  "pixel, other surfaces within zfight_steps depth steps of the stored depth "
+                  "(image zfight, report zfight)",
+                  I::Pipelines),
+        int_knob("zfight_steps", "diagnostics", 4, 0, 1024,
+                 "zfight: the largest gap, in representable steps of the depth format (ULPs of "
+                 "D32_SFLOAT, unorm steps of D24 / D16), that still counts as a fight",
+                 I::Nothing),
         int_knob("overdraw_layers", "scene", 8, 1, 64,
                  "overdraw scene: number of view-filling quads, drawn back to front", I::Scene),
         int_knob("zfight_pairs", "scene", 6, 1, 16,

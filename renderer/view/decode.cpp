@@ -169,6 +169,17 @@ void decode_count(const InspectedImage& image, const ViewParams& params, size_t 
     view.unit = "count";
 }
 
+// Surface ids: a colour of its own per id (a hash: neighbours differ), nothing drawn in the sky
+// colour. No range.
+void decode_surface(const InspectedImage& image, size_t count, uint8_t* out) {
+    each_texel(image.texels.data(), count, out, [&](const float* t, uint8_t* p) {
+        if (!std::isfinite(t[0])) return put(p, kNonFiniteColor);
+        const uint32_t id = uint32_t(t[0]);
+        if (id == 0) return put(p, kSkyColor);
+        put(p, surface_color(id));
+    });
+}
+
 // Colours and normals: no range. Encode = sRGB-encode rgb (HDR, *_SRGB formats); `scale`
 // multiplies rgb first (exposure). Alpha is always as stored.
 template <bool Encode>
@@ -293,6 +304,10 @@ void decode_into(const InspectedImage& image, const ViewParams& params, DecodedV
         case Semantic::Count:
             decode_count(image, vp, count, p, out);
             break;
+        case Semantic::SurfaceId:
+            decode_surface(image, count, p);
+            out.unit = "surface";
+            break;
         case Semantic::EncodedNormal:
             decode_colour<false>(image, vp, count, p, 1.0f);
             break;
@@ -310,6 +325,16 @@ void decode_into(const InspectedImage& image, const ViewParams& params, DecodedV
             decode_other(image, vp, count, p, out);
             break;
     }
+}
+
+std::array<uint8_t, 3> surface_color(uint32_t id) {
+    uint32_t h = id * 0x9e3779b9u;  // a multiplicative hash, then one xorshift round
+    h ^= h >> 15;
+    h *= 0x2c1b3c6du;
+    h ^= h >> 12;
+    // 64..255 per channel: no surface is near black or the sky colour.
+    return {uint8_t(64 + (h & 0xff) * 191 / 255), uint8_t(64 + ((h >> 8) & 0xff) * 191 / 255),
+            uint8_t(64 + ((h >> 16) & 0xff) * 191 / 255)};
 }
 
 DecodedView decode(const InspectedImage& image, const ViewParams& params) {

@@ -69,6 +69,10 @@ inline constexpr std::array<uint8_t, 3> kNonFiniteColor{255, 0, 255};  // NaN / 
 DecodedView decode(const InspectedImage& image, const ViewParams& params);
 void decode_into(const InspectedImage& image, const ViewParams& params, DecodedView& out);
 
+// The colour a surface id shows as (not 0): a hash, bright enough to read, stable across
+// frames, so one surface keeps its colour.
+std::array<uint8_t, 3> surface_color(uint32_t id);
+
 // Linear view distance of a stored depth (finite far plane):
 // reverse-Z d = n f / (depth (f - n) + n), forward-Z d = n f / (f - depth (f - n)).
 float linear_depth(float stored, bool reverse_z, float znear, float zfar);

@@ -107,6 +107,11 @@ void describe(const InspectedImage& image, Readout& r) {
         case Semantic::LdrColor:
             colour_text(image, r);
             break;
+        case Semantic::SurfaceId:
+            r.raw_text = text("%.0f", double(v));
+            r.decoded_text =
+                v == 0.0f ? std::string("no surface") : text("surface %.0f", double(v));
+            break;
         case Semantic::Count:
             r.raw_text = text("%.0f", double(v));
             r.decoded_text = text("%.0f %s", double(v), v == 1.0f ? "fragment" : "fragments");

@@ -95,6 +95,7 @@ void probe_features(VkPhysicalDevice device, DeviceReport& r) {
         r.occlusion_query_precise = f.occlusionQueryPrecise;
         r.fragment_stores_and_atomics = f.fragmentStoresAndAtomics;
         r.sample_rate_shading = f.sampleRateShading;
+        r.geometry_shader = f.geometryShader;
         return;
     }
     r.candidate.via_extensions =
@@ -108,6 +109,7 @@ void probe_features(VkPhysicalDevice device, DeviceReport& r) {
         r.occlusion_query_precise = chain.base.features.occlusionQueryPrecise;
         r.fragment_stores_and_atomics = chain.base.features.fragmentStoresAndAtomics;
         r.sample_rate_shading = chain.base.features.sampleRateShading;
+        r.geometry_shader = chain.base.features.geometryShader;
         r.descriptor_indexing = chain.v12.runtimeDescriptorArray;
         return;
     }
@@ -120,6 +122,7 @@ void probe_features(VkPhysicalDevice device, DeviceReport& r) {
     r.occlusion_query_precise = chain.base.features.occlusionQueryPrecise;
     r.fragment_stores_and_atomics = chain.base.features.fragmentStoresAndAtomics;
     r.sample_rate_shading = chain.base.features.sampleRateShading;
+    r.geometry_shader = chain.base.features.geometryShader;
     r.descriptor_indexing = chain.v12.runtimeDescriptorArray;
 }
 

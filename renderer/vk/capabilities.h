@@ -60,7 +60,8 @@ struct DeviceReport {
     bool occlusion_query_precise = false;
     bool fragment_stores_and_atomics = false;  // exact per-pixel fragment counts (count images)
     bool sample_rate_shading = false;          // sample_shading=on (per-sample forward)
-    bool descriptor_indexing = false;          // runtimeDescriptorArray (lavapipe 22.3: no)
+    bool geometry_shader = false;      // gl_PrimitiveID in fragment shaders (surface_id, zfight)
+    bool descriptor_indexing = false;  // runtimeDescriptorArray (lavapipe 22.3: no)
     uint64_t device_local_bytes = 0;
     uint32_t queue_family = UINT32_MAX;  // first graphics+compute family
 };

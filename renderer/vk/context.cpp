@@ -230,6 +230,7 @@ void Context::create_device() {
         supported.shaderStorageImageExtendedFormats;
     features.base.features.fragmentStoresAndAtomics = report_.fragment_stores_and_atomics;
     features.base.features.sampleRateShading = report_.sample_rate_shading;
+    features.base.features.geometryShader = report_.geometry_shader;
 
     auto info = make<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features.base);
     info.queueCreateInfoCount = 1;

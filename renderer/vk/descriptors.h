@@ -69,6 +69,8 @@ class DescriptorWriter {
                              VkDeviceSize offset = 0, VkDeviceSize range = VK_WHOLE_SIZE);
     DescriptorWriter& image(uint32_t binding, VkImageView view, VkSampler sampler,
                             VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    DescriptorWriter& storage_image(uint32_t binding, VkImageView view,
+                                    VkImageLayout layout = VK_IMAGE_LAYOUT_GENERAL);
     void update(VkDevice device, VkDescriptorSet set);
 
   private:

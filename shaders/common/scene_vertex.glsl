@@ -12,6 +12,11 @@
 #ifndef NON_INVARIANT
 #define NON_INVARIANT 0
 #endif
+// SURFACE_ID=1 (prepass with surface_id, the zfight pass): hands the instance's surface base
+// to the fragment shader, which adds gl_PrimitiveID (renderer/gpu_scene SurfaceTable).
+#ifndef SURFACE_ID
+#define SURFACE_ID 0
+#endif
 
 #include "bindings.glsl"
 
@@ -24,6 +29,9 @@ layout(location = 0) out vec3 out_world_position;
 layout(location = 1) out vec3 out_normal;
 layout(location = 2) out vec2 out_uv0;
 layout(location = 3) out vec4 out_tangent;
+#if SURFACE_ID
+layout(location = 4) flat out uint out_surface_base;
+#endif
 
 #if !NON_INVARIANT
 invariant gl_Position;
@@ -41,4 +49,7 @@ void main() {
     out_normal = mat3(instance.normal_matrix) * in_normal;
     out_tangent = vec4(mat3(instance.model) * in_tangent.xyz, in_tangent.w);
     out_uv0 = in_uv0;
+#if SURFACE_ID
+    out_surface_base = instance.surface_base;
+#endif
 }

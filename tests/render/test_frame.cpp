@@ -183,3 +183,24 @@ TEST(Frame, ReadBackClearsAndTheShaderResolveArePassesOfTheGraph) {
                   std::string::npos);
     }
 }
+
+// zfight=on through the real executable: report.json names the fighting pairs of the zfight
+// scene (each coplanar pair's two quads) and the dump shows the pass; off, no zfight at all.
+TEST(Frame, ZfightReportNamesThePairs) {
+    Capture on = capture("zfight-on", "zfight", "320x180", "--set zfight=on");
+    ASSERT_TRUE(on.report.contains("zfight")) << on.report.dump();
+    const auto& z = on.report["zfight"];
+    EXPECT_EQ(z["steps"], 4);
+    EXPECT_GT(z["pixels"].get<int>(), 0);
+    ASSERT_FALSE(z["pairs"].empty());
+    for (const auto& p : z["pairs"]) {
+        for (const char* k : {"mesh", "material", "node"}) {
+            EXPECT_TRUE(p["a"].contains(k)) << p.dump();
+            EXPECT_TRUE(p["b"].contains(k)) << p.dump();
+        }
+        EXPECT_GT(p["pixels"].get<int>(), 0);
+    }
+    EXPECT_EQ(find_pass(on.report, "zfight")["kind"], "frame");
+    Capture off = capture("zfight-off", "zfight", "320x180");
+    EXPECT_FALSE(off.report.contains("zfight"));
+}

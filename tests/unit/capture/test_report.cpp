@@ -81,6 +81,24 @@ TEST(Report, OptionalCountsAppearWhenMeasured) {
               (nlohmann::json{{"samples", 4}, {"depth_resolve", "shader"}, {"edge_pixels", 7}}));
 }
 
+TEST(Report, ZfightNamesBothSurfacesOfEveryPair) {
+    FrameResult frame = two_pass_frame();
+    const nlohmann::json none = report_of(frame);
+    EXPECT_FALSE(none.contains("zfight")) << "only with zfight=on";
+    frame.zfight = ZfightResult{
+        .steps = 4, .pixels = 12, .pairs = {{{"quad", "red", "a"}, {"quad", "blue", "b"}, 12, 1}}};
+    const nlohmann::json z = report_of(frame)["zfight"];
+    EXPECT_EQ(z["steps"], 4);
+    EXPECT_EQ(z["pixels"], 12);
+    ASSERT_EQ(z["pairs"].size(), 1u);
+    EXPECT_EQ(z["pairs"][0]["a"],
+              (nlohmann::json{{"mesh", "quad"}, {"material", "red"}, {"node", "a"}}));
+    EXPECT_EQ(z["pairs"][0]["b"]["material"], "blue");
+    EXPECT_EQ(z["pairs"][0]["pixels"], 12);
+    EXPECT_EQ(z["pairs"][0]["min_steps"], 1);
+    EXPECT_FALSE(z.contains("dropped_records"));
+}
+
 TEST(Report, PassesJsonMergesWhatTheCallerMeasured) {
     FrameResult frame = two_pass_frame();
     frame.passes[1].role = graph::PassRole::ReadBack;

@@ -32,7 +32,7 @@ TEST(SceneModel, TriangleCountIsOverInstances) {
     s.meshes.resize(2);
     s.meshes[0].indices.assign(6, 0);  // 2 triangles
     s.meshes[1].indices.assign(9, 0);  // 3 triangles
-    s.instances = {{0, glm::mat4(1)}, {0, glm::mat4(1)}, {1, glm::mat4(1)}};
+    s.instances = {{0, glm::mat4(1), "a"}, {0, glm::mat4(1), "b"}, {1, glm::mat4(1), "c"}};
     EXPECT_EQ(s.triangle_count(), 2u + 2u + 3u);
 }
 

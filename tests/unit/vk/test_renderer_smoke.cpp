@@ -93,8 +93,8 @@ scene::Scene smoke_scene() {
     s.samplers = {scene::Sampler{}};
     s.textures = {scene::Texture{0, 0}};
     s.meshes = {plane_mesh(6.0f, 0), cube_mesh(1)};
-    s.instances = {{0, glm::mat4(1.0f)},
-                   {1, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, 0.0f))}};
+    s.instances = {{0, glm::mat4(1.0f), "plane"},
+                   {1, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, 0.0f)), "cube"}};
     s.draw_groups = {{0, scene::AlphaMode::Opaque, false, 0, 1},
                      {1, scene::AlphaMode::Opaque, false, 1, 1}};
     for (const auto& inst : s.instances) {
@@ -284,7 +284,7 @@ scene::Scene alpha_scene() {
                 quad_mesh({0.5f, -1.0f}, {2.0f, 1.0f}, 0.5f, 1),    // red, nearer
                 quad_mesh({1.0f, -0.5f}, {2.5f, 1.5f}, -0.5f, 2)};  // green, farther
     // Authored near-to-far, so drawing in authored order would composite wrongly.
-    s.instances = {{0, glm::mat4(1.0f)}, {1, glm::mat4(1.0f)}, {2, glm::mat4(1.0f)}};
+    s.instances = {{0, glm::mat4(1.0f), "a"}, {1, glm::mat4(1.0f), "b"}, {2, glm::mat4(1.0f), "c"}};
     s.draw_groups = {{0, scene::AlphaMode::Mask, true, 0, 1},
                      {1, scene::AlphaMode::Blend, false, 1, 1},
                      {2, scene::AlphaMode::Blend, false, 2, 1}};

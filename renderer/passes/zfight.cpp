@@ -1,0 +1,166 @@
+#include "renderer/passes/zfight.h"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <set>
+
+#include "renderer/format/format.h"
+#include "renderer/gpu_scene/gpu_scene.h"
+#include "renderer/passes/scene_draw.h"
+#include "renderer/readback/host_readback.h"
+#include "renderer/shader/compiler.h"
+#include "renderer/vk/context.h"
+#include "renderer/vk/functions.h"
+
+namespace ds::passes {
+
+using graph::Access;
+
+namespace {
+
+const VkDescriptorPoolSize kPoolSizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2},
+                                           {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
+                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+constexpr VkDeviceSize kHeaderBytes = 16;  // count + padding (std430 uvec4 alignment)
+constexpr uint32_t kRecordsPerPixel = 2;   // competitor records the buffer holds, on average
+
+struct Push {
+    uint32_t max_steps, depth_bits, width, capacity;
+};
+
+SurfaceName name_of(const SurfaceTable& table, uint32_t instance) {
+    const SurfaceInstance& s = table.instances[instance];
+    return {table.mesh_names.at(s.mesh), table.material_names.at(s.material), s.node};
+}
+
+}  // namespace
+
+ZfightResult zfight_pairs(std::span<const ZfightRecord> records, const SurfaceTable& table) {
+    struct Acc {
+        std::set<uint32_t> pixels;
+        uint32_t min_steps = UINT32_MAX;
+    };
+    std::map<std::pair<uint32_t, uint32_t>, Acc> by_pair;  // instance indices, low first
+    for (const ZfightRecord& r : records) {
+        const auto a = table.find(r.winner), b = table.find(r.competitor);
+        if (!a || !b) continue;
+        Acc& acc = by_pair[std::minmax(a->instance, b->instance)];
+        acc.pixels.insert(r.pixel);
+        acc.min_steps = std::min(acc.min_steps, r.steps);
+    }
+    ZfightResult out;
+    for (const auto& [key, acc] : by_pair)
+        out.pairs.push_back({name_of(table, key.first), name_of(table, key.second),
+                             acc.pixels.size(), acc.min_steps});
+    std::stable_sort(out.pairs.begin(), out.pairs.end(),
+                     [](const ZfightPair& x, const ZfightPair& y) { return x.pixels > y.pixels; });
+    return out;
+}
+
+ZfightPass::ZfightPass(const PassServices& services)
+    : services_(services),
+      nearest_(vk::nearest_clamp_sampler(services.context, "zfight nearest")),
+      sets_(services.context, 1, kPoolSizes, "zfight sets"),
+      pipelines_([this](const NoVariant& v) { return compile(v); },
+                 [this](const NoVariant& v, const ShaderStages& s) { return create(v, s); }) {
+    const VkShaderStageFlags frag = VK_SHADER_STAGE_FRAGMENT_BIT;
+    const VkDescriptorSetLayoutBinding bindings[] = {
+        vk::layout_binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frag),
+        vk::layout_binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frag),
+        vk::layout_binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, frag),
+        vk::layout_binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, frag)};
+    set_layout_ = vk::DescriptorSetLayout(services.context, bindings, "zfight set");
+    const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
+                                          set_layout_.handle()};
+    const VkPushConstantRange push{frag, 0, sizeof(Push)};
+    layout_ = vk::PipelineLayout(services.context, sets, {&push, 1}, "zfight layout");
+}
+
+ShaderStages ZfightPass::compile(const NoVariant&) const {
+    // The prepass's vertex shader, handing the surface base on: the same gl_Position.
+    const std::vector<shader::Define> surface = {{"SURFACE_ID", "1"}};
+    return {services_.compiler.compile("depth_prepass.vert", shader::Stage::Vertex, surface).spirv,
+            services_.compiler.compile("zfight.frag", shader::Stage::Fragment).spirv};
+}
+
+vk::Pipeline ZfightPass::create(const NoVariant&, const ShaderStages& s) const {
+    return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
+        .build(services_.context, "zfight");
+}
+
+std::optional<std::string> ZfightPass::skipped(const FrameInputs& in) const {
+    if (in.options.zfight || !in.settings->get_bool("zfight")) return std::nullopt;
+    if (!in.options.prepass) return "prepass off";
+    return "msaa > 1: it compares at pixel centres, a multisampled depth is stored per sample";
+}
+
+void ZfightPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
+    records_ = {};
+    if (!in.options.zfight) return;
+    const VkExtent2D extent = graph.resources()[res.depth.index].extent;
+    capacity_ = extent.width * extent.height * kRecordsPerPixel;
+    const graph::BufferHandle records = services_.readback.import_storage(
+        graph, "zfight_records", kHeaderBytes + VkDeviceSize(capacity_) * 16, kHeaderBytes);
+    records_ = records;
+    const Bound bound{res.surface_id, res.depth, res.zfight, records};
+    graph.add_pass(name(), [&](graph::PassBuilder& b) {
+        b.read(res.frame_uniforms, Access::UniformRead,
+               graph::Shader::Vertex | graph::Shader::Fragment);
+        b.read(bound.surfaces, Access::Sampled);
+        b.read(bound.depth, Access::Sampled);
+        b.write(bound.competitors, Access::StorageReadWrite);
+        b.write(bound.records, Access::StorageReadWrite);
+        return [this, in, bound](graph::PassContext& ctx) { record(ctx, in, bound); };
+    });
+}
+
+void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bound& bound) {
+    VkCommandBuffer cmd = ctx.cmd();
+    const VkDescriptorSet set = sets_.allocate(in.frame_number, set_layout_.handle());
+    vk::DescriptorWriter writer;
+    writer.image(0, ctx.view(bound.surfaces), nearest_.handle(), ctx.layout(bound.surfaces))
+        .image(1, ctx.view(bound.depth), nearest_.handle(), ctx.layout(bound.depth))
+        .storage_image(2, ctx.view(bound.competitors), ctx.layout(bound.competitors))
+        .buffer(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ctx.buffer(bound.records));
+    writer.update(services_.context.device(), set);
+
+    const VkExtent2D extent = ctx.extent(bound.depth);
+    const format::Info* depth = format::find(ctx.format(bound.depth));
+    const Push push{in.options.zfight_steps, depth ? depth->depth_bits : 32u, extent.width,
+                    capacity_};
+    begin_rendering(cmd, extent, {}, nullptr);  // no attachments: the fragments only count
+    set_depth_state(cmd, /*test=*/false, /*write=*/false, VK_COMPARE_OP_ALWAYS);
+    bind_geometry(cmd, *in.scene);
+    const VkPipelineLayout layout = layout_.handle();
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get({}));
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
+                            nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &set, 0, nullptr);
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push, &push);
+    const scene::AlphaMode modes[] = {scene::AlphaMode::Opaque, scene::AlphaMode::Mask};
+    draw_groups(cmd, *in.scene, layout, modes);
+    vk::fn().cmd_end_rendering(cmd);
+}
+
+void ZfightPass::collect(const FrameCollect& c, std::span<PassResult>, FrameResult& frame) {
+    const std::span<const std::byte> bytes = c.readback.buffer_bytes(records_);
+    if (bytes.size() < kHeaderBytes) return;
+    uint32_t appended = 0;
+    std::memcpy(&appended, bytes.data(), sizeof appended);
+    const uint32_t kept = std::min(appended, capacity_);
+    std::vector<ZfightRecord> records(kept);
+    std::memcpy(records.data(), bytes.data() + kHeaderBytes, kept * sizeof(ZfightRecord));
+    ZfightResult result = zfight_pairs(records, c.in.scene->surfaces());
+    result.steps = c.in.options.zfight_steps;
+    result.dropped = appended - kept;
+    const std::span<const std::byte> counts = c.readback.image_bytes(c.res.zfight);
+    for (size_t i = 0; i + 4 <= counts.size(); i += 4) {
+        uint32_t v;
+        std::memcpy(&v, counts.data() + i, 4);
+        result.pixels += v != 0;
+    }
+    frame.zfight = std::move(result);
+}
+
+}  // namespace ds::passes

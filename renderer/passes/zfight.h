@@ -1,0 +1,70 @@
+#pragma once
+// zfight (zfight=on, with the prepass): the Z-fight detector. Opaque and masked geometry is
+// drawn again over the prepass result without a depth test; every fragment of another
+// surface than the pixel's winner (res.surface_id) that passes its alpha test and lies
+// within zfight_steps representable depth steps of the stored depth (D32_SFLOAT: ULPs; D24 /
+// D16: unorm steps) competes (shaders/zfight.frag). Image res.zfight (created and zeroed by
+// clear_counts) holds competitors per pixel; a host buffer of (pixel, winner, competitor,
+// steps) records becomes FrameResult::zfight's pairs. A surface is one triangle of one
+// instance, so overlapping triangles of one mesh fight too, and triangles that share an
+// edge never do (each pixel centre belongs to one of them). It needs the prepass and msaa=1
+// (a multisampled depth is stored at sample positions, not at the centre it compares at).
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/passes/frame_pass.h"
+#include "renderer/passes/pass_util.h"
+#include "renderer/vk/descriptors.h"
+#include "renderer/vk/image.h"
+#include "renderer/vk/pipeline.h"
+
+namespace ds {
+struct SurfaceTable;
+}
+
+namespace ds::passes {
+
+// One competitor as the shader appends it (std430 uvec4).
+struct ZfightRecord {
+    uint32_t pixel = 0;                   // y * width + x
+    uint32_t winner = 0, competitor = 0;  // surface ids
+    uint32_t steps = 0;
+};
+static_assert(sizeof(ZfightRecord) == 16);
+
+// The pairs of instances the records name (by SurfaceTable), each with its distinct pixels
+// and smallest gap, most pixels first. Records naming no surface are skipped.
+ZfightResult zfight_pairs(std::span<const ZfightRecord> records, const SurfaceTable& table);
+
+class ZfightPass final : public FramePass {
+  public:
+    explicit ZfightPass(const PassServices& services);
+
+    const char* name() const override { return "zfight"; }
+    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
+    void rebuild_pipelines(vk::DestroyList& retired) override { pipelines_.rebuild(retired); }
+    // FrameResult::zfight: the competing pixels and the pairs of surfaces, by pixels.
+    void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
+
+  private:
+    struct Bound {
+        graph::ImageHandle surfaces, depth, competitors;
+        graph::BufferHandle records;
+    };
+    ShaderStages compile(const NoVariant& variant) const;
+    vk::Pipeline create(const NoVariant& variant, const ShaderStages& stages) const;
+    void record(graph::PassContext& ctx, const FrameInputs& in, const Bound& bound);
+
+    PassServices services_;
+    vk::Sampler nearest_;
+    vk::DescriptorSetLayout set_layout_;
+    vk::PipelineLayout layout_;
+    FrameDescriptorPool sets_;
+    PipelineVariants<NoVariant> pipelines_;
+    graph::BufferHandle records_;  // this frame's, if it ran
+    uint32_t capacity_ = 0;
+};
+
+}  // namespace ds::passes

@@ -1,0 +1,59 @@
+#version 460
+// zfight: every opaque and masked fragment drawn again over the prepass result, no depth test.
+// A fragment of another surface than the pixel's winner (surface_id) that passes its alpha
+// test competes when its depth lies within push.max_steps representable steps of the stored
+// depth (D32_SFLOAT: ULPs of the float; D24 / D16: unorm steps). Each competitor adds one to
+// the pixel's count and appends (pixel, winner, competitor, steps) for the report.
+#extension GL_GOOGLE_include_directive : require
+
+#include "common/bindings.glsl"
+
+// The prepass vertex shader's outputs, all declared so the interfaces match.
+layout(location = 0) in vec3 in_world_position;
+layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec2 in_uv0;
+layout(location = 3) in vec4 in_tangent;
+layout(location = 4) flat in uint in_surface_base;
+
+layout(set = 2, binding = 0) uniform usampler2D surface_ids;
+layout(set = 2, binding = 1) uniform sampler2D stored_depth;
+layout(set = 2, binding = 2, r32ui) uniform uimage2D competitors;
+layout(set = 2, binding = 3, std430) buffer Records {
+    uint count;  // appended; past push.capacity the records are dropped (and counted)
+    uint pad0, pad1, pad2;
+    uvec4 records[];  // pixel index, winner id, competitor id, steps
+}
+fights;
+
+layout(push_constant) uniform Push {
+    uint max_steps;
+    uint depth_bits;  // 32: float, 24 / 16: unorm
+    uint width;
+    uint capacity;  // records[] length
+}
+push;
+
+uint depth_steps(float a, float b) {
+    if (push.depth_bits == 32u) {
+        // Depths in [0, 1] are non-negative floats: their bit patterns order like the values.
+        return uint(abs(int(floatBitsToUint(a)) - int(floatBitsToUint(b))));
+    }
+    const float levels = push.depth_bits == 24u ? 16777215.0 : 65535.0;
+    return uint(abs(int(round(a * levels)) - int(round(b * levels))));
+}
+
+void main() {
+    const ivec2 p = ivec2(gl_FragCoord.xy);
+    const uint winner = texelFetch(surface_ids, p, 0).r;
+    const uint me = in_surface_base + uint(gl_PrimitiveID) + 1u;
+    if (winner == 0u || winner == me) return;
+    if ((material.flags & kMaterialAlphaMask) != 0u) {
+        const float alpha = texture(base_color_texture, in_uv0).a * material.base_color_factor.a;
+        if (alpha < alpha_cutoff()) return;
+    }
+    const uint steps = depth_steps(texelFetch(stored_depth, p, 0).r, gl_FragCoord.z);
+    if (steps > push.max_steps) return;
+    imageAtomicAdd(competitors, p, 1u);
+    const uint i = atomicAdd(fights.count, 1u);
+    if (i < push.capacity) fights.records[i] = uvec4(uint(p.y) * push.width + uint(p.x), winner, me, steps);
+}

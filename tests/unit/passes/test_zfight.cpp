@@ -1,0 +1,144 @@
+// Z-fighting diagnostics through the Renderer facade, validation on: surface_id names the
+// surface that won the prepass, the zfight pass finds exactly coplanar surfaces and no
+// separated ones (nor triangles that only share an edge), and off adds nothing.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "renderer/gpu_scene/gpu_scene.h"
+#include "renderer/passes/zfight.h"
+#include "renderer/renderer.h"
+#include "renderer/scene/loader.h"
+#include "tests/unit/passes/shared_renderer.h"
+
+namespace {
+
+using namespace ds;
+using test::names;
+
+constexpr uint32_t kWidth = 320, kHeight = 180;
+
+class Zfight : public test::SharedRenderer {
+  protected:
+    FrameResult render(const std::string& scene_name, const std::vector<std::string>& settings,
+                       const InspectRequest& inspect = {}) {
+        const Settings s = test::settings_of(settings);
+        if (scene_name != loaded_) {
+            scene_ = scene::load_scene(scene_name, s);
+            renderer_->set_scene(scene_);
+            loaded_ = scene_name;
+        }
+        return renderer_->render(scene_.camera, s, kWidth, kHeight, ReadBack::Yes, inspect);
+    }
+
+    scene::Scene scene_;
+    std::string loaded_;
+};
+
+bool has_resource(const FrameResult& f, const std::string& name) {
+    for (const ResourceSummary& r : f.resources)
+        if (r.name == name) return true;
+    return false;
+}
+
+std::string node_index(const std::string& node) {
+    return node.substr(node.rfind('_') + 1);
+}
+
+TEST_F(Zfight, OffAddsNoPassAndNoImage) {
+    const FrameResult f = render("zfight", {});
+    EXPECT_FALSE(f.zfight);
+    EXPECT_FALSE(has_resource(f, "zfight"));
+    EXPECT_FALSE(has_resource(f, "surface_id"));
+    for (const std::string& n : names(f)) EXPECT_NE(n, "zfight");
+}
+
+// Overdraw's layers lie 1 m and more apart, each quad two triangles sharing a diagonal.
+TEST_F(Zfight, SeparatedLayersAndSharedEdgesDoNotFight) {
+    for (const char* reverse : {"reverse_z=on", "reverse_z=off"}) {
+        const FrameResult f = render("overdraw", {"zfight=on", reverse});
+        ASSERT_TRUE(f.zfight) << reverse;
+        EXPECT_EQ(f.zfight->pixels, 0u) << reverse;
+        EXPECT_TRUE(f.zfight->pairs.empty()) << reverse;
+    }
+}
+
+// The front layer wins every pixel of the overdraw scene; its surface is named.
+TEST_F(Zfight, SurfaceIdNamesTheSurfaceThatWon) {
+    const FrameResult f = render("overdraw", {"surface_id=on"}, {"surface_id", 0});
+    ASSERT_TRUE(f.inspected);
+    ASSERT_EQ(f.inspected->semantic, graph::Semantic::SurfaceId);
+    std::set<std::string> nodes;
+    for (size_t i = 0; i < f.inspected->texels.size(); i += 4) {
+        const auto info = renderer_->describe_surface(uint32_t(f.inspected->texels[i]));
+        ASSERT_TRUE(info) << "every pixel is covered";
+        nodes.insert(info->name.node);
+        EXPECT_LT(info->triangle, 2u) << "a quad has two triangles";
+    }
+    EXPECT_EQ(nodes, (std::set<std::string>{"layer_0"}));
+    EXPECT_FALSE(renderer_->describe_surface(0));
+}
+
+// Exactly coplanar quads (A, and B rolled so its diagonal crosses A's) fight in both
+// conventions; every pair found is one of the scene's pairs; the competitor image and the
+// pixel count agree.
+TEST_F(Zfight, CoplanarPairsFightAndOnlyTheirOwnPartners) {
+    for (const char* reverse : {"reverse_z=on", "reverse_z=off"}) {
+        const FrameResult f = render("zfight", {"zfight=on", reverse}, {"zfight", 0});
+        ASSERT_TRUE(f.zfight);
+        std::set<std::string> coplanar;
+        for (const ZfightPair& p : f.zfight->pairs) {
+            EXPECT_EQ(node_index(p.a.node), node_index(p.b.node)) << p.a.node << " " << p.b.node;
+            EXPECT_GT(p.pixels, 0u);
+            EXPECT_LE(p.min_steps, 4u);
+            if (p.a.node.starts_with("coplanar")) coplanar.insert(p.a.node + "|" + p.b.node);
+        }
+        EXPECT_EQ(coplanar.size(), 6u) << reverse << ": each of the six coplanar pairs fights";
+        ASSERT_TRUE(f.inspected);
+        uint64_t pixels = 0;
+        for (size_t i = 0; i < f.inspected->texels.size(); i += 4)
+            pixels += f.inspected->texels[i] > 0.0f;
+        EXPECT_EQ(pixels, f.zfight->pixels) << reverse;
+        EXPECT_GT(pixels, 0u);
+    }
+}
+
+TEST_F(Zfight, NeedsThePrepassAndOneSample) {
+    const FrameResult off = render("zfight", {"zfight=on", "prepass=off"});
+    EXPECT_FALSE(off.zfight);
+    EXPECT_EQ(off.skipped.back(), "zfight: skipped (prepass off)");
+    const FrameResult msaa = render("zfight", {"zfight=on", "msaa=4"});
+    EXPECT_FALSE(msaa.zfight);
+    ASSERT_FALSE(msaa.skipped.empty());
+    EXPECT_TRUE(msaa.skipped.back().starts_with("zfight: skipped (msaa > 1"))
+        << msaa.skipped.back();
+}
+
+// Pairs from records, without a device: distinct pixels per pair of instances, the smallest
+// gap, most pixels first, unknown ids skipped.
+TEST(ZfightPairs, GroupByInstancePairAndCountPixelsOnce) {
+    SurfaceTable table;
+    table.mesh_names = {"quad"};
+    table.material_names = {"red"};
+    table.instances = {{0, 2, 0, 0, "a"}, {2, 2, 0, 0, "b"}, {4, 2, 0, 0, "c"}};
+    // ids: a = 1, 2; b = 3, 4; c = 5, 6.
+    const std::vector<passes::ZfightRecord> records = {
+        {10, 1, 3, 2},  {10, 2, 4, 1}, {11, 3, 1, 0},  // a-b in pixels 10 and 11
+        {20, 5, 6, 3},                                 // c against itself
+        {21, 1, 99, 0},                                // an unknown surface
+    };
+    const ZfightResult r = passes::zfight_pairs(records, table);
+    ASSERT_EQ(r.pairs.size(), 2u);
+    EXPECT_EQ(r.pairs[0].a.node, "a");
+    EXPECT_EQ(r.pairs[0].b.node, "b");
+    EXPECT_EQ(r.pairs[0].pixels, 2u);
+    EXPECT_EQ(r.pairs[0].min_steps, 0u);
+    EXPECT_EQ(r.pairs[1].a.node, "c");
+    EXPECT_EQ(r.pairs[1].b.node, "c");
+    EXPECT_EQ(r.pairs[1].pixels, 1u);
+    EXPECT_EQ(r.pairs[1].min_steps, 3u);
+}
+
+}  // namespace
