@@ -244,7 +244,14 @@ void Inspector::render() {
 
 std::optional<view::Readout> Inspector::readout_at(uint32_t x, uint32_t y) const {
     if (!frame_.inspected) return std::nullopt;
-    return view::readout(*frame_.inspected, x, y);
+    std::optional<view::Readout> r = view::readout(*frame_.inspected, x, y);
+    // A surface id names its surface: the view library knows ids, the renderer the scene.
+    if (r && frame_.inspected->semantic == graph::Semantic::SurfaceId)
+        if (const auto s = renderer_.describe_surface(uint32_t(r->raw[0])))
+            r->decoded_text += ": mesh " + s->name.mesh + ", material " + s->name.material +
+                               ", node " + s->name.node + ", triangle " +
+                               std::to_string(s->triangle);
+    return r;
 }
 
 ViewerBlit Inspector::viewer_blit() const {

@@ -188,6 +188,23 @@ TEST_F(Inspector, HoverReadoutOfTheDepthViewGivesTheLinearDepth) {
     EXPECT_NE(readout->decoded_text.find("2.00"), std::string::npos) << readout->decoded_text;
 }
 
+// surface_id: hovering names the surface that won the pixel (overdraw: layer 0 everywhere).
+TEST_F(Inspector, HoverReadoutOfSurfaceIdNamesTheSurface) {
+    auto ui = open("overdraw");
+    ui->inspector().queue(ui::SetSetting{"surface_id", "on"});
+    ui->inspector().queue(ui::SelectResource{"surface_id"});
+    ui->frame();
+    HeadlessInput hover;
+    hover.mouse = screen_of(*ui, 40, 30);
+    ui->frame(hover);
+    const auto& readout = ui->inspector().viewer().hover;
+    ASSERT_TRUE(readout);
+    const std::string& text = readout->decoded_text;
+    EXPECT_NE(text.find("mesh layer_0, material layer_0, node layer_0, triangle "),
+              std::string::npos)
+        << text;
+}
+
 TEST_F(Inspector, ZoomedInTheReadoutNamesTheTexelDrawnUnderTheCursor) {
     auto ui = open("atrium");
     ui::ViewerState& v = ui->inspector().viewer();
