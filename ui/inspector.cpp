@@ -13,6 +13,8 @@
 namespace ds::ui {
 namespace {
 
+constexpr const char* kZfightImage = "zfight";  // shown as a heat map over the frame
+
 template <class... Ts>
 struct Overloaded : Ts... {
     using Ts::operator()...;
@@ -218,9 +220,11 @@ void Inspector::update() {
 void Inspector::render() {
     const VkExtent2D size = render_size();
     const InspectRequest request{viewer_.resource, viewer_.sample};
+    // The Z-fight heat map is drawn over the dimmed final image: read that back too.
+    const ReadBack read_back = viewer_.resource == kZfightImage ? ReadBack::Color : ReadBack::No;
     try {
-        frame_ = renderer_.render(camera_.camera(), settings_, size.width, size.height,
-                                  ReadBack::No, request);
+        frame_ = renderer_.render(camera_.camera(), settings_, size.width, size.height, read_back,
+                                  request);
         last_good_ = settings_;
     } catch (const std::exception& e) {
         // A setting the device refuses (msaa=8 on lavapipe ...): say so, go back to what worked.
@@ -228,7 +232,7 @@ void Inspector::render() {
         settings_ = last_good_;
         try {
             frame_ = renderer_.render(camera_.camera(), settings_, size.width, size.height,
-                                      ReadBack::No, request);
+                                      read_back, request);
         } catch (const std::exception& again) {
             message_ += std::string("; and the last good settings failed too: ") + again.what();
             return;  // keep showing the previous frame
@@ -236,9 +240,11 @@ void Inspector::render() {
     }
     ++frames_rendered_;
     history_.add(frame_);
-    if (frame_.inspected)
+    if (frame_.inspected) {
         view::decode_into(*frame_.inspected, viewer_.params, view_);
-    else
+        if (frame_.inspected->name == kZfightImage)
+            view::overlay_counts(view_, *frame_.inspected, frame_.rgba8);
+    } else
         view_ = view::DecodedView{};
 }
 

@@ -327,6 +327,20 @@ void decode_into(const InspectedImage& image, const ViewParams& params, DecodedV
     }
 }
 
+void overlay_counts(DecodedView& view, const InspectedImage& counts,
+                    std::span<const uint8_t> final_rgba8, float dim) {
+    const size_t texels = size_t(view.width) * view.height;
+    if (counts.width != view.width || counts.height != view.height ||
+        final_rgba8.size() != texels * 4 || counts.texels.size() != texels * 4 ||
+        view.rgba8.size() != texels * 4)
+        return;
+    for (size_t i = 0; i < texels; ++i) {
+        if (counts.texels[i * 4] > 0.0f) continue;
+        for (size_t c = 0; c < 3; ++c)
+            view.rgba8[i * 4 + c] = uint8_t(float(final_rgba8[i * 4 + c]) * dim + 0.5f);
+    }
+}
+
 std::array<uint8_t, 3> surface_color(uint32_t id) {
     uint32_t h = id * 0x9e3779b9u;  // a multiplicative hash, then one xorshift round
     h ^= h >> 15;

@@ -301,6 +301,39 @@ TEST(Decode, HdSizedImagesDecodeToFullSize) {
     }
 }
 
+// zfight's view: counts above 0 keep their heat colour, the rest is the dimmed frame.
+TEST(Decode, CountsOverTheDimmedFrame) {
+    const InspectedImage counts =
+        scalar_row(Semantic::Count, VK_FORMAT_R32_UINT, {0.0f, 1.0f, 0.0f, 3.0f});
+    DecodedView view = ds::view::decode(counts, ViewParams{});
+    const Rgb heat1 = pixel(view, 1), heat3 = pixel(view, 3);
+    const std::vector<uint8_t> frame = {200, 100, 50, 255, 9, 9, 9, 255,
+                                        10,  20,  30, 255, 9, 9, 9, 255};
+    ds::view::overlay_counts(view, counts, frame, 0.5f);
+    EXPECT_EQ(pixel(view, 0), (Rgb{100, 50, 25}));
+    EXPECT_EQ(pixel(view, 1), heat1);
+    EXPECT_EQ(pixel(view, 2), (Rgb{5, 10, 15}));
+    EXPECT_EQ(pixel(view, 3), heat3);
+    // A frame of another size changes nothing.
+    const std::vector<uint8_t> small = {1, 2, 3, 255};
+    DecodedView untouched = ds::view::decode(counts, ViewParams{});
+    ds::view::overlay_counts(untouched, counts, small, 0.5f);
+    EXPECT_EQ(untouched.rgba8, ds::view::decode(counts, ViewParams{}).rgba8);
+}
+
+// Surface ids: 0 is the sky colour, every other id a colour of its own that is stable.
+TEST(Decode, SurfaceIdsGetStableDistinctColours) {
+    const InspectedImage ids =
+        scalar_row(Semantic::SurfaceId, VK_FORMAT_R32_UINT, {0.0f, 1.0f, 2.0f, 1.0f});
+    const DecodedView view = ds::view::decode(ids, ViewParams{});
+    const auto sky = ds::view::kSkyColor;
+    EXPECT_EQ(pixel(view, 0), (Rgb{sky[0], sky[1], sky[2]}));
+    EXPECT_EQ(pixel(view, 1), pixel(view, 3));
+    EXPECT_NE(pixel(view, 1), pixel(view, 2));
+    const auto c = ds::view::surface_color(1);
+    EXPECT_EQ(pixel(view, 1), (Rgb{c[0], c[1], c[2]}));
+}
+
 TEST(Formats, Channels) {
     EXPECT_EQ(ds::view::format_channels(VK_FORMAT_D32_SFLOAT), 1u);
     EXPECT_EQ(ds::view::format_channels(VK_FORMAT_R8_UNORM), 1u);
