@@ -71,6 +71,17 @@ nlohmann::json zfight_json(const ZfightResult& z) {
     return json;
 }
 
+nlohmann::json equal_check_json(const EqualCheckResult& e) {
+    nlohmann::json surfaces = nlohmann::json::array();
+    for (const EqualCheckSurface& s : e.surfaces) {
+        nlohmann::json entry = surface_json(s.name);
+        entry["holes"] = s.holes;
+        entry["multiple"] = s.multiple;
+        surfaces.push_back(std::move(entry));
+    }
+    return {{"holes", e.holes}, {"multiple", e.multiple}, {"surfaces", surfaces}};
+}
+
 nlohmann::json settings_json(const Settings& settings) {
     nlohmann::json json = nlohmann::json::object();  // {} even when there are none
     for (const auto& [name, value] : settings.values()) json[name] = value;
@@ -124,6 +135,7 @@ nlohmann::json frame_report(const ReportInput& in) {
         json["masked_discards"] = {{"invoked", f.masked_discards->invoked},
                                    {"discarded", f.masked_discards->discarded}};
     if (f.zfight) json["zfight"] = zfight_json(*f.zfight);
+    if (f.equal_check) json["equal_check"] = equal_check_json(*f.equal_check);
     return json;
 }
 

@@ -6,6 +6,7 @@
 #include "renderer/passes/contact_shadows.h"
 #include "renderer/passes/depth_prepass.h"
 #include "renderer/passes/depth_resolve.h"
+#include "renderer/passes/equal_check.h"
 #include "renderer/passes/forward.h"
 #include "renderer/passes/gtao.h"
 #include "renderer/passes/inspect.h"
@@ -37,6 +38,7 @@ std::vector<std::unique_ptr<passes::FramePass>> make_frame_passes(const passes::
     add(std::make_unique<ContactShadowsPass>(s));
     add(std::make_unique<ZfightPass>(s));  // diagnostics: against the prepass's result
     add(std::make_unique<ForwardPass>(s));
+    add(std::make_unique<EqualCheckPass>(s));                      // diagnostics: forward's counts
     add(std::make_unique<DepthResolvePass>(s, Resolve::Forward));  // prepass=off
     add(std::make_unique<SkyboxPass>(s));
     add(std::make_unique<TransparentPass>(s));

@@ -21,7 +21,10 @@ FrameOptions FrameOptions::from(const Settings& s) {
     o.sky = s.get_bool("sky");
     o.invariant = s.get_bool("invariant");
     o.reverse_z = s.get_bool("reverse_z");
-    o.count_fragments = s.get_bool("count_fragments");
+    // equal_check reads forward's per-pixel counts and names the surfaces that won.
+    o.equal_check =
+        s.get_bool("equal_check") && o.prepass && o.depth_equal && s.get_int("msaa") == 1;
+    o.count_fragments = s.get_bool("count_fragments") || o.equal_check;
     // The registry allows 1..8; VkSampleCountFlagBits are the powers of two themselves.
     const int msaa = s.get_int("msaa");
     if (!std::has_single_bit(unsigned(msaa)))
@@ -36,7 +39,7 @@ FrameOptions FrameOptions::from(const Settings& s) {
     // at pixel centres, which a multisampled depth (stored at sample positions) is not.
     o.zfight = s.get_bool("zfight") && o.prepass && !o.msaa();
     o.zfight_steps = uint32_t(s.get_int("zfight_steps"));
-    o.surface_id = (s.get_bool("surface_id") || o.zfight) && o.prepass;
+    o.surface_id = (s.get_bool("surface_id") || o.zfight || o.equal_check) && o.prepass;
     return o;
 }
 

@@ -77,6 +77,7 @@ struct FrameOptions {
     bool surface_id = false;         // effective: surface_id or zfight, and the prepass
     bool zfight = false;             // effective: also needs the prepass and msaa=1
     uint32_t zfight_steps = 4;
+    bool equal_check = false;  // effective: prepass, depth_compare=equal and msaa=1
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // msaa
 
     static FrameOptions from(const Settings& settings);
@@ -115,6 +116,7 @@ struct FrameResources {
     // pixel (gpu_scene.h SurfaceTable; 0 = none); zfight: R32_UINT competitors per pixel.
     graph::ImageHandle surface_id;
     graph::ImageHandle zfight;
+    graph::ImageHandle equal_check;  // R32_UINT: 0 ok, 1 hole, 2 shaded more than once
 };
 
 // Built once per Renderer; what a pass needs to create pipelines and record.

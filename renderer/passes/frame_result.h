@@ -96,6 +96,17 @@ struct ZfightResult {
     uint64_t dropped = 0;           // competitor records past the buffer (pairs undercount)
 };
 
+// equal_check=on: pixels the prepass covered that forward did not shade (holes) and pixels
+// forward shaded more than once (multiple), and the instances most involved.
+struct EqualCheckSurface {
+    SurfaceName name;
+    uint64_t holes = 0, multiple = 0;  // pixels it won in the prepass
+};
+struct EqualCheckResult {
+    uint64_t holes = 0, multiple = 0;
+    std::vector<EqualCheckSurface> surfaces;  // most pixels first, at most ten
+};
+
 struct FrameResult {
     uint32_t width = 0, height = 0;
     std::vector<uint8_t> rgba8;      // final image, sRGB-encoded, tightly packed, top row first;
@@ -110,6 +121,7 @@ struct FrameResult {
     MsaaResult msaa;
     std::optional<DiscardCounts> masked_discards;  // count_discards=on with the prepass
     std::optional<ZfightResult> zfight;            // zfight=on with the prepass
+    std::optional<EqualCheckResult> equal_check;   // equal_check=on (prepass, EQUAL, 1x)
     // Every resource of the frame's graph, in creation order (the inspect pass's own target
     // left out).
     std::vector<ResourceSummary> resources;

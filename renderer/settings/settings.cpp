@@ -317,6 +317,11 @@ SettingsRegistry::SettingsRegistry() {
                  "zfight: the largest gap, in representable steps of the depth format (ULPs of "
                  "D32_SFLOAT, unorm steps of D24 / D16), that still counts as a fight",
                  I::Nothing),
+        bool_knob("equal_check", "diagnostics", false,
+                  "prepass on, depth_compare=equal, msaa=1: marks pixels the prepass covered "
+                  "that forward did not shade (holes) and pixels forward shaded more than once "
+                  "(ties); image equal_check, report equal_check (turns on count_fragments)",
+                  I::Pipelines),
         int_knob("overdraw_layers", "scene", 8, 1, 64,
                  "overdraw scene: number of view-filling quads, drawn back to front", I::Scene),
         int_knob("zfight_pairs", "scene", 6, 1, 16,

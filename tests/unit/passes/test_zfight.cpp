@@ -3,6 +3,7 @@
 // separated ones (nor triangles that only share an edge), and off adds nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 #include <vector>
@@ -114,6 +115,43 @@ TEST_F(Zfight, NeedsThePrepassAndOneSample) {
     ASSERT_FALSE(msaa.skipped.empty());
     EXPECT_TRUE(msaa.skipped.back().starts_with("zfight: skipped (msaa > 1"))
         << msaa.skipped.back();
+}
+
+// equal_check: with invariance the EQUAL test keeps every visible fragment (no holes);
+// without it, holes; coplanar surfaces both pass EQUAL (ties), named by the winner.
+TEST_F(Zfight, EqualCheckFindsHolesWithoutInvarianceAndTiesOnCoplanarSurfaces) {
+    const FrameResult on = render("atrium", {"equal_check=on"});
+    ASSERT_TRUE(on.equal_check);
+    EXPECT_EQ(on.equal_check->holes, 0u);
+    const FrameResult off = render("atrium", {"equal_check=on", "invariant=off"});
+    ASSERT_TRUE(off.equal_check);
+    EXPECT_GT(off.equal_check->holes, 1000u);
+    ASSERT_FALSE(off.equal_check->surfaces.empty());
+    EXPECT_GT(off.equal_check->surfaces[0].holes, 0u);
+
+    const FrameResult ties = render("zfight", {"equal_check=on"}, {"equal_check", 0});
+    ASSERT_TRUE(ties.equal_check);
+    EXPECT_GT(ties.equal_check->multiple, 0u);
+    ASSERT_FALSE(ties.equal_check->surfaces.empty());
+    for (const EqualCheckSurface& s : ties.equal_check->surfaces)
+        EXPECT_TRUE(s.name.node.starts_with("coplanar")) << s.name.node;
+    // The image marks exactly the counted pixels: 2 for a tie.
+    ASSERT_TRUE(ties.inspected);
+    uint64_t marked = 0;
+    for (size_t i = 0; i < ties.inspected->texels.size(); i += 4)
+        marked += ties.inspected->texels[i] == 2.0f;
+    EXPECT_EQ(marked, ties.equal_check->multiple);
+}
+
+TEST_F(Zfight, EqualCheckIsOffByDefaultAndNeedsEqual) {
+    const FrameResult none = render("atrium", {});
+    EXPECT_FALSE(none.equal_check);
+    EXPECT_FALSE(has_resource(none, "equal_check"));
+    const FrameResult ge = render("atrium", {"equal_check=on", "depth_compare=greater_or_equal"});
+    EXPECT_FALSE(ge.equal_check);
+    EXPECT_NE(std::find(ge.skipped.begin(), ge.skipped.end(),
+                        "equal_check: skipped (depth_compare is not equal)"),
+              ge.skipped.end());
 }
 
 // Pairs from records, without a device: distinct pixels per pair of instances, the smallest

@@ -1,0 +1,150 @@
+#include "renderer/passes/equal_check.h"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+
+#include "renderer/gpu_scene/gpu_scene.h"
+#include "renderer/passes/compute_kernel.h"
+#include "renderer/readback/host_readback.h"
+#include "renderer/shader/compiler.h"
+#include "renderer/vk/context.h"
+
+namespace ds::passes {
+namespace {
+
+constexpr VkDeviceSize kHeaderBytes = 16;  // holes, multiple, appended, padding
+constexpr size_t kTopSurfaces = 10;
+
+struct Push {
+    uint32_t width, height;
+    float far_depth;
+    uint32_t capacity;
+};
+
+}  // namespace
+
+EqualCheckPass::EqualCheckPass(const PassServices& services)
+    : services_(services), nearest_(vk::nearest_clamp_sampler(services.context, "equal check")) {
+    vk::Context& context = services.context;
+    const VkShaderStageFlags c = VK_SHADER_STAGE_COMPUTE_BIT;
+    const VkDescriptorSetLayoutBinding bindings[] = {
+        vk::layout_binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, c),
+        vk::layout_binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, c),
+        vk::layout_binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, c),
+        vk::layout_binding(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, c),
+        vk::layout_binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, c)};
+    set_layout_ = vk::DescriptorSetLayout(context, bindings, "equal check set");
+    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3},
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+    pool_ = vk::DescriptorPool(context, 1, sizes, "equal check");
+    set_ = pool_.allocate(set_layout_.handle());
+    const VkDescriptorSetLayout sets[] = {set_layout_.handle()};
+    const VkPushConstantRange push{c, 0, sizeof(Push)};
+    layout_ = vk::PipelineLayout(context, sets, {&push, 1}, "equal check layout");
+}
+
+void EqualCheckPass::build(vk::DestroyList& retired) {
+    vk::Pipeline pipeline = vk::create_compute_pipeline(
+        services_.context, layout_.handle(),
+        services_.compiler.compile("equal_check.comp", shader::Stage::Compute).spirv,
+        "equal check");
+    if (pipeline_) retired.defer(std::move(pipeline_));
+    pipeline_ = std::move(pipeline);
+}
+
+void EqualCheckPass::rebuild_pipelines(vk::DestroyList& retired) {
+    if (pipeline_) build(retired);  // fail-safe: the old one stays if this throws
+}
+
+std::optional<std::string> EqualCheckPass::skipped(const FrameInputs& in) const {
+    if (in.options.equal_check || !in.settings->get_bool("equal_check")) return std::nullopt;
+    if (!in.options.prepass) return "prepass off";
+    if (!in.options.depth_equal) return "depth_compare is not equal";
+    return "msaa > 1: forward counts fragments per pixel, not per sample";
+}
+
+void EqualCheckPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
+    result_ = {};
+    if (!in.options.equal_check) return;
+    if (!pipeline_) {
+        vk::DestroyList nothing_in_flight;
+        build(nothing_in_flight);
+    }
+    const VkExtent2D extent = graph.resources()[res.depth.index].extent;
+    capacity_ = extent.width * extent.height;
+    result_ = services_.readback.import_storage(
+        graph, "equal_check_result", kHeaderBytes + VkDeviceSize(capacity_) * 8, kHeaderBytes);
+    Bound bound{res.forward_counts, res.depth, res.surface_id, {}, result_};
+    const float far_depth = in.options.far_depth();
+    graph.add_pass(
+        name(),
+        [&](graph::PassBuilder& b) {
+            bound.marks = b.create_image("equal_check", {.format = VK_FORMAT_R32_UINT,
+                                                         .size = graph::ImageSize::relative(1.0f),
+                                                         .semantic = graph::Semantic::Count});
+            res.equal_check = bound.marks;
+            b.read(bound.counts, graph::Access::Sampled);
+            b.read(bound.depth, graph::Access::Sampled);
+            b.read(bound.surfaces, graph::Access::Sampled);
+            b.write(bound.marks, graph::Access::StorageWrite);
+            b.write(bound.result, graph::Access::StorageReadWrite);
+            return [this, bound, far_depth](graph::PassContext& ctx) {
+                record(ctx, bound, far_depth);
+            };
+        },
+        graph::PassKind::Compute);
+}
+
+void EqualCheckPass::record(graph::PassContext& ctx, const Bound& bound, float far_depth) {
+    vk::DescriptorWriter writer;
+    writer.image(0, ctx.view(bound.counts), nearest_.handle(), ctx.layout(bound.counts))
+        .image(1, ctx.view(bound.depth), nearest_.handle(), ctx.layout(bound.depth))
+        .image(2, ctx.view(bound.surfaces), nearest_.handle(), ctx.layout(bound.surfaces))
+        .storage_image(3, ctx.view(bound.marks), ctx.layout(bound.marks))
+        .buffer(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ctx.buffer(bound.result));
+    writer.update(services_.context.device(), set_);
+    const VkExtent2D extent = ctx.extent(bound.marks);
+    VkCommandBuffer cmd = ctx.cmd();
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.handle());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle(), 0, 1, &set_, 0,
+                            nullptr);
+    const Push push{extent.width, extent.height, far_depth, capacity_};
+    vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdDispatch(cmd, group_count(extent.width), group_count(extent.height), 1);
+}
+
+void EqualCheckPass::collect(const FrameCollect& c, std::span<PassResult>, FrameResult& frame) {
+    const std::span<const std::byte> bytes = c.readback.buffer_bytes(result_);
+    if (bytes.size() < kHeaderBytes) return;
+    uint32_t header[3] = {};
+    std::memcpy(header, bytes.data(), sizeof header);
+    EqualCheckResult result{.holes = header[0], .multiple = header[1], .surfaces = {}};
+    // Per instance: its holes and ties, most involved first.
+    const SurfaceTable& table = c.in.scene->surfaces();
+    std::map<uint32_t, std::pair<uint64_t, uint64_t>> by_instance;
+    const uint32_t kept = std::min(header[2], capacity_);
+    for (uint32_t i = 0; i < kept; ++i) {
+        uint32_t record[2];
+        std::memcpy(record, bytes.data() + kHeaderBytes + i * 8, sizeof record);
+        if (const auto ref = table.find(record[0])) {
+            auto& [holes, multiple] = by_instance[ref->instance];
+            (record[1] == 1 ? holes : multiple) += 1;
+        }
+    }
+    for (const auto& [instance, counts] : by_instance) {
+        const SurfaceInstance& s = table.instances[instance];
+        result.surfaces.push_back(
+            {{table.mesh_names.at(s.mesh), table.material_names.at(s.material), s.node},
+             counts.first,
+             counts.second});
+    }
+    std::stable_sort(
+        result.surfaces.begin(), result.surfaces.end(),
+        [](const auto& a, const auto& b) { return a.holes + a.multiple > b.holes + b.multiple; });
+    if (result.surfaces.size() > kTopSurfaces) result.surfaces.resize(kTopSurfaces);
+    frame.equal_check = std::move(result);
+}
+
+}  // namespace ds::passes
