@@ -133,6 +133,7 @@ void Inspector::draw() {
     shaders_panel(panel, layout);
     passes_panel(panel, layout);
     resources_panel(panel, layout);
+    depth_panel(panel, layout);
     viewer_panel(panel, layout);  // last: it takes the camera input the others left
 }
 

@@ -30,6 +30,7 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout);
 void settings_panel(PanelIo& io, const PanelLayout& layout);
 void scene_panel(PanelIo& io, const PanelLayout& layout);
 void shaders_panel(PanelIo& io, const PanelLayout& layout);
+void depth_panel(PanelIo& io, const PanelLayout& layout);
 
 // Shared widgets.
 void help_marker(const char* text);  // "(?)" with a tooltip
