@@ -130,4 +130,25 @@ graph::ImageHandle add_depth_normals_pass(graph::RenderGraph& graph, const char*
     return data.out;
 }
 
+VkPipeline LazyComputePipeline::get(VkPipelineLayout layout) {
+    if (!pipeline_ || layout != layout_) {
+        layout_ = layout;
+        vk::DestroyList nothing_in_flight;  // first build: no frame has used it
+        build(nothing_in_flight);
+    }
+    return pipeline_.handle();
+}
+
+void LazyComputePipeline::rebuild(vk::DestroyList& retired) {
+    if (pipeline_) build(retired);
+}
+
+void LazyComputePipeline::build(vk::DestroyList& retired) {
+    vk::Pipeline pipeline = vk::create_compute_pipeline(
+        services_.context, layout_,
+        services_.compiler.compile(shader_, shader::Stage::Compute).spirv, name_);
+    if (pipeline_) retired.defer(std::move(pipeline_));
+    pipeline_ = std::move(pipeline);
+}
+
 }  // namespace ds::passes

@@ -89,6 +89,26 @@ graph::ImageHandle add_depth_normals_pass(graph::RenderGraph& graph, const char*
                                           ComputeKernel& kernel, const void* push_constants,
                                           const FrameInputs& in, const FrameResources& res);
 
+// One compute pipeline over a caller's layout, built on first use (a pass most frames leave
+// out costs nothing) and rebuilt fail-safe (a shader error keeps the current one).
+class LazyComputePipeline {
+  public:
+    LazyComputePipeline(const PassServices& services, std::string shader, const char* name)
+        : services_(services), shader_(std::move(shader)), name_(name) {}
+
+    VkPipeline get(VkPipelineLayout layout);  // throws shader::ShaderError / ds::Error
+    void rebuild(vk::DestroyList& retired);   // only if built
+
+  private:
+    void build(vk::DestroyList& retired);
+
+    PassServices services_;
+    std::string shader_;
+    const char* name_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    vk::Pipeline pipeline_;
+};
+
 // Group count covering `extent` with kGroupSize x kGroupSize groups.
 inline uint32_t group_count(uint32_t pixels) {
     return (pixels + ComputeKernel::kGroupSize - 1) / ComputeKernel::kGroupSize;

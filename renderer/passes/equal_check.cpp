@@ -25,7 +25,9 @@ struct Push {
 }  // namespace
 
 EqualCheckPass::EqualCheckPass(const PassServices& services)
-    : services_(services), nearest_(vk::nearest_clamp_sampler(services.context, "equal check")) {
+    : services_(services),
+      nearest_(vk::nearest_clamp_sampler(services.context, "equal check")),
+      pipeline_(services, "equal_check.comp", "equal check") {
     vk::Context& context = services.context;
     const VkShaderStageFlags c = VK_SHADER_STAGE_COMPUTE_BIT;
     const VkDescriptorSetLayoutBinding bindings[] = {
@@ -45,17 +47,8 @@ EqualCheckPass::EqualCheckPass(const PassServices& services)
     layout_ = vk::PipelineLayout(context, sets, {&push, 1}, "equal check layout");
 }
 
-void EqualCheckPass::build(vk::DestroyList& retired) {
-    vk::Pipeline pipeline = vk::create_compute_pipeline(
-        services_.context, layout_.handle(),
-        services_.compiler.compile("equal_check.comp", shader::Stage::Compute).spirv,
-        "equal check");
-    if (pipeline_) retired.defer(std::move(pipeline_));
-    pipeline_ = std::move(pipeline);
-}
-
 void EqualCheckPass::rebuild_pipelines(vk::DestroyList& retired) {
-    if (pipeline_) build(retired);  // fail-safe: the old one stays if this throws
+    pipeline_.rebuild(retired);
 }
 
 std::optional<std::string> EqualCheckPass::skipped(const FrameInputs& in) const {
@@ -68,10 +61,7 @@ std::optional<std::string> EqualCheckPass::skipped(const FrameInputs& in) const 
 void EqualCheckPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     result_ = {};
     if (!in.options.equal_check) return;
-    if (!pipeline_) {
-        vk::DestroyList nothing_in_flight;
-        build(nothing_in_flight);
-    }
+    pipeline_.get(layout_.handle());  // built now, not while the frame records
     const VkExtent2D extent = graph.resources()[res.depth.index].extent;
     capacity_ = extent.width * extent.height;
     result_ = services_.readback.import_storage(
@@ -107,7 +97,7 @@ void EqualCheckPass::record(graph::PassContext& ctx, const Bound& bound, float f
     writer.update(services_.context.device(), set_);
     const VkExtent2D extent = ctx.extent(bound.marks);
     VkCommandBuffer cmd = ctx.cmd();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.handle());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get(layout_.handle()));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle(), 0, 1, &set_, 0,
                             nullptr);
     const Push push{extent.width, extent.height, far_depth, capacity_};

@@ -10,6 +10,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame_pass.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/image.h"
@@ -32,7 +33,6 @@ class EqualCheckPass final : public FramePass {
         graph::ImageHandle counts, depth, surfaces, marks;
         graph::BufferHandle result;
     };
-    void build(vk::DestroyList& retired);
     void record(graph::PassContext& ctx, const Bound& bound, float far_depth);
 
     PassServices services_;
@@ -41,7 +41,7 @@ class EqualCheckPass final : public FramePass {
     vk::DescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     vk::PipelineLayout layout_;
-    vk::Pipeline pipeline_;  // built by the first frame that checks
+    LazyComputePipeline pipeline_;  // built by the first frame that checks
     graph::BufferHandle result_;
     uint32_t capacity_ = 0;
 };

@@ -21,7 +21,9 @@ struct Push {
 }  // namespace
 
 MsaaProbePass::MsaaProbePass(const PassServices& services)
-    : services_(services), nearest_(vk::nearest_clamp_sampler(services.context, "msaa probe")) {
+    : services_(services),
+      nearest_(vk::nearest_clamp_sampler(services.context, "msaa probe")),
+      pipeline_(services, "msaa_probe.comp", "msaa probe") {
     vk::Context& context = services.context;
     const VkDescriptorSetLayoutBinding bindings[] = {
         vk::layout_binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
@@ -39,16 +41,8 @@ MsaaProbePass::MsaaProbePass(const PassServices& services)
     layout_ = vk::PipelineLayout(context, sets, {&push, 1}, "msaa probe layout");
 }
 
-void MsaaProbePass::build(vk::DestroyList& retired) {
-    vk::Pipeline pipeline = vk::create_compute_pipeline(
-        services_.context, layout_.handle(),
-        services_.compiler.compile("msaa_probe.comp", shader::Stage::Compute).spirv, "msaa probe");
-    if (pipeline_) retired.defer(std::move(pipeline_));
-    pipeline_ = std::move(pipeline);
-}
-
 void MsaaProbePass::rebuild_pipelines(vk::DestroyList& retired) {
-    if (pipeline_) build(retired);  // fail-safe: the old one stays if this throws
+    pipeline_.rebuild(retired);
 }
 
 void MsaaProbePass::on_sample_count_changed(VkSampleCountFlagBits samples) {
@@ -59,10 +53,7 @@ void MsaaProbePass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameR
     out_ = {};
     const bool full = in.read_back == ReadBack::Yes || in.read_back == ReadBack::WithMsaaDepth;
     if (!in.options.msaa() || !full) return;  // the exact count reads every sample: costly
-    if (!pipeline_) {
-        vk::DestroyList nothing_in_flight;
-        build(nothing_in_flight);
-    }
+    pipeline_.get(layout_.handle());          // built now, not while the frame records
     const bool copy_depth = in.read_back == ReadBack::WithMsaaDepth;
     const VkExtent2D extent = graph.resources()[res.msaa_depth.index].extent;
     depth_values_ =
@@ -95,7 +86,7 @@ void MsaaProbePass::record(graph::PassContext& ctx, const Bound& bound, int32_t 
         .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ctx.buffer(out));
     writer.update(services_.context.device(), set_);
     VkCommandBuffer cmd = ctx.cmd();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.handle());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get(layout_.handle()));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle(), 0, 1, &set_, 0,
                             nullptr);
     const Push push{extent.width, extent.height, samples, copy_depth ? 1 : 0};

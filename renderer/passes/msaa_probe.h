@@ -8,6 +8,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame_pass.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/image.h"
@@ -28,7 +29,6 @@ class MsaaProbePass final : public FramePass {
     void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
 
   private:
-    void build(vk::DestroyList& retired);
     struct Bound {
         graph::ImageHandle depth, color;
         graph::BufferHandle out;
@@ -41,8 +41,8 @@ class MsaaProbePass final : public FramePass {
     vk::DescriptorPool pool_;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     vk::PipelineLayout layout_;
-    vk::Pipeline pipeline_;    // built by the first msaa frame
-    graph::BufferHandle out_;  // this frame's, if probed
+    LazyComputePipeline pipeline_;  // built by the first msaa frame that probes
+    graph::BufferHandle out_;       // this frame's, if probed
     VkDeviceSize depth_values_ = 0;
 };
 
