@@ -1,11 +1,74 @@
 #include "renderer/passes/frame.h"
 
+#include <algorithm>
 #include <bit>
 #include <string>
 
 #include "renderer/common/error.h"
+#include "renderer/format/format.h"
 
 namespace ds::passes {
+namespace {
+
+constexpr DepthChoice kDepthChoices[] = {DepthChoice::D32f, DepthChoice::D24, DepthChoice::D16};
+
+// The formats a choice may be, in preference order: d32f D32_SFLOAT, else D32_SFLOAT_S8_UINT;
+// d24 the common D24_UNORM_S8_UINT, else X8_D24_UNORM_PACK32 (a stencil is left unused).
+std::span<const VkFormat> depth_candidates(DepthChoice choice) {
+    static constexpr VkFormat d32f[] = {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D32_SFLOAT_S8_UINT};
+    static constexpr VkFormat d24[] = {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_X8_D24_UNORM_PACK32};
+    static constexpr VkFormat d16[] = {VK_FORMAT_D16_UNORM};
+    switch (choice) {
+        case DepthChoice::D32f:
+            return d32f;
+        case DepthChoice::D24:
+            return d24;
+        case DepthChoice::D16:
+            break;
+    }
+    return d16;
+}
+
+VkFormat first_supported(DepthChoice choice, std::span<const VkFormat> supported) {
+    for (VkFormat f : depth_candidates(choice))
+        if (std::find(supported.begin(), supported.end(), f) != supported.end()) return f;
+    return VK_FORMAT_UNDEFINED;
+}
+
+DepthChoice depth_choice_of(const std::string& name) {
+    for (DepthChoice c : kDepthChoices)
+        if (name == depth_choice_name(c)) return c;
+    throw UsageError("setting depth_format: '" + name + "' is not d32f|d24|d16");
+}
+
+}  // namespace
+
+const char* depth_choice_name(DepthChoice choice) {
+    switch (choice) {
+        case DepthChoice::D32f:
+            return "d32f";
+        case DepthChoice::D24:
+            return "d24";
+        case DepthChoice::D16:
+            break;
+    }
+    return "d16";
+}
+
+VkFormat resolve_depth_format(DepthChoice choice, std::span<const VkFormat> supported,
+                              const std::string& device) {
+    if (const VkFormat f = first_supported(choice, supported)) return f;
+    std::string offered;
+    for (DepthChoice c : kDepthChoices) {
+        const VkFormat f = first_supported(c, supported);
+        if (!f) continue;
+        offered += std::string(offered.empty() ? "" : ", ") + depth_choice_name(c) + " (" +
+                   format::name(f) + ")";
+    }
+    throw UsageError("depth_format=" + std::string(depth_choice_name(choice)) + ": " + device +
+                     " does not support it as a sampled depth attachment; supported: " +
+                     (offered.empty() ? "none" : offered));
+}
 
 FrameOptions FrameOptions::from(const Settings& s) {
     FrameOptions o;
@@ -32,6 +95,7 @@ FrameOptions FrameOptions::from(const Settings& s) {
     // Both act on multisampled targets only; at 1x they would change nothing but the key.
     o.sample_shading = s.get_bool("sample_shading") && o.msaa();
     o.alpha_to_coverage = s.get_bool("alpha_to_coverage") && o.msaa();
+    o.depth_choice = depth_choice_of(s.get("depth_format"));
     return o;
 }
 

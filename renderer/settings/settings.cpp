@@ -252,6 +252,12 @@ SettingsRegistry::SettingsRegistry() {
                   I::Pipelines),
         bool_knob("reverse_z", "prepass and depth", true,
                   "reverse-Z depth (clear 0, GREATER); off: clear 1, LESS", I::Nothing),
+        // Which of these the device offers is checked per frame (the registry cannot know).
+        enum_knob("depth_format", "prepass and depth", {"d32f", "d24", "d16"},
+                  "scene depth format, as the device supports it: d32f D32_SFLOAT (else "
+                  "D32_SFLOAT_S8_UINT), d24 D24_UNORM_S8_UINT (else X8_D24_UNORM_PACK32), d16 "
+                  "D16_UNORM; the shadow map keeps its own",
+                  I::Resources),
         // A power of two the device supports for colour and depth (checked per frame: the
         // registry is static, the device is not); lavapipe offers 1 and 4.
         int_knob("msaa", "msaa", 1, 1, 8,
