@@ -376,14 +376,18 @@ uint64_t Renderer::Impl::record(Slot& slot, VkCommandBuffer cmd) {
     return graph_frame;
 }
 
-FrameResult Renderer::render(const scene::Camera& camera, const Settings& settings, uint32_t width,
-                             uint32_t height, ReadBack read_back, const InspectRequest& inspect) {
+FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& settings,
+                             uint32_t width, uint32_t height, ReadBack read_back,
+                             const InspectRequest& inspect) {
     Impl& r = *impl_;
     if (!r.scene) throw Error("render: no scene (call set_scene first)");
     if (width == 0 || height == 0)
         throw Error("render: size " + std::to_string(width) + "x" + std::to_string(height) +
                     " is empty");
     const passes::FrameOptions options = r.options_for(settings);
+    // The scene camera with the znear / zfar knobs, checked before the frame begins; the
+    // frame uses only this one.
+    const scene::Camera camera = passes::effective_camera(scene_camera, options);
     // "final" is read back as it is (sRGB-encoded); any other image through the inspect pass.
     const bool inspect_final = inspect.resource == kFinalImageName;
     if (inspect_final && read_back == ReadBack::No) read_back = ReadBack::Color;

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <bit>
+#include <sstream>
 #include <string>
 
 #include "renderer/common/error.h"
 #include "renderer/format/format.h"
+#include "renderer/scene/scene.h"
 
 namespace ds::passes {
 namespace {
@@ -41,6 +43,20 @@ DepthChoice depth_choice_of(const std::string& name) {
     throw UsageError("setting depth_format: '" + name + "' is not d32f|d24|d16");
 }
 
+// A plane knob: "scene" keeps the camera's.
+std::optional<float> plane(const Settings& s, const char* name) {
+    if (s.get(name) == "scene") return std::nullopt;
+    return s.get_float(name);
+}
+
+// "znear=0.5", or "zfar=200 (the scene camera's)" when the knob is at "scene".
+std::string plane_text(const char* name, const std::optional<float>& knob, float value) {
+    std::ostringstream out;
+    out.precision(7);  // as the registry writes numbers
+    out << name << "=" << value << (knob ? "" : " (the scene camera's)");
+    return out.str();
+}
+
 }  // namespace
 
 const char* depth_choice_name(DepthChoice choice) {
@@ -70,6 +86,19 @@ VkFormat resolve_depth_format(DepthChoice choice, std::span<const VkFormat> supp
                      (offered.empty() ? "none" : offered));
 }
 
+scene::Camera effective_camera(const scene::Camera& camera, const FrameOptions& options) {
+    scene::Camera c = camera;
+    if (options.znear) c.znear = *options.znear;
+    if (options.zfar) c.zfar = *options.zfar;
+    if (!(c.znear > 0.0f))
+        throw UsageError(plane_text("znear", options.znear, c.znear) +
+                         ": the near plane must be above 0");
+    if (!(c.znear < c.zfar))
+        throw UsageError(plane_text("znear", options.znear, c.znear) + " must be below " +
+                         plane_text("zfar", options.zfar, c.zfar));
+    return c;
+}
+
 FrameOptions FrameOptions::from(const Settings& s) {
     FrameOptions o;
     o.prepass = s.get_bool("prepass");
@@ -96,6 +125,8 @@ FrameOptions FrameOptions::from(const Settings& s) {
     o.sample_shading = s.get_bool("sample_shading") && o.msaa();
     o.alpha_to_coverage = s.get_bool("alpha_to_coverage") && o.msaa();
     o.depth_choice = depth_choice_of(s.get("depth_format"));
+    o.znear = plane(s, "znear");
+    o.zfar = plane(s, "zfar");
     return o;
 }
 

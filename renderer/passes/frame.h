@@ -18,6 +18,9 @@
 namespace ds {
 class GpuScene;
 class HostReadback;
+namespace scene {
+struct Camera;
+}
 namespace shader {
 class Compiler;
 }
@@ -85,6 +88,7 @@ struct FrameOptions {
     // device, so from() leaves it undefined and the renderer resolves it (resolve_depth_format)
     // before the frame begins.
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
+    std::optional<float> znear, zfar;  // none: the scene camera's own
 
     static FrameOptions from(const Settings& settings);
     // The depth test that keeps the nearer fragment, and the clear value for "far".
@@ -103,6 +107,10 @@ const char* depth_choice_name(DepthChoice choice);
 // that `supported` holds. Throws UsageError naming `device` and the choices it supports.
 VkFormat resolve_depth_format(DepthChoice choice, std::span<const VkFormat> supported,
                               const std::string& device);
+// The camera the frame renders with: `camera` with the options' znear / zfar where set. Throws
+// UsageError unless 0 < znear < zfar (the planes as combined, so a knob is checked against the
+// scene camera's other plane).
+scene::Camera effective_camera(const scene::Camera& camera, const FrameOptions& options);
 
 // Graph handles the passes of one frame meet through; a pass fills what it writes.
 struct FrameResources {
