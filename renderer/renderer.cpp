@@ -425,6 +425,11 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
         result.inspected->zfar = camera.zfar;
         result.inspected->reverse_z = options.reverse_z;
     }
+    // The scene depth as this frame used it (report.json's "depth").
+    result.depth = DepthResult{.format = options.depth_format,
+                               .znear = camera.znear,
+                               .zfar = camera.zfar,
+                               .reverse_z = options.reverse_z};
     return result;
 }
 
