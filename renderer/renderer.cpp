@@ -28,8 +28,11 @@ namespace {
 
 enum FrameBinding : uint32_t { kFrameUniforms = 0, kInstances = 1 };
 
-// What the settings ask of the device that the registry cannot know.
-void check_device(const vk::DeviceReport& report, const passes::FrameOptions& options) {
+// What the settings ask of the device that the registry cannot know; the depth_format choice
+// becomes the device's format for it here.
+void check_device(const vk::DeviceReport& report, passes::FrameOptions& options) {
+    options.depth_format = passes::resolve_depth_format(options.depth_choice, report.depth_formats,
+                                                        report.candidate.name);
     const VkSampleCountFlags supported = report.color_sample_counts & report.depth_sample_counts;
     if (!(supported & options.samples))
         throw Error("msaa=" + std::to_string(int(options.samples)) + ": " + report.candidate.name +
@@ -176,13 +179,14 @@ Renderer::Impl::Impl(const RendererOptions& options) {
     frames = std::make_unique<vk::FrameRing>(*context);
     graph = std::make_unique<graph::RenderGraph>(*context);
     readback = std::make_unique<HostReadback>(*context);
-    const VkFormat depth_format = context->report().depth_format;
-    const passes::PassServices services{
-        *context,     *compiler, frame_layout.handle(), material_layout.handle(),
-        depth_format, *readback};
+    const passes::PassServices services{*context,
+                                        *compiler,
+                                        frame_layout.handle(),
+                                        material_layout.handle(),
+                                        context->report().depth_format,
+                                        *readback};
     passes = make_frame_passes(services);
-    targets = std::make_unique<FrameTargets>(*context, passes::kFinalFormat, depth_format,
-                                             passes::kHdrFormat);
+    targets = std::make_unique<FrameTargets>(*context, passes::kFinalFormat, passes::kHdrFormat);
 }
 
 Renderer::Impl::~Impl() {
@@ -349,7 +353,7 @@ void Renderer::set_scene(const scene::Scene& scene) {
 // The settings as this frame's options, checked against the device and the scene; passes
 // hear of a new sample count before the frame is declared.
 passes::FrameOptions Renderer::Impl::options_for(const Settings& settings) {
-    const passes::FrameOptions options = passes::FrameOptions::from(settings);
+    passes::FrameOptions options = passes::FrameOptions::from(settings);
     check_device(context->report(), options);
     // material_alpha_cutoff: checked against the scene (an unknown name throws) and uploaded
     // when it changed, before this frame begins.
@@ -365,7 +369,7 @@ passes::FrameOptions Renderer::Impl::options_for(const Settings& settings) {
 void Renderer::Impl::begin(VkExtent2D size, const passes::FrameOptions& options, vk::Frame& frame) {
     if (size.width != last_size.width || size.height != last_size.height) cut = true;
     last_size = size;
-    targets->ensure(size, options.count_fragments, options.samples, frame.retired);
+    targets->ensure(size, options, frame.retired);
     if (cut) graph->invalidate_history();
     graph->begin_frame(size, frame.retired);  // a new size invalidates history too
     readback->begin_frame(frame.retired);
@@ -383,14 +387,18 @@ uint64_t Renderer::Impl::record(Slot& slot, VkCommandBuffer cmd) {
     return graph_frame;
 }
 
-FrameResult Renderer::render(const scene::Camera& camera, const Settings& settings, uint32_t width,
-                             uint32_t height, ReadBack read_back, const InspectRequest& inspect) {
+FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& settings,
+                             uint32_t width, uint32_t height, ReadBack read_back,
+                             const InspectRequest& inspect) {
     Impl& r = *impl_;
     if (!r.scene) throw Error("render: no scene (call set_scene first)");
     if (width == 0 || height == 0)
         throw Error("render: size " + std::to_string(width) + "x" + std::to_string(height) +
                     " is empty");
     const passes::FrameOptions options = r.options_for(settings);
+    // The scene camera with the znear / zfar knobs, checked before the frame begins; the
+    // frame uses only this one.
+    const scene::Camera camera = passes::effective_camera(scene_camera, options);
     // "final" is read back as it is (sRGB-encoded); any other image through the inspect pass.
     const bool inspect_final = inspect.resource == kFinalImageName;
     if (inspect_final && read_back == ReadBack::No) read_back = ReadBack::Color;
@@ -428,6 +436,11 @@ FrameResult Renderer::render(const scene::Camera& camera, const Settings& settin
         result.inspected->zfar = camera.zfar;
         result.inspected->reverse_z = options.reverse_z;
     }
+    // The scene depth as this frame used it (report.json's "depth").
+    result.depth = DepthResult{.format = options.depth_format,
+                               .znear = camera.znear,
+                               .zfar = camera.zfar,
+                               .reverse_z = options.reverse_z};
     return result;
 }
 

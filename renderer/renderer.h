@@ -44,8 +44,10 @@ class Renderer {
     void set_scene(const scene::Scene& scene);
     // Draws one frame at width x height and reads it back (blocks until it is done).
     // Throws ds::Error before set_scene(), for a zero size, or for an msaa sample count the
-    // device does not support (the message lists the supported ones); UsageError for a
-    // material_alpha_cutoff name that is no MASK material of the scene (before the frame begins).
+    // device does not support (the message lists the supported ones); UsageError, before the
+    // frame begins, for a material_alpha_cutoff name that is no MASK material of the scene, a
+    // depth_format the device lacks, or planes (`camera`'s with the znear / zfar knobs) that
+    // are not 0 < znear < zfar.
     FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
                        uint32_t height, ReadBack read_back = ReadBack::Yes,
                        const InspectRequest& inspect = {});

@@ -3,8 +3,11 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <sstream>
+#include <string>
 
 #include "renderer/common/error.h"
+#include "renderer/format/format.h"
 
 namespace ds::capture {
 
@@ -110,6 +113,21 @@ nlohmann::json msaa_json(const MsaaResult& msaa) {
     return json;
 }
 
+// A float as its shortest text reads (0.1f is 0.1, not 0.100000001), as the registry writes.
+double plain(float v) {
+    std::ostringstream out;
+    out.precision(7);
+    out << v;
+    return std::stod(out.str());
+}
+
+nlohmann::json depth_json(const DepthResult& depth) {
+    return {{"format", format::name(depth.format)},
+            {"znear", plain(depth.znear)},
+            {"zfar", plain(depth.zfar)},
+            {"reverse_z", depth.reverse_z}};
+}
+
 }  // namespace
 
 nlohmann::json frame_report(const ReportInput& in) {
@@ -129,6 +147,7 @@ nlohmann::json frame_report(const ReportInput& in) {
         {"skipped", f.skipped},
         {"msaa", msaa_json(f.msaa)},
     };
+    if (f.depth) json["depth"] = depth_json(*f.depth);
     // Left out when not counted, so that a reader never takes "not counted" for zero.
     if (f.covered_pixels) json["coverage"] = {{"covered_pixels", *f.covered_pixels}};
     if (f.masked_discards)

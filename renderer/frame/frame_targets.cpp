@@ -23,12 +23,8 @@ graph::ExternalState probed() {
 
 }  // namespace
 
-FrameTargets::FrameTargets(vk::Context& context, VkFormat final_format, VkFormat depth_format,
-                           VkFormat hdr_format)
-    : context_(context),
-      final_format_(final_format),
-      depth_format_(depth_format),
-      hdr_format_(hdr_format) {}
+FrameTargets::FrameTargets(vk::Context& context, VkFormat final_format, VkFormat hdr_format)
+    : context_(context), final_format_(final_format), hdr_format_(hdr_format) {}
 
 vk::Image FrameTargets::make_image(VkFormat format, VkImageUsageFlags usage,
                                    const char* name) const {
@@ -36,6 +32,17 @@ vk::Image FrameTargets::make_image(VkFormat format, VkImageUsageFlags usage,
                      {size_.width, size_.height, 1, format,
                       usage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                       VK_SAMPLE_COUNT_1_BIT, name});
+}
+
+// A new depth format replaces both depth images; ensure_msaa makes the multisampled one again.
+void FrameTargets::ensure_depth(VkFormat format, vk::DestroyList& retired) {
+    if (format == depth_format_ && depth_) return;
+    for (vk::Image* image : {&depth_, &msaa_depth_}) {
+        if (*image) retired.defer(std::move(*image));
+        *image = vk::Image{};
+    }
+    depth_format_ = format;
+    depth_ = make_image(format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "depth");
 }
 
 void FrameTargets::ensure_msaa(VkSampleCountFlagBits samples, vk::DestroyList& retired) {
@@ -64,23 +71,21 @@ void FrameTargets::retire_all(vk::DestroyList& retired) {
     }
 }
 
-void FrameTargets::ensure(VkExtent2D size, bool counts, VkSampleCountFlagBits samples,
+void FrameTargets::ensure(VkExtent2D size, const passes::FrameOptions& options,
                           vk::DestroyList& retired) {
     if (size.width != size_.width || size.height != size_.height) {
         retire_all(retired);
         size_ = size;
     }
-    if (!final_) {
-        final_ = make_image(final_format_, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "final");
-        depth_ = make_image(depth_format_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "depth");
-    }
-    if (counts && !counts_[0]) {
+    if (!final_) final_ = make_image(final_format_, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "final");
+    ensure_depth(options.depth_format, retired);
+    if (options.count_fragments && !counts_[0]) {
         for (size_t i = 0; i < counts_.size(); ++i)
             counts_[i] = make_image(kCountFormat,
                                     VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                     kCountNames[i]);
     }
-    ensure_msaa(samples, retired);
+    ensure_msaa(options.samples, retired);
 }
 
 void FrameTargets::import(graph::RenderGraph& graph, const passes::FrameOptions& options,
@@ -129,6 +134,7 @@ void FrameTargets::reset() {
     samples_ = VK_SAMPLE_COUNT_1_BIT;
     final_ = vk::Image{};
     depth_ = vk::Image{};
+    depth_format_ = VK_FORMAT_UNDEFINED;
     counts_ = {};
     size_ = {0, 0};
 }

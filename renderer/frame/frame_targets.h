@@ -2,9 +2,9 @@
 // The images a frame hands to the graph from outside, because they outlive one frame's
 // transients at a fixed size: the final image (tonemap writes it), the scene depth, with
 // count_fragments=on the three count images, and with msaa > 1 the multisampled depth and
-// HDR colour. The read-back passes copy or probe them inside the graph (HostReadback); each
-// import's final state is what those passes leave, so a frame that reads nothing back ends
-// in the same states.
+// HDR colour. Both depth images have the frame's depth_format: a new one recreates them. The
+// read-back passes copy or probe them inside the graph (HostReadback); each import's final
+// state is what those passes leave, so a frame that reads nothing back ends in the same states.
 #include <array>
 #include <cstdint>
 
@@ -23,13 +23,12 @@ namespace ds {
 
 class FrameTargets {
   public:
-    FrameTargets(vk::Context& context, VkFormat final_format, VkFormat depth_format,
-                 VkFormat hdr_format);
+    FrameTargets(vk::Context& context, VkFormat final_format, VkFormat hdr_format);
 
-    // (Re)creates what this frame needs at `size` and `samples`; replaced images go to
-    // `retired` (an earlier frame may still use them).
-    void ensure(VkExtent2D size, bool counts, VkSampleCountFlagBits samples,
-                vk::DestroyList& retired);
+    // (Re)creates what this frame needs at `size` with the options' count images, sample
+    // count and depth format; replaced images go to `retired` (an earlier frame may still use
+    // them).
+    void ensure(VkExtent2D size, const passes::FrameOptions& options, vk::DestroyList& retired);
     // Imports the final image, the depth, the multisampled images (msaa > 1) and, with
     // counting on, a count image for each counting pass that runs. Fills res.final_image,
     // res.depth, res.msaa_* and res.*_counts.
@@ -41,13 +40,14 @@ class FrameTargets {
 
   private:
     vk::Image make_image(VkFormat format, VkImageUsageFlags usage, const char* name) const;
+    void ensure_depth(VkFormat format, vk::DestroyList& retired);
     void ensure_msaa(VkSampleCountFlagBits samples, vk::DestroyList& retired);
     void retire_all(vk::DestroyList& retired);
 
     vk::Context& context_;
     VkFormat final_format_;
-    VkFormat depth_format_;
     VkFormat hdr_format_;
+    VkFormat depth_format_ = VK_FORMAT_UNDEFINED;  // of depth_ and msaa_depth_
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
     VkExtent2D size_{0, 0};
     vk::Image final_;

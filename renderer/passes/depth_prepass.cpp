@@ -39,8 +39,9 @@ DepthPrepass::DepthPrepass(const PassServices& services)
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           discard_layout_.handle(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "depth prepass layout");
-    pipelines_.get({.alpha = AlphaTest::Opaque});
-    pipelines_.get({.alpha = AlphaTest::Mask});
+    const VkFormat depth = services.preferred_depth_format;
+    pipelines_.get({.alpha = AlphaTest::Opaque, .depth = depth});
+    pipelines_.get({.alpha = AlphaTest::Mask, .depth = depth});
 }
 
 void DepthPrepass::rebuild_pipelines(vk::DestroyList& retired) {
@@ -77,7 +78,7 @@ vk::Pipeline DepthPrepass::create(const Variant& v, const ShaderStages& s) const
     vk::GraphicsPipelineBuilder b = scene_pipeline_builder(layout_.handle(), s.vert, s.frag);
     b.color_attachment(kNormalFormat).color_attachment(kRoughnessFormat);
     if (v.surface_id) b.color_attachment(kSurfaceFormat);
-    return b.depth_attachment(services_.depth_format)
+    return b.depth_attachment(v.depth)
         .samples(v.samples)
         .alpha_to_coverage(v.alpha_to_coverage)
         .build(services_.context, kNames[int(v.alpha)]);
@@ -88,7 +89,8 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
     if (!in.options.prepass) return;
     const Variant opaque{.counting = res.prepass_counts.valid(),
                          .surface_id = in.options.surface_id,
-                         .samples = in.options.samples};
+                         .samples = in.options.samples,
+                         .depth = in.options.depth_format};
     // Only the pipeline with the alpha test changes: the opaque one keeps early-Z and its
     // variant, so normal frames share it.
     Variant tested = opaque;

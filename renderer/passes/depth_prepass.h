@@ -1,8 +1,8 @@
 #pragma once
 // depth_prepass (seed 000): fills the scene depth before anything is lit, and writes the
 // world-space shading normal (A2B10G10R10, n * 0.5 + 0.5, normal-mapped) and the roughness
-// (R8) that forward, GTAO and contact shadows read. Depth: D32, cleared to "far", the closer
-// test (GREATER with reverse-Z), writes on.
+// (R8) that forward, GTAO and contact shadows read. Depth: the frame's depth_format (D32
+// unless set), cleared to "far", the closer test (GREATER with reverse-Z), writes on.
 //
 // Two pipelines share the invariant vertex shader: opaque first (no discard: early-Z is
 // guaranteed), then MASK (alpha test before any other texture read). masked_split=off draws
@@ -67,10 +67,11 @@ class DepthPrepass final : public FramePass {
         bool count_discards = false;     // alpha-tested pipeline only
         bool surface_id = false;         // SURFACE_ID=1: a third, u32 attachment
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+        VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(int(alpha), counting, alpha_to_coverage, count_discards, surface_id,
-                               int(samples));
+                               int(samples), int(depth));
         }
     };
     static constexpr uint32_t kDiscardSet = 2;

@@ -16,8 +16,8 @@ DepthResolvePass::DepthResolvePass(const PassServices& services, After after)
       after_(after),
       nearest_(vk::nearest_clamp_sampler(services.context, "depth resolve nearest")),
       sets_(services.context, 1, kPoolSizes, "depth resolve sets"),
-      pipelines_([this](const NoVariant& v) { return compile(v); },
-                 [this](const NoVariant& v, const ShaderStages& s) { return create(v, s); }) {
+      pipelines_([this](const Variant& v) { return compile(v); },
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
     const VkDescriptorSetLayoutBinding binding = vk::layout_binding(
         0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT);
     set_layout_ = vk::DescriptorSetLayout(services.context, {&binding, 1}, "depth resolve set");
@@ -26,14 +26,14 @@ DepthResolvePass::DepthResolvePass(const PassServices& services, After after)
     layout_ = vk::PipelineLayout(services.context, sets, {&push, 1}, "depth resolve layout");
 }
 
-ShaderStages DepthResolvePass::compile(const NoVariant&) const {
+ShaderStages DepthResolvePass::compile(const Variant&) const {
     return compile_fullscreen(services_.compiler, "depth_resolve.frag");
 }
 
-vk::Pipeline DepthResolvePass::create(const NoVariant&, const ShaderStages& s) const {
+vk::Pipeline DepthResolvePass::create(const Variant& v, const ShaderStages& s) const {
     return create_fullscreen(services_.context,
                              {.fragment = "depth_resolve.frag",
-                              .depth = services_.depth_format,
+                              .depth = v.depth,
                               .layout = layout_.handle(),
                               .name = "depth resolve"},
                              s);
@@ -58,7 +58,7 @@ void DepthResolvePass::add(graph::RenderGraph& graph, const FrameInputs& in, Fra
 void DepthResolvePass::record(graph::PassContext& ctx, const FrameInputs& in,
                               graph::ImageHandle msaa_depth, graph::ImageHandle depth) {
     VkCommandBuffer cmd = ctx.cmd();
-    const VkPipeline pipeline = pipelines_.get({});
+    const VkPipeline pipeline = pipelines_.get({.depth = in.options.depth_format});
     const VkDescriptorSet set = sets_.allocate(in.frame_number, set_layout_.handle());
     vk::DescriptorWriter writer;
     writer.image(0, ctx.view(msaa_depth), nearest_.handle(), ctx.layout(msaa_depth));

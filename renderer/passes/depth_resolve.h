@@ -37,8 +37,15 @@ class DepthResolvePass final : public FramePass {
     void rebuild_pipelines(vk::DestroyList& retired) override { pipelines_.rebuild(retired); }
 
   private:
-    ShaderStages compile(const NoVariant& variant) const;
-    vk::Pipeline create(const NoVariant& variant, const ShaderStages& stages) const;
+    // The single-sample depth it writes: the frame's depth_format.
+    struct Variant {
+        VkFormat depth = VK_FORMAT_UNDEFINED;
+        bool operator==(const Variant&) const = default;
+        size_t hash() const { return hash_fields(int(depth)); }
+    };
+
+    ShaderStages compile(const Variant& variant) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
     void record(graph::PassContext& ctx, const FrameInputs& in, graph::ImageHandle msaa_depth,
                 graph::ImageHandle depth);
 
@@ -48,7 +55,7 @@ class DepthResolvePass final : public FramePass {
     vk::DescriptorSetLayout set_layout_;
     vk::PipelineLayout layout_;
     FrameDescriptorPool sets_;
-    PipelineVariants<NoVariant> pipelines_;
+    PipelineVariants<Variant> pipelines_;
 };
 
 }  // namespace ds::passes

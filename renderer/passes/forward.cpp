@@ -20,7 +20,7 @@ const VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAG
 
 ForwardPass::ForwardPass(const PassServices& services)
     : services_(services),
-      lighting_(services.context, services.depth_format),
+      lighting_(services.context, services.preferred_depth_format),
       count_layout_(create_count_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "forward count sets"),
       pipelines_([this](const Variant& v) { return compile(v); },
@@ -28,7 +28,7 @@ ForwardPass::ForwardPass(const PassServices& services)
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           lighting_.layout(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "forward layout");
-    pipelines_.get({.prepass_inputs = true});
+    pipelines_.get({.prepass_inputs = true, .depth = services.preferred_depth_format});
 }
 
 void ForwardPass::rebuild_pipelines(vk::DestroyList& retired) {
@@ -59,7 +59,7 @@ vk::Pipeline ForwardPass::create(const Variant& v, const ShaderStages& s) const 
                                           : "forward opaque";
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
         .color_attachment(kHdrFormat)
-        .depth_attachment(services_.depth_format)
+        .depth_attachment(v.depth)
         .samples(v.samples)
         .sample_shading(v.sample_shading ? 1.0f : 0.0f)
         .alpha_to_coverage(v.alpha_to_coverage)
@@ -72,7 +72,8 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
                          .non_invariant = !o.invariant,
                          .counting = res.forward_counts.valid(),
                          .sample_shading = o.sample_shading,
-                         .samples = o.samples};
+                         .samples = o.samples,
+                         .depth = o.depth_format};
     // The pipelines with the alpha test: alpha-to-coverage replaces their discard.
     Variant mask = opaque;
     mask.alpha_mask = true;

@@ -65,10 +65,11 @@ class ForwardPass final : public FramePass {
         bool sample_shading = false;     // sample_shading=on (msaa > 1)
         bool alpha_to_coverage = false;  // MASK pipelines, alpha_to_coverage=on
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+        VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(prepass_inputs, alpha_mask, non_invariant, counting, sample_shading,
-                               alpha_to_coverage, int(samples));
+                               alpha_to_coverage, int(samples), int(depth));
         }
     };
 

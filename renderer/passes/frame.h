@@ -5,6 +5,8 @@
 // only here and in graph resources.
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <string>
 
 #include <vulkan/vulkan.h>
 #include <glm/glm.hpp>
@@ -16,6 +18,9 @@
 namespace ds {
 class GpuScene;
 class HostReadback;
+namespace scene {
+struct Camera;
+}
 namespace shader {
 class Compiler;
 }
@@ -57,6 +62,9 @@ inline constexpr uint32_t kFrameReverseZ = 1u << 3;
 inline constexpr VkFormat kFinalFormat = VK_FORMAT_R8G8B8A8_SRGB;      // tonemap writes it
 inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // scene colour
 
+// depth_format's choices; the VkFormat each names depends on the device (resolve_depth_format).
+enum class DepthChoice : uint8_t { D32f, D24, D16 };
+
 // The settings of one frame, parsed once (names and meanings: the registry's help text).
 struct FrameOptions {
     bool prepass = true;
@@ -79,6 +87,12 @@ struct FrameOptions {
     uint32_t zfight_steps = 4;
     bool equal_check = false;  // effective: prepass, depth_compare=equal and msaa=1
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // msaa
+    DepthChoice depth_choice = DepthChoice::D32f;
+    // The scene depth's format for depth_choice on this device: the registry cannot know the
+    // device, so from() leaves it undefined and the renderer resolves it (resolve_depth_format)
+    // before the frame begins.
+    VkFormat depth_format = VK_FORMAT_UNDEFINED;
+    std::optional<float> znear, zfar;  // none: the scene camera's own
 
     static FrameOptions from(const Settings& settings);
     // The depth test that keeps the nearer fragment, and the clear value for "far".
@@ -90,11 +104,23 @@ struct FrameOptions {
     bool msaa() const { return samples != VK_SAMPLE_COUNT_1_BIT; }
 };
 
+// depth_format's name for `choice` ("d32f", "d24", "d16").
+const char* depth_choice_name(DepthChoice choice);
+// The format `choice` names among the device's `supported` depth formats: d32f D32_SFLOAT (or
+// D32_SFLOAT_S8_UINT), d24 D24_UNORM_S8_UINT or X8_D24_UNORM_PACK32, d16 D16_UNORM, the first
+// that `supported` holds. Throws UsageError naming `device` and the choices it supports.
+VkFormat resolve_depth_format(DepthChoice choice, std::span<const VkFormat> supported,
+                              const std::string& device);
+// The camera the frame renders with: `camera` with the options' znear / zfar where set. Throws
+// UsageError unless 0 < znear < zfar (the planes as combined, so a knob is checked against the
+// scene camera's other plane).
+scene::Camera effective_camera(const scene::Camera& camera, const FrameOptions& options);
+
 // Graph handles the passes of one frame meet through; a pass fills what it writes.
 struct FrameResources {
     graph::BufferHandle frame_uniforms;  // FrameUniforms (imported)
-    graph::ImageHandle shadow_map;       // D32, absolute size
-    graph::ImageHandle depth;            // D32 scene depth (reverse-Z unless reverse_z=off)
+    graph::ImageHandle shadow_map;       // PassServices::preferred_depth_format, absolute size
+    graph::ImageHandle depth;            // FrameOptions::depth_format; reverse-Z unless off
     graph::ImageHandle normals;          // A2B10G10R10, n * 0.5 + 0.5
     graph::ImageHandle roughness;        // R8
     graph::ImageHandle ao_raw;           // gtao output
@@ -125,7 +151,10 @@ struct PassServices {
     shader::Compiler& compiler;
     VkDescriptorSetLayout frame_layout;     // set 0: FrameUniforms + instances
     VkDescriptorSetLayout material_layout;  // set 1: one per material (gpu_scene.h)
-    VkFormat depth_format;
+    // The device's first depth format (vk::DeviceReport::depth_format): the shadow map's, and
+    // the scene depth pipelines are warmed up with (what d32f gives where the device has it).
+    // A frame's scene depth is FrameOptions::depth_format: passes that attach it follow that.
+    VkFormat preferred_depth_format;
     HostReadback& readback;  // host buffers the read-back passes copy into
 };
 

@@ -60,6 +60,14 @@ struct MsaaResult {
     std::vector<float> resolved_depth;
 };
 
+// The scene depth as the frame used it: the format depth_format gave on this device, the
+// effective planes (the scene camera's, or the znear / zfar knobs) and the convention.
+struct DepthResult {
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    float znear = 0.0f, zfar = 0.0f;
+    bool reverse_z = true;
+};
+
 // count_discards=on: fragments that ran the depth prepass's alpha-tested pipeline (the MASK one;
 // masked_split=off: the one for all geometry), and how many of them it discarded. Exact
 // (shader atomics; helper invocations do not count).
@@ -119,6 +127,7 @@ struct FrameResult {
     std::optional<uint64_t> covered_pixels;
     std::vector<std::string> skipped;  // "gtao: skipped (prepass off)", in pass order
     MsaaResult msaa;
+    std::optional<DepthResult> depth;              // every rendered frame has it
     std::optional<DiscardCounts> masked_discards;  // count_discards=on with the prepass
     std::optional<ZfightResult> zfight;            // zfight=on with the prepass
     std::optional<EqualCheckResult> equal_check;   // equal_check=on (prepass, EQUAL, 1x)

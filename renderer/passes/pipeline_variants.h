@@ -1,10 +1,10 @@
 #pragma once
 // A pass's pipelines by variant: a small value type per pass (its defines and state, with ==
 // and hash()), each pipeline built on first use, so a variant no frame asks for (the counting
-// ones, invariant=off, another sample count) costs nothing, and switching back costs nothing
-// after the first frame of each. rebuild() is fail-safe: every stage of every built variant
-// compiles first (a shader::ShaderError leaves the current pipelines in place), then the
-// pipelines are created, and only then are the old ones retired.
+// ones, invariant=off, another sample count or depth format) costs nothing, and switching back
+// costs nothing after the first frame of each. rebuild() is fail-safe: every stage of every
+// built variant compiles first (a shader::ShaderError leaves the current pipelines in place),
+// then the pipelines are created, and only then are the old ones retired.
 #include <concepts>
 #include <cstddef>
 #include <functional>
@@ -37,13 +37,6 @@ size_t hash_fields(const Fields&... fields) {
 struct NoVariant {
     bool operator==(const NoVariant&) const = default;
     size_t hash() const { return 0; }
-};
-
-// The variant of a pass whose pipelines differ only by sample count (msaa).
-struct SampleVariant {
-    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    bool operator==(const SampleVariant&) const = default;
-    size_t hash() const { return hash_fields(int(samples)); }
 };
 
 template <typename Key>

@@ -110,9 +110,10 @@ void ReadbackCopyPass::collect(const FrameCollect& c, std::span<PassResult>, Fra
     if (what_ != What::Depth) return;  // count sums are the counting passes' to report
     const std::span<const std::byte> depth = c.readback.image_bytes(c.res.depth);
     if (depth.empty()) return;
-    frame.covered_pixels = covered_texels(depth, services_.depth_format, c.in.options.far_depth());
+    const VkFormat format = c.in.options.depth_format;
+    frame.covered_pixels = covered_texels(depth, format, c.in.options.far_depth());
     if (c.in.read_back == ReadBack::WithMsaaDepth && c.in.options.msaa() &&
-        depth_bits(services_.depth_format) == 32) {
+        depth_bits(format) == 32) {
         frame.msaa.resolved_depth.resize(depth.size() / sizeof(float));
         std::memcpy(frame.msaa.resolved_depth.data(), depth.data(), depth.size());
     }

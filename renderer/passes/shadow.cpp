@@ -39,7 +39,7 @@ ShaderStages ShadowPass::compile(const Variant& v) const {
 
 vk::Pipeline ShadowPass::create(const Variant& v, const ShaderStages& s) const {
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag, VertexInputs::PositionUv)
-        .depth_attachment(services_.depth_format)
+        .depth_attachment(services_.preferred_depth_format)
         .build(services_.context, v.mask ? "shadow mask" : "shadow opaque");
 }
 
@@ -60,7 +60,7 @@ void ShadowPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
         kName,
         [&](graph::PassBuilder& b, Data& d) {
             res.shadow_map =
-                b.create_image("shadow_map", {.format = services_.depth_format,
+                b.create_image("shadow_map", {.format = services_.preferred_depth_format,
                                               .size = graph::ImageSize::fixed(kSize, kSize),
                                               .semantic = graph::Semantic::ShadowDepth});
             b.write(res.shadow_map, Access::DepthAttachment);

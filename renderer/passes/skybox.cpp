@@ -10,26 +10,26 @@ using graph::Access;
 
 SkyboxPass::SkyboxPass(const PassServices& services)
     : services_(services),
-      pipelines_([this](const SampleVariant& v) { return compile(v); },
-                 [this](const SampleVariant& v, const ShaderStages& s) { return create(v, s); }) {
+      pipelines_([this](const Variant& v) { return compile(v); },
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "skybox layout");
-    pipelines_.get({});
+    pipelines_.get({.depth = services.preferred_depth_format});
 }
 
 void SkyboxPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
 }
 
-ShaderStages SkyboxPass::compile(const SampleVariant&) const {
+ShaderStages SkyboxPass::compile(const Variant&) const {
     return compile_fullscreen(services_.compiler, "skybox.frag");
 }
 
-vk::Pipeline SkyboxPass::create(const SampleVariant& v, const ShaderStages& s) const {
+vk::Pipeline SkyboxPass::create(const Variant& v, const ShaderStages& s) const {
     return create_fullscreen(services_.context,
                              {.fragment = "skybox.frag",
                               .color = kHdrFormat,
-                              .depth = services_.depth_format,
+                              .depth = v.depth,
                               .samples = v.samples,
                               .layout = layout_.handle(),
                               .name = "skybox"},
@@ -43,7 +43,8 @@ std::optional<std::string> SkyboxPass::skipped(const FrameInputs& in) const {
 
 void SkyboxPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     if (!in.options.sky) return;
-    const VkPipeline pipeline = pipelines_.get({in.options.samples});
+    const VkPipeline pipeline =
+        pipelines_.get({.samples = in.options.samples, .depth = in.options.depth_format});
     // msaa > 1: into the multisampled colour, against the multisampled depth, before
     // transparent resolves: a silhouette pixel's sky samples blend with its surface samples.
     const bool msaa = in.options.msaa();

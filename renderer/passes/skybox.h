@@ -29,12 +29,20 @@ class SkyboxPass final : public FramePass {
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
 
   private:
-    ShaderStages compile(const SampleVariant& variant) const;
-    vk::Pipeline create(const SampleVariant& variant, const ShaderStages& stages) const;
+    // The scene depth it tests against: the frame's sample count and depth_format.
+    struct Variant {
+        VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+        VkFormat depth = VK_FORMAT_UNDEFINED;
+        bool operator==(const Variant&) const = default;
+        size_t hash() const { return hash_fields(int(samples), int(depth)); }
+    };
+
+    ShaderStages compile(const Variant& variant) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
 
     PassServices services_;
     vk::PipelineLayout layout_;
-    PipelineVariants<SampleVariant> pipelines_;
+    PipelineVariants<Variant> pipelines_;
 };
 
 }  // namespace ds::passes

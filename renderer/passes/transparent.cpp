@@ -19,7 +19,7 @@ const VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAG
 
 TransparentPass::TransparentPass(const PassServices& services)
     : services_(services),
-      lighting_(services.context, services.depth_format),
+      lighting_(services.context, services.preferred_depth_format),
       count_layout_(create_count_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "transparent count sets"),
       pipelines_([this](const Variant& v) { return compile(v); },
@@ -27,7 +27,7 @@ TransparentPass::TransparentPass(const PassServices& services)
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           lighting_.layout(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "transparent layout");
-    pipelines_.get({});
+    pipelines_.get({.depth = services.preferred_depth_format});
 }
 
 void TransparentPass::rebuild_pipelines(vk::DestroyList& retired) {
@@ -44,14 +44,15 @@ ShaderStages TransparentPass::compile(const Variant& v) const {
 vk::Pipeline TransparentPass::create(const Variant& v, const ShaderStages& s) const {
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
         .color_attachment(kHdrFormat, vk::Blend::Alpha)
-        .depth_attachment(services_.depth_format)
+        .depth_attachment(v.depth)
         .samples(v.samples)
         .build(services_.context, "transparent");
 }
 
 void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
-    const VkPipeline pipeline =
-        pipelines_.get({.counting = res.transparent_counts.valid(), .samples = in.options.samples});
+    const VkPipeline pipeline = pipelines_.get({.counting = res.transparent_counts.valid(),
+                                                .samples = in.options.samples,
+                                                .depth = in.options.depth_format});
     // No prepass normal or roughness: BLEND surfaces are not in the prepass.
     const LightingInputs lighting = {.shadow_map = res.shadow_map,
                                      .normals = {},

@@ -42,8 +42,9 @@ class TransparentPass final : public FramePass {
     struct Variant {
         bool counting = false;  // COUNT_FRAGMENTS=1
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+        VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
         bool operator==(const Variant&) const = default;
-        size_t hash() const { return hash_fields(counting, int(samples)); }
+        size_t hash() const { return hash_fields(counting, int(samples), int(depth)); }
     };
 
     ShaderStages compile(const Variant& variant) const;

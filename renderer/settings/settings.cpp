@@ -77,6 +77,15 @@ SettingDef map_knob(std::string name, std::string group, double min, double max,
                       inv};
 }
 
+// A depth plane: "scene" (the scene camera's) or a distance; never a pipeline or resource
+// change (the projection is a uniform).
+SettingDef plane_knob(std::string name, std::string help) {
+    SettingDef def = float_knob(std::move(name), "prepass and depth", "scene", 0, 1000000,
+                                std::move(help), Invalidates::Nothing);
+    def.choices = {"scene"};  // the keyword beside the number
+    return def;
+}
+
 // Shortest text that reads back to the same float ("0.5", "45", "1e-05").
 std::string format_number(double v) {
     std::ostringstream out;
@@ -252,6 +261,20 @@ SettingsRegistry::SettingsRegistry() {
                   I::Pipelines),
         bool_knob("reverse_z", "prepass and depth", true,
                   "reverse-Z depth (clear 0, GREATER); off: clear 1, LESS", I::Nothing),
+        // Which of these the device offers is checked per frame (the registry cannot know).
+        enum_knob("depth_format", "prepass and depth", {"d32f", "d24", "d16"},
+                  "scene depth format, as the device supports it: d32f D32_SFLOAT (else "
+                  "D32_SFLOAT_S8_UINT), d24 D24_UNORM_S8_UINT (else X8_D24_UNORM_PACK32), d16 "
+                  "D16_UNORM; the shadow map keeps its own",
+                  I::Resources),
+        // 0 passes the registry so that znear=0 meets the planes' own check (0 < znear < zfar,
+        // checked against the scene camera's when rendering).
+        plane_knob("znear",
+                   "near plane in scene units; scene: the scene camera's own (must stay below "
+                   "the far plane)"),
+        plane_knob("zfar",
+                   "far plane in scene units; scene: the scene camera's own (must stay above "
+                   "the near plane)"),
         // A power of two the device supports for colour and depth (checked per frame: the
         // registry is static, the device is not); lavapipe offers 1 and 4.
         int_knob("msaa", "msaa", 1, 1, 8,

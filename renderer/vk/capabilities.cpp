@@ -1,7 +1,10 @@
 #include "renderer/vk/capabilities.h"
 #include "renderer/vk/features.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <sstream>
+#include <string_view>
 
 #include "renderer/common/error.h"
 #include "renderer/format/format.h"
@@ -152,6 +155,22 @@ void probe_properties(VkPhysicalDevice device, DeviceReport& r) {
     r.stencil_resolve_modes = resolve.supportedStencilResolveModes;
 }
 
+// DEPTHSCOPE_HIDE_DEPTH_FORMATS="D24_UNORM_S8_UINT X8_D24_UNORM_PACK32" (names as `info`
+// prints them, separated by spaces or commas): depth formats probed as unsupported, to see
+// what a device without them does (lavapipe has every one).
+bool hidden_depth_format(VkFormat format) {
+    const char* env = std::getenv("DEPTHSCOPE_HIDE_DEPTH_FORMATS");
+    if (!env) return false;
+    const std::string name = format::name(format);
+    std::string_view list = env;
+    while (!list.empty()) {
+        const size_t end = std::min(list.find_first_of(" ,"), list.size());
+        if (list.substr(0, end) == name) return true;
+        list.remove_prefix(std::min(end + 1, list.size()));
+    }
+    return false;
+}
+
 }  // namespace
 
 DeviceReport probe_device(VkPhysicalDevice device, uint32_t index) {
@@ -164,7 +183,8 @@ DeviceReport probe_device(VkPhysicalDevice device, uint32_t index) {
 
     auto query = [device](VkFormat format) {
         VkFormatProperties props{};
-        vkGetPhysicalDeviceFormatProperties(device, format, &props);
+        if (!hidden_depth_format(format))
+            vkGetPhysicalDeviceFormatProperties(device, format, &props);
         return props;
     };
     r.depth_formats = supported_formats(kDepthFormatCandidates, kDepthFormatFeatures, query);

@@ -16,9 +16,10 @@
 namespace ds::vk {
 
 // Most desirable first: 32-bit float depth keeps reverse-Z precision; D16 is the last resort.
+// X8_D24 is listed so that depth_format=d24 finds it on devices without D24_UNORM_S8_UINT.
 inline constexpr VkFormat kDepthFormatCandidates[] = {
     VK_FORMAT_D32_SFLOAT, VK_FORMAT_D32_SFLOAT_S8_UINT, VK_FORMAT_D24_UNORM_S8_UINT,
-    VK_FORMAT_D16_UNORM};
+    VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D16_UNORM};
 
 // A depth buffer is rendered to and later sampled (views, GTAO, captures).
 inline constexpr VkFormatFeatureFlags kDepthFormatFeatures =

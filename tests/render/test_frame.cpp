@@ -2,6 +2,11 @@
 // change the frame's structure, exact shaded-fragment counts, prepass on/off equivalence.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
+#include <string>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "tests/render/capture_helpers.h"
@@ -13,6 +18,10 @@ namespace {
 const std::vector<std::string> kAllPasses = {
     "shadow",          "depth_prepass", "gtao",   "ao_spatial",  "ao_temporal",
     "contact_shadows", "forward",       "skybox", "transparent", "tonemap"};
+
+// Without the prepass, gtao and contact shadows have no input and are skipped.
+const std::vector<std::string> kPassesWithoutPrepass = {"shadow", "forward", "skybox",
+                                                        "transparent", "tonemap"};
 
 // The frame's own passes (kind "frame": no clear or read-back), in execution order.
 std::vector<std::string> pass_names(const nlohmann::json& passes) {
@@ -55,6 +64,39 @@ TEST(Frame, EveryStructuralCombinationIsValidationClean) {
                 << run["settings"].dump();
         }
     }
+}
+
+// Depth knobs: every depth format (lavapipe has all three) x reverse_z x prepass x msaa 1/4
+// in one process, validation on, each run with the frame's passes in order; at 4x the shader
+// depth resolve (where the device has no native one) follows the pass that wrote the depth.
+TEST(Frame, EveryDepthCombinationIsValidationClean) {
+    const auto json_path = fresh_dir("frame-depth-matrix") / "bench.json";
+    auto r = run_depthscope(
+        "bench --validate --scene atrium --size 160x90 --frames 1 --warmup 0 "
+        "--matrix depth_format=d32f,d24,d16 --matrix reverse_z=on,off --matrix prepass=on,off "
+        "--matrix msaa=1,4 --json " +
+            json_path.string(),
+        600);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    auto json = nlohmann::json::parse(read_file(json_path));
+    ASSERT_EQ(json["runs"].size(), 24u);
+    std::set<std::string> seen;
+    for (const auto& run : json["runs"]) {
+        const auto& s = run["settings"];
+        seen.insert(s["depth_format"].get<std::string>() + s["reverse_z"].get<std::string>() +
+                    s["prepass"].get<std::string>() + s["msaa"].get<std::string>());
+        std::vector<std::string> names = pass_names(run["passes"]);
+        const bool prepass = s["prepass"] == "on";
+        const auto resolve = std::find(names.begin(), names.end(), "depth_resolve");
+        if (resolve != names.end()) {
+            EXPECT_EQ(s["msaa"], "4") << s.dump();
+            ASSERT_NE(resolve, names.begin());
+            EXPECT_EQ(*(resolve - 1), prepass ? "depth_prepass" : "forward") << s.dump();
+            names.erase(resolve);
+        }
+        EXPECT_EQ(names, prepass ? kAllPasses : kPassesWithoutPrepass) << s.dump();
+    }
+    EXPECT_EQ(seen.size(), 24u);
 }
 
 TEST(Frame, ReportListsPassesWithStatsAndCoverage) {

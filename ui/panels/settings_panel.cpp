@@ -41,10 +41,14 @@ std::vector<int> accepted_ints(const SettingDef& def) {
 }
 
 // The number a keyword knob starts from when its keyword is unticked: the middle of the range
-// (alpha_cutoff: 0.5, glTF's default), except fov, whose keyword means the camera's own.
+// (alpha_cutoff: 0.5, glTF's default), except fov, znear and zfar, whose keyword means the
+// camera's own (the middle of the planes' range would put znear beyond zfar).
 std::string number_for_keyword(PanelIo& io, const SettingDef& def) {
     double v = 0.5 * (def.min + def.max);
-    if (def.name == "fov") v = double(glm::degrees(io.inspector.camera().yfov));
+    const scene::Camera& camera = io.inspector.camera();
+    if (def.name == "fov") v = double(glm::degrees(camera.yfov));
+    if (def.name == "znear") v = double(camera.znear);
+    if (def.name == "zfar") v = double(camera.zfar);
     char text[32];
     std::snprintf(text, sizeof text, "%.4g", std::clamp(v, def.min, def.max));
     return text;

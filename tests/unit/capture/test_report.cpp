@@ -99,6 +99,18 @@ TEST(Report, ZfightNamesBothSurfacesOfEveryPair) {
     EXPECT_FALSE(z.contains("dropped_records"));
 }
 
+// The scene depth's facts: the format's name, the planes as written (0.1f is 0.1), the
+// convention.
+TEST(Report, DepthSaysTheFormatAndThePlanes) {
+    FrameResult frame = two_pass_frame();
+    frame.depth = DepthResult{
+        .format = VK_FORMAT_D24_UNORM_S8_UINT, .znear = 0.1f, .zfar = 250.0f, .reverse_z = false};
+    EXPECT_EQ(
+        report_of(frame)["depth"],
+        (nlohmann::json{
+            {"format", "D24_UNORM_S8_UINT"}, {"znear", 0.1}, {"zfar", 250}, {"reverse_z", false}}));
+}
+
 TEST(Report, PassesJsonMergesWhatTheCallerMeasured) {
     FrameResult frame = two_pass_frame();
     frame.passes[1].role = graph::PassRole::ReadBack;

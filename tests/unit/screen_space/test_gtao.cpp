@@ -156,9 +156,12 @@ TEST_F(Gtao, FailedRebuildKeepsThePipeline) {
     fs::copy(shader::Compiler::default_shader_root(), root, fs::copy_options::recursive);
     shader::Compiler compiler(root, {});
     passes::PassServices services = rig().services();
-    passes::PassServices local{services.context,      compiler,
-                               services.frame_layout, services.material_layout,
-                               services.depth_format, services.readback};
+    passes::PassServices local{services.context,
+                               compiler,
+                               services.frame_layout,
+                               services.material_layout,
+                               services.preferred_depth_format,
+                               services.readback};
     passes::GtaoPass gtao(local);
 
     rig().upload(render_synthetic(corner_scene(), corner_camera(), 64, 48, true, kSun));
