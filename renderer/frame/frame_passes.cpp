@@ -4,6 +4,7 @@
 #include "renderer/passes/ao_temporal.h"
 #include "renderer/passes/clear_counts.h"
 #include "renderer/passes/contact_shadows.h"
+#include "renderer/passes/depth_precision.h"
 #include "renderer/passes/depth_prepass.h"
 #include "renderer/passes/depth_resolve.h"
 #include "renderer/passes/equal_check.h"
@@ -32,6 +33,7 @@ std::vector<std::unique_ptr<passes::FramePass>> make_frame_passes(const passes::
     add(std::make_unique<ShadowPass>(s));
     add(std::make_unique<DepthPrepass>(s));
     add(std::make_unique<DepthResolvePass>(s, Resolve::Prepass));
+    add(std::make_unique<DepthPrecisionPass>(s));
     add(std::make_unique<GtaoPass>(s));
     add(std::make_unique<AoSpatialPass>(s));
     add(std::make_unique<AoTemporalPass>(s));

@@ -152,6 +152,8 @@ const char* semantic_name(Semantic semantic) {
             return "Count";
         case Semantic::SurfaceId:
             return "SurfaceId";
+        case Semantic::DepthStep:
+            return "DepthStep";
         case Semantic::Other:
             return "Other";
     }

@@ -17,6 +17,7 @@ enum class Semantic : uint8_t {
     LdrColor,
     Count,      // u32 counters (exact per-pixel invocation counts)
     SurfaceId,  // u32 surface ids (0: nothing drawn; gpu_scene.h SurfaceTable)
+    DepthStep,  // r: one depth step along the view ray, g: the ray distance (scene units)
     Other,
 };
 

@@ -85,7 +85,8 @@ struct FrameOptions {
     bool surface_id = false;         // effective: surface_id or zfight, and the prepass
     bool zfight = false;             // effective: also needs the prepass and msaa=1
     uint32_t zfight_steps = 4;
-    bool equal_check = false;  // effective: prepass, depth_compare=equal and msaa=1
+    bool equal_check = false;      // effective: prepass, depth_compare=equal and msaa=1
+    bool depth_precision = false;  // depth_precision or zfight
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // msaa
     DepthChoice depth_choice = DepthChoice::D32f;
     // The scene depth's format for depth_choice on this device: the registry cannot know the
@@ -142,7 +143,8 @@ struct FrameResources {
     // pixel (gpu_scene.h SurfaceTable; 0 = none); zfight: R32_UINT competitors per pixel.
     graph::ImageHandle surface_id;
     graph::ImageHandle zfight;
-    graph::ImageHandle equal_check;  // R32_UINT: 0 ok, 1 hole, 2 shaded more than once
+    graph::ImageHandle equal_check;      // R32_UINT: 0 ok, 1 hole, 2 shaded more than once
+    graph::ImageHandle depth_precision;  // RGBA32F: step and distance along the ray
 };
 
 // Built once per Renderer; what a pass needs to create pipelines and record.

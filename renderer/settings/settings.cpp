@@ -340,6 +340,11 @@ SettingsRegistry::SettingsRegistry() {
                  "zfight: the largest gap, in representable steps of the depth format (ULPs of "
                  "D32_SFLOAT, unorm steps of D24 / D16), that still counts as a fight",
                  I::Nothing),
+        bool_knob("depth_precision", "diagnostics", false,
+                  "image depth_precision: per pixel, the distance along the view ray to the "
+                  "next representable depth value (format, planes, direction), in scene units "
+                  "(on whenever zfight is)",
+                  I::Nothing),
         bool_knob("equal_check", "diagnostics", false,
                   "prepass on, depth_compare=equal, msaa=1: marks pixels the prepass covered "
                   "that forward did not shade (holes) and pixels forward shaded more than once "

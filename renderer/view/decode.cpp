@@ -67,6 +67,13 @@ MinMax fit(const float* texels, size_t count, Quantity&& quantity) {
     return m;
 }
 
+// A manual range in scene units as the log10 range a log view fits in.
+ViewParams manual_log(ViewParams p) {
+    p.black = std::log10(std::max(p.black, 1e-30f));
+    p.white = std::log10(std::max(p.white, 1e-30f));
+    return p;
+}
+
 Range choose_range(const ViewParams& params, const MinMax& fitted, float default_black,
                    float default_white) {
     if (!params.auto_fit) return Range::manual(params.black, params.white);
@@ -167,6 +174,29 @@ void decode_count(const InspectedImage& image, const ViewParams& params, size_t 
     view.black = r.black;
     view.white = r.white;
     view.unit = "count";
+}
+
+// Depth steps: r on a log scale (the range in scene units, fitted in log10), as the heat map;
+// nothing drawn (0) in the sky colour.
+void decode_depth_step(const InspectedImage& image, const ViewParams& params, size_t count,
+                       uint8_t* out, DecodedView& view) {
+    const float* texels = image.texels.data();
+    auto log_step = [](const float* t) {
+        return t[0] > 0.0f ? std::log10(t[0]) : std::numeric_limits<float>::quiet_NaN();
+    };
+    const MinMax m = fit(texels, count, log_step);
+    const ViewParams logged =
+        params.auto_fit ? params : manual_log(params);  // the manual range is in scene units
+    const Range r = choose_range(logged, m, -6.0f, 0.0f);
+    const Rgb* heat = detail::heat_table();
+    each_texel(texels, count, out, [&](const float* t, uint8_t* p) {
+        if (!(t[0] > 0.0f)) return put(p, kSkyColor);
+        if (!std::isfinite(t[0])) return put(p, kNonFiniteColor);
+        put(p, heat[std::max<size_t>(1, heat_index(r.t(std::log10(t[0]))))]);
+    });
+    view.black = std::pow(10.0f, r.black);
+    view.white = std::pow(10.0f, r.white);
+    view.unit = "scene units per depth step (log)";
 }
 
 // Surface ids: a colour of its own per id (a hash: neighbours differ), nothing drawn in the sky
@@ -307,6 +337,9 @@ void decode_into(const InspectedImage& image, const ViewParams& params, DecodedV
         case Semantic::SurfaceId:
             decode_surface(image, count, p);
             out.unit = "surface";
+            break;
+        case Semantic::DepthStep:
+            decode_depth_step(image, vp, count, p, out);
             break;
         case Semantic::EncodedNormal:
             decode_colour<false>(image, vp, count, p, 1.0f);

@@ -65,6 +65,15 @@ void normal_text(Readout& r) {
     }
 }
 
+// A length in scene units (metres) at a readable scale: "0.37 mm", "12.4 m", "3.1 um".
+std::string length_text(float metres) {
+    const double m = metres;
+    if (m < 1e-4) return text("%.3g um", m * 1e6);
+    if (m < 1.0) return text("%.3g mm", m * 1e3);
+    if (m < 1e3) return text("%.3g m", m);
+    return text("%.3g km", m * 1e-3);
+}
+
 void colour_text(const InspectedImage& image, Readout& r) {
     r.raw_text = tuple_text(r.raw.data(), r.channels, "%.3f");
     if (image.semantic == Semantic::HdrColor) {
@@ -106,6 +115,12 @@ void describe(const InspectedImage& image, Readout& r) {
         case Semantic::HdrColor:
         case Semantic::LdrColor:
             colour_text(image, r);
+            break;
+        case Semantic::DepthStep:
+            r.raw_text = tuple_text(r.raw.data(), 2, "%.4g");
+            r.decoded_text = v > 0.0f
+                                 ? "one step = " + length_text(v) + " at " + length_text(r.raw[1])
+                                 : std::string("nothing drawn");
             break;
         case Semantic::SurfaceId:
             r.raw_text = text("%.0f", double(v));

@@ -187,6 +187,23 @@ TEST(DecodeCount, HeatMapFromBlackToTopColour) {
     EXPECT_GT(one[0] + one[1] + one[2], 200);
 }
 
+// depth_precision: the step and the distance in readable units; the view is a log heat map
+// whose range is in scene units, nothing drawn in the sky colour.
+TEST(Readout, DepthStepSaysOneStepAtADistance) {
+    const InspectedImage image =
+        make_image(Semantic::DepthStep, VK_FORMAT_R32G32B32A32_SFLOAT, 3, 1,
+                   {{0.00037f, 12.4f, 0, 0}, {0, 0, 0, 0}, {2.5e-6f, 1.5f, 0, 0}});
+    EXPECT_EQ(ds::view::readout(image, 0, 0)->decoded_text, "one step = 0.37 mm at 12.4 m");
+    EXPECT_EQ(ds::view::readout(image, 1, 0)->decoded_text, "nothing drawn");
+    EXPECT_EQ(ds::view::readout(image, 2, 0)->decoded_text, "one step = 2.5 um at 1.5 m");
+    const DecodedView view = ds::view::decode(image, ViewParams{});
+    EXPECT_NEAR(view.black, 2.5e-6f, 1e-9f);
+    EXPECT_NEAR(view.white, 0.00037f, 1e-7f);
+    EXPECT_EQ(pixel(view, 1),
+              (Rgb{ds::view::kSkyColor[0], ds::view::kSkyColor[1], ds::view::kSkyColor[2]}));
+    EXPECT_NE(pixel(view, 0), pixel(view, 2));
+}
+
 TEST(DecodeCount, AutoFitIgnoresZeroAndManualClamps) {
     auto image = scalar_row(Semantic::Count, VK_FORMAT_R32_UINT, {0.0f, 3.0f, 6.0f, 12.0f});
     DecodedView view = ds::view::decode(image, manual(0.0f, 6.0f));
