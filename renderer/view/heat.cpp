@@ -93,4 +93,17 @@ std::vector<LegendStop> count_legend(float black, float white) {
     return stops;
 }
 
+std::vector<LegendStop> log_legend(float black, float white, int stops) {
+    std::vector<LegendStop> out;
+    if (!(black > 0.0f) || !(white > black) || stops < 2) return out;
+    const float lo = std::log10(black), hi = std::log10(white);
+    const Rgb* heat = detail::heat_table();
+    for (int k = 0; k < stops; ++k) {
+        const float t = float(k) / float(stops - 1);
+        out.push_back(
+            {std::pow(10.0f, lo + t * (hi - lo)), heat[std::max<size_t>(1, heat_index(t))]});
+    }
+    return out;
+}
+
 }  // namespace ds::view

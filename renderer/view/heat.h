@@ -21,5 +21,9 @@ struct LegendStop {
 // first colour above black and five evenly spaced counts ending at white (whole counts when
 // black and white are).
 std::vector<LegendStop> count_legend(float black, float white);
+// Stops for a log-scale view (depth_precision: DecodedView::black/white in scene units, both
+// > 0): `stops` values evenly spaced in log10 from black to white, with the colours decode
+// gives them (the first colour above black at black).
+std::vector<LegendStop> log_legend(float black, float white, int stops = 6);
 
 }  // namespace ds::view

@@ -147,15 +147,18 @@ void controls(PanelIo& io, const FrameResult& frame) {
     mouse_mode(v);
 }
 
-void legend(const DecodedView& view) {
+// The heat map's legend: counts, or scene units on a log scale (depth_precision).
+void legend(const DecodedView& view, bool log_scale) {
     int id = 0;
-    for (const LegendStop& stop : count_legend(view.black, view.white)) {
+    const std::vector<LegendStop> stops =
+        log_scale ? view::log_legend(view.black, view.white) : count_legend(view.black, view.white);
+    for (const LegendStop& stop : stops) {
         const ImVec4 c(stop.rgb[0] / 255.0f, stop.rgb[1] / 255.0f, stop.rgb[2] / 255.0f, 1.0f);
         ImGui::PushID(id++);
         ImGui::ColorButton("##legend", c, ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
         ImGui::PopID();
         ImGui::SameLine();
-        ImGui::Text("%g", stop.count);
+        ImGui::Text(log_scale ? "%.2g m" : "%g", stop.count);
         ImGui::SameLine();
     }
     ImGui::NewLine();
@@ -224,8 +227,10 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
     const FrameResult& frame = io.inspector.frame();
     controls(io, frame);
     const DecodedView& view = io.inspector.view();
-    const bool counts = frame.inspected && frame.inspected->semantic == graph::Semantic::Count;
-    if (counts) legend(view);
+    const graph::Semantic semantic =
+        frame.inspected ? frame.inspected->semantic : graph::Semantic::Other;
+    if (semantic == graph::Semantic::Count || semantic == graph::Semantic::DepthStep)
+        legend(view, semantic == graph::Semantic::DepthStep);
     if (!frame.inspected && frame.width)
         ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "'%s' is not in this frame (its pass is off)",
                            v.resource.c_str());

@@ -204,6 +204,22 @@ TEST(Readout, DepthStepSaysOneStepAtADistance) {
     EXPECT_NE(pixel(view, 0), pixel(view, 2));
 }
 
+// The log legend's stops: evenly spaced in log10 from black to white, coloured as decode
+// colours those values.
+TEST(Readout, LogLegendMatchesTheDepthStepColours) {
+    const std::vector<ds::view::LegendStop> stops = ds::view::log_legend(1e-6f, 1e-3f, 4);
+    ASSERT_EQ(stops.size(), 4u);
+    EXPECT_NEAR(stops[0].count, 1e-6f, 1e-10f);
+    EXPECT_NEAR(stops[1].count, 1e-5f, 1e-8f);
+    EXPECT_NEAR(stops[3].count, 1e-3f, 1e-7f);
+    const InspectedImage image =
+        make_image(Semantic::DepthStep, VK_FORMAT_R32G32B32A32_SFLOAT, 4, 1,
+                   {{1e-6f, 1, 0, 0}, {1e-5f, 1, 0, 0}, {1e-4f, 1, 0, 0}, {1e-3f, 1, 0, 0}});
+    const DecodedView view = ds::view::decode(image, ViewParams{});
+    for (uint32_t x = 0; x < 4; ++x) EXPECT_EQ(pixel(view, x), stops[x].rgb) << x;
+    EXPECT_TRUE(ds::view::log_legend(0.0f, 1.0f).empty()) << "no log of 0";
+}
+
 TEST(DecodeCount, AutoFitIgnoresZeroAndManualClamps) {
     auto image = scalar_row(Semantic::Count, VK_FORMAT_R32_UINT, {0.0f, 3.0f, 6.0f, 12.0f});
     DecodedView view = ds::view::decode(image, manual(0.0f, 6.0f));
