@@ -244,9 +244,37 @@ void Inspector::render() {
     if (frame_.inspected) {
         view::decode_into(*frame_.inspected, viewer_.params, view_);
         if (frame_.inspected->name == kZfightImage)
-            view::overlay_counts(view_, *frame_.inspected, frame_.rgba8);
+            view::overlay_counts(view_, *frame_.inspected, frame_.rgba8, 0.3f,
+                                 selected_pair_pixels());
     } else
         view_ = view::DecodedView{};
+}
+
+// The selected zfight pair's pixels as a keep mask (empty: no pair selected, show all).
+std::vector<uint8_t> Inspector::selected_pair_pixels() const {
+    std::vector<uint8_t> keep;
+    const int pair = viewer_.zfight_pair;
+    if (pair < 0 || !frame_.zfight || size_t(pair) >= frame_.zfight->pairs.size()) return keep;
+    keep.assign(size_t(frame_.width) * frame_.height, 0);
+    for (const ZfightHit& h : frame_.zfight->hits)
+        if (h.pair == uint32_t(pair) && h.pixel < keep.size()) keep[h.pixel] = 1;
+    return keep;
+}
+
+// What fights at a zfight pixel: "coplanar_a_0 vs coplanar_b_0 (0 steps)", pair by pair.
+std::string Inspector::zfight_text(uint32_t x, uint32_t y) const {
+    if (!frame_.zfight) return {};
+    const uint32_t pixel = y * frame_.width + x;
+    const auto& hits = frame_.zfight->hits;
+    auto it = std::lower_bound(hits.begin(), hits.end(), pixel,
+                               [](const ZfightHit& h, uint32_t p) { return h.pixel < p; });
+    std::string out;
+    for (; it != hits.end() && it->pixel == pixel; ++it) {
+        const ZfightPair& p = frame_.zfight->pairs[it->pair];
+        out += (out.empty() ? ": " : "; ") + p.a.node + " vs " + p.b.node + " (" +
+               std::to_string(it->steps) + (it->steps == 1 ? " step)" : " steps)");
+    }
+    return out;
 }
 
 std::optional<view::Readout> Inspector::readout_at(uint32_t x, uint32_t y) const {
@@ -258,6 +286,7 @@ std::optional<view::Readout> Inspector::readout_at(uint32_t x, uint32_t y) const
             r->decoded_text += ": mesh " + s->name.mesh + ", material " + s->name.material +
                                ", node " + s->name.node + ", triangle " +
                                std::to_string(s->triangle);
+    if (r && frame_.inspected->name == kZfightImage) r->decoded_text += zfight_text(x, y);
     return r;
 }
 

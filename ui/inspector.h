@@ -65,6 +65,7 @@ struct ViewerState {
     float zoom = 1.0f;             // screen pixels per image texel
     glm::vec2 centre{0.5f, 0.5f};  // the image point at the viewport's centre (0..1)
     MouseTarget mouse = MouseTarget::Camera;
+    int zfight_pair = -1;  // the Depth panel's selected pair: the zfight view shows only it
     // Filled by the viewer panel.
     float x = 0, y = 0, w = 0, h = 0;  // the image area, in framebuffer pixels
     std::optional<view::Readout> hover;
@@ -131,6 +132,8 @@ class Inspector {
     VkExtent2D render_size() const;
     // Hover readout of the shown resource at image texel (x, y).
     std::optional<view::Readout> readout_at(uint32_t x, uint32_t y) const;
+    std::vector<uint8_t> selected_pair_pixels() const;
+    std::string zfight_text(uint32_t x, uint32_t y) const;
 
     // Panel state that outlives a frame (text fields).
     struct PanelState {

@@ -97,10 +97,17 @@ struct ZfightPair {
     uint64_t pixels = 0;
     uint32_t min_steps = 0;
 };
+// One pair fighting in one pixel (the least gap seen there).
+struct ZfightHit {
+    uint32_t pixel = 0;  // y * width + x
+    uint32_t pair = 0;   // index into ZfightResult::pairs
+    uint32_t steps = 0;
+};
 struct ZfightResult {
     uint32_t steps = 0;             // zfight_steps
     uint64_t pixels = 0;            // pixels with at least one competitor
     std::vector<ZfightPair> pairs;  // most pixels first
+    std::vector<ZfightHit> hits;    // by pixel, then pair: what the viewer highlights and reads
     uint64_t dropped = 0;           // competitor records past the buffer (pairs undercount)
 };
 

@@ -41,20 +41,33 @@ ZfightResult zfight_pairs(std::span<const ZfightRecord> records, const SurfaceTa
         std::set<uint32_t> pixels;
         uint32_t min_steps = UINT32_MAX;
     };
-    std::map<std::pair<uint32_t, uint32_t>, Acc> by_pair;  // instance indices, low first
+    using Key = std::pair<uint32_t, uint32_t>;  // instance indices, low first
+    std::map<Key, Acc> by_pair;
+    std::map<std::pair<uint32_t, Key>, uint32_t> hit_steps;  // (pixel, pair): least steps
     for (const ZfightRecord& r : records) {
         const auto a = table.find(r.winner), b = table.find(r.competitor);
         if (!a || !b) continue;
-        Acc& acc = by_pair[std::minmax(a->instance, b->instance)];
+        const Key key = std::minmax(a->instance, b->instance);
+        Acc& acc = by_pair[key];
         acc.pixels.insert(r.pixel);
         acc.min_steps = std::min(acc.min_steps, r.steps);
+        auto [it, added] = hit_steps.try_emplace({r.pixel, key}, r.steps);
+        if (!added) it->second = std::min(it->second, r.steps);
     }
+    std::vector<std::pair<Key, const Acc*>> order;
+    for (const auto& [key, acc] : by_pair) order.push_back({key, &acc});
+    std::stable_sort(order.begin(), order.end(), [](const auto& x, const auto& y) {
+        return x.second->pixels.size() > y.second->pixels.size();
+    });
     ZfightResult out;
-    for (const auto& [key, acc] : by_pair)
+    std::map<Key, uint32_t> index_of;
+    for (const auto& [key, acc] : order) {
+        index_of[key] = uint32_t(out.pairs.size());
         out.pairs.push_back({name_of(table, key.first), name_of(table, key.second),
-                             acc.pixels.size(), acc.min_steps});
-    std::stable_sort(out.pairs.begin(), out.pairs.end(),
-                     [](const ZfightPair& x, const ZfightPair& y) { return x.pixels > y.pixels; });
+                             acc->pixels.size(), acc->min_steps});
+    }
+    for (const auto& [where, steps] : hit_steps)  // ordered by pixel already
+        out.hits.push_back({where.first, index_of.at(where.second), steps});
     return out;
 }
 

@@ -361,14 +361,15 @@ void decode_into(const InspectedImage& image, const ViewParams& params, DecodedV
 }
 
 void overlay_counts(DecodedView& view, const InspectedImage& counts,
-                    std::span<const uint8_t> final_rgba8, float dim) {
+                    std::span<const uint8_t> final_rgba8, float dim,
+                    std::span<const uint8_t> keep) {
     const size_t texels = size_t(view.width) * view.height;
     if (counts.width != view.width || counts.height != view.height ||
         final_rgba8.size() != texels * 4 || counts.texels.size() != texels * 4 ||
-        view.rgba8.size() != texels * 4)
+        view.rgba8.size() != texels * 4 || (!keep.empty() && keep.size() != texels))
         return;
     for (size_t i = 0; i < texels; ++i) {
-        if (counts.texels[i * 4] > 0.0f) continue;
+        if (counts.texels[i * 4] > 0.0f && (keep.empty() || keep[i])) continue;
         for (size_t c = 0; c < 3; ++c)
             view.rgba8[i * 4 + c] = uint8_t(float(final_rgba8[i * 4 + c]) * dim + 0.5f);
     }

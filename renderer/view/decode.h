@@ -70,11 +70,12 @@ inline constexpr std::array<uint8_t, 3> kNonFiniteColor{255, 0, 255};  // NaN / 
 DecodedView decode(const InspectedImage& image, const ViewParams& params);
 void decode_into(const InspectedImage& image, const ViewParams& params, DecodedView& out);
 
-// A count image (zfight) over the frame: texels whose count is 0 show the final image
-// (`final_rgba8`, same size, tightly packed) scaled by `dim`; the others keep the heat
-// colour `view` decoded. Nothing happens when the sizes differ.
+// A count image (zfight) over the frame: texels whose count is 0 (or, with `keep`, whose keep
+// byte is 0) show the final image (`final_rgba8`, same size, tightly packed) scaled by `dim`;
+// the others keep the heat colour `view` decoded. Nothing happens when the sizes differ.
 void overlay_counts(DecodedView& view, const InspectedImage& counts,
-                    std::span<const uint8_t> final_rgba8, float dim = 0.3f);
+                    std::span<const uint8_t> final_rgba8, float dim = 0.3f,
+                    std::span<const uint8_t> keep = {});
 
 // The colour a surface id shows as (not 0): a hash, bright enough to read, stable across
 // frames, so one surface keeps its colour.

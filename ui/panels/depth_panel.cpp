@@ -50,10 +50,19 @@ void zfight_section(PanelIo& io) {
     ImGui::TableSetupColumn("pixels");
     ImGui::TableSetupColumn("min steps");
     ImGui::TableHeadersRow();
-    for (const ZfightPair& p : z.pairs) {
+    for (size_t i = 0; i < z.pairs.size(); ++i) {
+        const ZfightPair& p = z.pairs[i];
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(surface_text(p.a).c_str());
+        // Selecting a pair shows only its pixels in the zfight view; again: all of them.
+        const bool selected = io.viewer.zfight_pair == int(i);
+        ImGui::PushID(int(i));
+        if (ImGui::Selectable(surface_text(p.a).c_str(), selected,
+                              ImGuiSelectableFlags_SpanAllColumns)) {
+            io.viewer.zfight_pair = selected ? -1 : int(i);
+            io.actions.push_back(SelectResource{"zfight"});
+        }
+        ImGui::PopID();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(surface_text(p.b).c_str());
         ImGui::TableNextColumn();

@@ -85,8 +85,10 @@ TEST(Report, ZfightNamesBothSurfacesOfEveryPair) {
     FrameResult frame = two_pass_frame();
     const nlohmann::json none = report_of(frame);
     EXPECT_FALSE(none.contains("zfight")) << "only with zfight=on";
-    frame.zfight = ZfightResult{
-        .steps = 4, .pixels = 12, .pairs = {{{"quad", "red", "a"}, {"quad", "blue", "b"}, 12, 1}}};
+    frame.zfight = ZfightResult{};
+    frame.zfight->steps = 4;
+    frame.zfight->pixels = 12;
+    frame.zfight->pairs = {{{"quad", "red", "a"}, {"quad", "blue", "b"}, 12, 1}};
     const nlohmann::json z = report_of(frame)["zfight"];
     EXPECT_EQ(z["steps"], 4);
     EXPECT_EQ(z["pixels"], 12);

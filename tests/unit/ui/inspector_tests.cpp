@@ -205,6 +205,38 @@ TEST_F(Inspector, HoverReadoutOfSurfaceIdNamesTheSurface) {
         << text;
 }
 
+// zfight: hovering names what fights there; selecting a pair (the Depth panel's row) leaves
+// only its pixels in the heat map, the others dimmed like the rest of the frame.
+TEST_F(Inspector, ZfightViewNamesFightsAndShowsTheSelectedPair) {
+    auto ui = open("zfight");
+    ui->inspector().queue(ui::SetSetting{"zfight", "on"});
+    ui->inspector().queue(ui::SelectResource{"zfight"});
+    ui->frame();
+    const FrameResult& f = ui->inspector().frame();
+    ASSERT_TRUE(f.zfight);
+    ASSERT_GE(f.zfight->pairs.size(), 2u);
+    auto first_hit = [&](uint32_t pair) {
+        for (const ZfightHit& h : f.zfight->hits)
+            if (h.pair == pair) return h;
+        ADD_FAILURE() << "no pixel for pair " << pair;
+        return ZfightHit{};
+    };
+    const ZfightHit h0 = first_hit(0), h1 = first_hit(1);
+    const uint32_t w = f.width;
+    const auto text = ui->inspector().readout_at(h0.pixel % w, h0.pixel / w)->decoded_text;
+    const ZfightPair& p0 = f.zfight->pairs[0];
+    EXPECT_NE(text.find(p0.a.node + " vs " + p0.b.node), std::string::npos) << text;
+    auto colour = [&](uint32_t pixel) {
+        const auto& v = ui->inspector().view();
+        return std::vector<uint8_t>(v.rgba8.begin() + pixel * 4, v.rgba8.begin() + pixel * 4 + 3);
+    };
+    const auto before0 = colour(h0.pixel), before1 = colour(h1.pixel);
+    ui->inspector().viewer().zfight_pair = 1;
+    ui->frame();
+    EXPECT_NE(colour(h0.pixel), before0) << "pair 0 is dimmed now";
+    EXPECT_EQ(colour(h1.pixel), before1) << "pair 1 keeps its heat colour";
+}
+
 TEST_F(Inspector, ZoomedInTheReadoutNamesTheTexelDrawnUnderTheCursor) {
     auto ui = open("atrium");
     ui::ViewerState& v = ui->inspector().viewer();
