@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "renderer/renderer.h"
+#include "renderer/scene/loader.h"
 
 namespace ds::test {
 
@@ -50,6 +51,23 @@ class SharedRenderer : public ::testing::Test {
     void TearDown() override { EXPECT_EQ(renderer_->validation_message_count(), 0u); }
 
     static inline std::unique_ptr<Renderer> renderer_;
+};
+
+// SharedRenderer with one scene for the whole suite: SetUpTestSuite() of a fixture calls
+// set_up_with(name); the scene is scene_.
+class SharedScene : public SharedRenderer {
+  protected:
+    static void set_up_with(const char* name) {
+        SharedRenderer::SetUpTestSuite();
+        scene_ = std::make_unique<scene::Scene>(scene::load_scene(name, Settings{}));
+        renderer_->set_scene(*scene_);
+    }
+    static void TearDownTestSuite() {
+        scene_.reset();
+        SharedRenderer::TearDownTestSuite();
+    }
+
+    static inline std::unique_ptr<scene::Scene> scene_;
 };
 
 }  // namespace ds::test

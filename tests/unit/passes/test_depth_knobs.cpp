@@ -97,7 +97,7 @@ TEST(DepthPlanes, EffectiveCameraAndItsErrors) {
 }
 
 // One validated renderer on the atrium for every test.
-class DepthKnobs : public test::SharedRenderer {
+class DepthKnobs : public test::SharedScene {
   public:
     static uint64_t shaded(const FrameResult& f, const std::string& pass) {
         for (const PassResult& p : f.passes)
@@ -107,16 +107,7 @@ class DepthKnobs : public test::SharedRenderer {
     }
 
   protected:
-    static void SetUpTestSuite() {
-        SharedRenderer::SetUpTestSuite();
-        scene_ = new scene::Scene(scene::load_scene("atrium", Settings{}));
-        renderer_->set_scene(*scene_);
-    }
-    static void TearDownTestSuite() {
-        delete scene_;
-        scene_ = nullptr;
-        SharedRenderer::TearDownTestSuite();
-    }
+    static void SetUpTestSuite() { set_up_with("atrium"); }
     static FrameResult render(const std::vector<std::string>& assignments,
                               const InspectRequest& inspect = {}) {
         return renderer_->render(scene_->camera, test::settings_of(assignments), kWidth, kHeight,
@@ -131,10 +122,7 @@ class DepthKnobs : public test::SharedRenderer {
             return std::nullopt;
         }
     }
-    static scene::Scene* scene_;
 };
-
-scene::Scene* DepthKnobs::scene_ = nullptr;
 
 // One frame of the combination test and what the earlier frames fixed.
 struct Combination {

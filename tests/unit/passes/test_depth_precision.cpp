@@ -18,18 +18,9 @@ using namespace ds;
 
 constexpr uint32_t kWidth = 320, kHeight = 180;
 
-class DepthPrecision : public test::SharedRenderer {
+class DepthPrecision : public test::SharedScene {
   protected:
-    static void SetUpTestSuite() {
-        SharedRenderer::SetUpTestSuite();
-        scene_ = new scene::Scene(scene::load_scene("overdraw", Settings{}));
-        renderer_->set_scene(*scene_);
-    }
-    static void TearDownTestSuite() {
-        delete scene_;
-        scene_ = nullptr;
-        SharedRenderer::TearDownTestSuite();
-    }
+    static void SetUpTestSuite() { set_up_with("overdraw"); }
     // The texel at the centre of `resource` (its four floats) and the frame's planes.
     static InspectedImage centre(const std::vector<std::string>& settings, const char* resource) {
         FrameResult f = renderer_->render(scene_->camera, test::settings_of(settings), kWidth,
@@ -37,10 +28,7 @@ class DepthPrecision : public test::SharedRenderer {
         EXPECT_TRUE(f.inspected) << resource;
         return f.inspected ? *f.inspected : InspectedImage{};
     }
-    static scene::Scene* scene_;
 };
-
-scene::Scene* DepthPrecision::scene_ = nullptr;
 
 double linear(double d, bool reverse, double n, double f) {
     return reverse ? n * f / (n + d * (f - n)) : n * f / (f - d * (f - n));

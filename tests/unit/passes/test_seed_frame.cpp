@@ -32,29 +32,16 @@ constexpr uint32_t kWidth = 320, kHeight = 180;
 
 // One renderer and the atrium for every test: device and pipeline creation dominate on
 // lavapipe.
-class SeedFrame : public test::SharedRenderer {
+class SeedFrame : public test::SharedScene {
   protected:
-    static void SetUpTestSuite() {
-        SharedRenderer::SetUpTestSuite();
-        scene_ = new scene::Scene(scene::load_scene("atrium", Settings{}));
-        renderer_->set_scene(*scene_);
-    }
-    static void TearDownTestSuite() {
-        delete scene_;
-        scene_ = nullptr;
-        SharedRenderer::TearDownTestSuite();
-    }
+    static void SetUpTestSuite() { set_up_with("atrium"); }
 
     // `assignments`: "name=value" each.
     static FrameResult render(const std::vector<std::string>& assignments, uint32_t w = kWidth,
                               uint32_t h = kHeight) {
         return renderer_->render(scene_->camera, test::settings_of(assignments), w, h);
     }
-
-    static scene::Scene* scene_;
 };
-
-scene::Scene* SeedFrame::scene_ = nullptr;
 
 const PassResult* find_pass(const FrameResult& f, const std::string& name) {
     for (const PassResult& p : f.passes)
