@@ -305,10 +305,7 @@ std::optional<SurfaceInfo> Renderer::describe_surface(uint32_t id) const {
     const SurfaceTable& table = impl_->scene->surfaces();
     const std::optional<SurfaceRef> ref = table.find(id);
     if (!ref) return std::nullopt;
-    const SurfaceInstance& s = table.instances[ref->instance];
-    return SurfaceInfo{{table.mesh_names.at(s.mesh), table.material_names.at(s.material), s.node},
-                       ref->instance,
-                       ref->triangle};
+    return SurfaceInfo{table.name(ref->instance), ref->instance, ref->triangle};
 }
 
 uint64_t Renderer::validation_message_count() const {

@@ -110,6 +110,11 @@ VkImageAspectFlags aspect_flags(VkFormat format) {
     return info ? info->aspects : kColor;
 }
 
+uint32_t depth_bits(VkFormat format) {
+    const Info* info = find(format);
+    return info ? info->depth_bits : 0;
+}
+
 bool has_depth(VkFormat format) {
     return (aspect_flags(format) & kDepth) != 0;
 }

@@ -45,6 +45,8 @@ uint32_t bytes_per_texel(VkFormat format);
 // DEPTH and/or STENCIL for depth/stencil formats; COLOR otherwise (unknown formats too).
 VkImageAspectFlags aspect_flags(VkFormat format);
 bool has_depth(VkFormat format);
+// 16, 24 or 32 for formats with depth; 0 otherwise (and for formats not in the table).
+uint32_t depth_bits(VkFormat format);
 bool has_stencil(VkFormat format);
 // Read as integers in a shader (usampler / isampler): UINT and SINT formats, S8_UINT included.
 bool is_integer(VkFormat format);

@@ -135,6 +135,11 @@ std::optional<SurfaceRef> SurfaceTable::find(uint32_t id) const {
     return SurfaceRef{uint32_t(it - instances.begin()), index - it->base};
 }
 
+SurfaceName SurfaceTable::name(uint32_t instance) const {
+    const SurfaceInstance& s = instances.at(instance);
+    return {mesh_names.at(s.mesh), material_names.at(s.material), s.node};
+}
+
 void GpuScene::upload_instances(const scene::Scene& scene, vk::UploadBatch& batch) {
     std::vector<GpuInstance> gpu;
     gpu.reserve(scene.instances.size());

@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/common/surface_name.h"
 #include "renderer/scene/scene.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptors.h"
@@ -71,6 +72,8 @@ struct SurfaceTable {
     std::vector<std::string> mesh_names, material_names;
     // The instance and triangle of a surface id; none for 0 or an id past the last surface.
     std::optional<SurfaceRef> find(uint32_t id) const;
+    // How reports name an instance's surfaces: its mesh, material and node.
+    SurfaceName name(uint32_t instance) const;
 };
 
 struct GpuMesh {

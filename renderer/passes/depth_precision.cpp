@@ -22,8 +22,7 @@ void DepthPrecisionPass::add(graph::RenderGraph& graph, const FrameInputs& in,
         kernel_.rebuild(nothing_in_flight);
         built_ = true;
     }
-    const format::Info* depth = format::find(in.options.depth_format);
-    const uint32_t depth_bits = depth ? depth->depth_bits : 32u;
+    const uint32_t depth_bits = format::depth_bits(in.options.depth_format);
     struct Data {
         graph::ImageHandle depth, out;
     };

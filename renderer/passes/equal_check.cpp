@@ -124,11 +124,7 @@ void EqualCheckPass::collect(const FrameCollect& c, std::span<PassResult>, Frame
         }
     }
     for (const auto& [instance, counts] : by_instance) {
-        const SurfaceInstance& s = table.instances[instance];
-        result.surfaces.push_back(
-            {{table.mesh_names.at(s.mesh), table.material_names.at(s.material), s.node},
-             counts.first,
-             counts.second});
+        result.surfaces.push_back({table.name(instance), counts.first, counts.second});
     }
     std::stable_sort(
         result.surfaces.begin(), result.surfaces.end(),

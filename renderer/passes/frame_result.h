@@ -10,6 +10,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/common/surface_name.h"
 #include "renderer/graph/types.h"
 #include "renderer/view/image.h"
 
@@ -74,13 +75,6 @@ struct DepthResult {
 struct DiscardCounts {
     uint64_t invoked = 0;
     uint64_t discarded = 0;
-};
-
-// A surface as reports name it: the mesh, material and node of its instance (a surface is
-// one triangle of one instance; reports group by instance).
-struct SurfaceName {
-    std::string mesh, material, node;
-    auto operator<=>(const SurfaceName&) const = default;
 };
 
 // What a surface_id value names in the current scene (Renderer::describe_surface).
@@ -156,5 +150,9 @@ struct InspectRequest {
 // Benchmarks skip the copy to host memory; WithMsaaDepth is Yes plus MsaaResult's depth.
 // Color reads back the final image only (no covered pixels, no MSAA probe: the inspector).
 enum class ReadBack { Yes, No, WithMsaaDepth, Color };
+// Frames read back in full: the image, covered pixels and (msaa > 1) the sample probe.
+inline bool reads_back_fully(ReadBack r) {
+    return r == ReadBack::Yes || r == ReadBack::WithMsaaDepth;
+}
 
 }  // namespace ds

@@ -51,7 +51,7 @@ void MsaaProbePass::on_sample_count_changed(VkSampleCountFlagBits samples) {
 
 void MsaaProbePass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     out_ = {};
-    const bool full = in.read_back == ReadBack::Yes || in.read_back == ReadBack::WithMsaaDepth;
+    const bool full = reads_back_fully(in.read_back);
     if (!in.options.msaa() || !full) return;  // the exact count reads every sample: costly
     pipeline_.get(layout_.handle());          // built now, not while the frame records
     const bool copy_depth = in.read_back == ReadBack::WithMsaaDepth;

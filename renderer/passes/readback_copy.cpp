@@ -12,19 +12,13 @@ namespace {
 constexpr const char* kNames[] = {"readback_final", "readback_depth", "readback_counts"};
 
 bool wants_depth(const FrameInputs& in) {
-    return in.read_back == ReadBack::Yes || in.read_back == ReadBack::WithMsaaDepth ||
-           in.options.count_fragments;
-}
-
-uint32_t depth_bits(VkFormat format) {
-    const format::Info* info = format::find(format);
-    return info ? info->depth_bits : 0;
+    return reads_back_fully(in.read_back) || in.options.count_fragments;
 }
 
 // The bits a depth texel holds where nothing was drawn (the clear value "far").
 uint32_t far_bits(VkFormat format, float far_depth) {
     if (far_depth == 0.0f) return 0u;
-    switch (depth_bits(format)) {
+    switch (format::depth_bits(format)) {
         case 16:
             return 0xffffu;
         case 24:
@@ -40,7 +34,7 @@ uint64_t ReadbackCopyPass::covered_texels(std::span<const std::byte> depth, VkFo
                                           float far_depth) {
     const uint32_t far = far_bits(format, far_depth);
     uint64_t covered = 0;
-    if (depth_bits(format) == 16) {
+    if (format::depth_bits(format) == 16) {
         for (size_t i = 0; i + 2 <= depth.size(); i += 2) {
             uint16_t v;
             std::memcpy(&v, depth.data() + i, 2);
@@ -49,7 +43,7 @@ uint64_t ReadbackCopyPass::covered_texels(std::span<const std::byte> depth, VkFo
         return covered;
     }
     // D24 formats leave the top byte undefined.
-    const uint32_t mask = depth_bits(format) == 24 ? 0xffffffu : 0xffffffffu;
+    const uint32_t mask = format::depth_bits(format) == 24 ? 0xffffffu : 0xffffffffu;
     for (size_t i = 0; i + 4 <= depth.size(); i += 4) {
         uint32_t v;
         std::memcpy(&v, depth.data() + i, 4);
@@ -113,7 +107,7 @@ void ReadbackCopyPass::collect(const FrameCollect& c, std::span<PassResult>, Fra
     const VkFormat format = c.in.options.depth_format;
     frame.covered_pixels = covered_texels(depth, format, c.in.options.far_depth());
     if (c.in.read_back == ReadBack::WithMsaaDepth && c.in.options.msaa() &&
-        depth_bits(format) == 32) {
+        format::depth_bits(format) == 32) {
         frame.msaa.resolved_depth.resize(depth.size() / sizeof(float));
         std::memcpy(frame.msaa.resolved_depth.data(), depth.data(), depth.size());
     }

@@ -29,11 +29,6 @@ struct Push {
     uint32_t max_steps, depth_bits, width, capacity;
 };
 
-SurfaceName name_of(const SurfaceTable& table, uint32_t instance) {
-    const SurfaceInstance& s = table.instances[instance];
-    return {table.mesh_names.at(s.mesh), table.material_names.at(s.material), s.node};
-}
-
 }  // namespace
 
 ZfightResult zfight_pairs(std::span<const ZfightRecord> records, const SurfaceTable& table) {
@@ -63,8 +58,8 @@ ZfightResult zfight_pairs(std::span<const ZfightRecord> records, const SurfaceTa
     std::map<Key, uint32_t> index_of;
     for (const auto& [key, acc] : order) {
         index_of[key] = uint32_t(out.pairs.size());
-        out.pairs.push_back({name_of(table, key.first), name_of(table, key.second),
-                             acc->pixels.size(), acc->min_steps});
+        out.pairs.push_back(
+            {table.name(key.first), table.name(key.second), acc->pixels.size(), acc->min_steps});
     }
     for (const auto& [where, steps] : hit_steps)  // ordered by pixel already
         out.hits.push_back({where.first, index_of.at(where.second), steps});
@@ -139,9 +134,8 @@ void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bo
     writer.update(services_.context.device(), set);
 
     const VkExtent2D extent = ctx.extent(bound.depth);
-    const format::Info* depth = format::find(ctx.format(bound.depth));
-    const Push push{in.options.zfight_steps, depth ? depth->depth_bits : 32u, extent.width,
-                    capacity_};
+    const Push push{in.options.zfight_steps, format::depth_bits(ctx.format(bound.depth)),
+                    extent.width, capacity_};
     begin_rendering(cmd, extent, {}, nullptr);  // no attachments: the fragments only count
     set_depth_state(cmd, /*test=*/false, /*write=*/false, VK_COMPARE_OP_ALWAYS);
     bind_geometry(cmd, *in.scene);

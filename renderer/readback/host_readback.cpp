@@ -13,8 +13,7 @@ namespace {
 // as 2 bytes (D16) or 4 (D24 in the low bits of a word, D32 as a float), whatever stencil the
 // format has.
 VkDeviceSize copy_texel_bytes(VkFormat format) {
-    if (const uint32_t depth_bits = format::find(format) ? format::find(format)->depth_bits : 0)
-        return depth_bits == 16 ? 2 : 4;
+    if (const uint32_t depth_bits = format::depth_bits(format)) return depth_bits == 16 ? 2 : 4;
     return format::bytes_per_texel(format);
 }
 
