@@ -204,17 +204,8 @@ void Presenter::add_imgui(graph::ImageHandle ui, const Target& target, ImDrawDat
 
 // ui_readback (read-back role): the target into a host buffer (render_offscreen).
 void Presenter::add_readback(graph::ImageHandle ui) {
-    graph::RenderGraph& g = *graph_;
-    g.set_role(graph::PassRole::ReadBack);
-    g.add_pass(
-        "ui_readback",
-        [&](graph::PassBuilder& b) {
-            const graph::BufferHandle host = readback_->declare_copy(g, b, ui);
-            return [this, ui, host](graph::PassContext& ctx) {
-                readback_->record_copy(ctx, ui, host);
-            };
-        },
-        graph::PassKind::Transfer);
+    graph_->set_role(graph::PassRole::ReadBack);
+    readback_->add_copy_pass(*graph_, "ui_readback", {ui});
 }
 
 void Presenter::record(VkCommandBuffer cmd, const Target& target, const graph::ExternalState& final,

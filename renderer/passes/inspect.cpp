@@ -89,17 +89,7 @@ void InspectPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
             };
         },
         graph::PassKind::Compute);
-    HostReadback& readback = services_.readback;
-    graph.add_pass(
-        "readback_inspect",
-        [&](graph::PassBuilder& b) {
-            const graph::ImageHandle texels = texels_;
-            const graph::BufferHandle target = readback.declare_copy(graph, b, texels);
-            return [&readback, texels, target](graph::PassContext& ctx) {
-                readback.record_copy(ctx, texels, target);
-            };
-        },
-        graph::PassKind::Transfer);
+    services_.readback.add_copy_pass(graph, "readback_inspect", {texels_});
 }
 
 void InspectPass::collect(const FrameCollect& c, std::span<PassResult>, FrameResult& frame) {

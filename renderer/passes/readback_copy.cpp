@@ -79,19 +79,7 @@ std::vector<graph::ImageHandle> ReadbackCopyPass::images(const FrameInputs& in,
 void ReadbackCopyPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const std::vector<graph::ImageHandle> sources = images(in, res);
     if (sources.empty()) return;
-    HostReadback& readback = services_.readback;
-    graph.add_pass(
-        name(),
-        [&](graph::PassBuilder& b) {
-            std::vector<graph::BufferHandle> targets;
-            for (graph::ImageHandle image : sources)
-                targets.push_back(readback.declare_copy(graph, b, image));
-            return [&readback, sources, targets](graph::PassContext& ctx) {
-                for (size_t i = 0; i < sources.size(); ++i)
-                    readback.record_copy(ctx, sources[i], targets[i]);
-            };
-        },
-        graph::PassKind::Transfer);
+    services_.readback.add_copy_pass(graph, name(), sources);
 }
 
 void ReadbackCopyPass::collect(const FrameCollect& c, std::span<PassResult>, FrameResult& frame) {

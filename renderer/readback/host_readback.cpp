@@ -61,6 +61,21 @@ graph::BufferHandle HostReadback::declare_copy(graph::RenderGraph& graph,
     return handle;
 }
 
+void HostReadback::add_copy_pass(graph::RenderGraph& graph, const std::string& name,
+                                 std::vector<graph::ImageHandle> images) {
+    graph.add_pass(
+        name,
+        [&](graph::PassBuilder& b) {
+            std::vector<graph::BufferHandle> targets;
+            for (graph::ImageHandle image : images)
+                targets.push_back(declare_copy(graph, b, image));
+            return [this, images, targets](graph::PassContext& ctx) {
+                for (size_t i = 0; i < images.size(); ++i) record_copy(ctx, images[i], targets[i]);
+            };
+        },
+        graph::PassKind::Transfer);
+}
+
 void HostReadback::record_copy(graph::PassContext& ctx, graph::ImageHandle image,
                                graph::BufferHandle buffer) const {
     const VkExtent2D extent = ctx.extent(image);

@@ -11,6 +11,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -31,13 +32,11 @@ class HostReadback {
     // Forgets last frame's entries; replaced buffers go to `retired`.
     void begin_frame(vk::DestroyList& retired);
 
-    // In a pass's setup: `image` (single-sample, colour or depth) becomes a transfer source
-    // and a host buffer its destination, "readback_<image name>". Returns the buffer.
-    graph::BufferHandle declare_copy(graph::RenderGraph& graph, graph::PassBuilder& builder,
-                                     graph::ImageHandle image);
-    // In that pass's record: the whole image, tightly packed, row 0 = top (depth aspect only).
-    void record_copy(graph::PassContext& ctx, graph::ImageHandle image,
-                     graph::BufferHandle buffer) const;
+    // A transfer pass `name` copying each of `images` (single-sample, colour or depth) into a
+    // host buffer "readback_<image name>": the whole image, tightly packed, row 0 = top (depth
+    // aspect only). The pass takes the graph's current role.
+    void add_copy_pass(graph::RenderGraph& graph, const std::string& name,
+                       std::vector<graph::ImageHandle> images);
     // A host buffer a shader writes (declare the write in the pass). Its first `zeroed`
     // bytes are zero when the frame starts (written by the host before the submit).
     graph::BufferHandle import_storage(graph::RenderGraph& graph, const std::string& name,
@@ -57,6 +56,10 @@ class HostReadback {
     void reset();  // teardown (device idle)
 
   private:
+    graph::BufferHandle declare_copy(graph::RenderGraph& graph, graph::PassBuilder& builder,
+                                     graph::ImageHandle image);
+    void record_copy(graph::PassContext& ctx, graph::ImageHandle image,
+                     graph::BufferHandle buffer) const;
     vk::Buffer& buffer(const std::string& name, VkDeviceSize bytes, VkBufferUsageFlags usage);
     std::span<const std::byte> bytes_of(uint32_t resource) const;
 

@@ -48,15 +48,7 @@ ImageHandle clear_and_read_back(RenderGraph& g, HostReadback& readback, VkClearV
         };
     });
     g.set_role(PassRole::ReadBack);
-    g.add_pass(
-        "readback_image",
-        [&](PassBuilder& b) {
-            const BufferHandle host = readback.declare_copy(g, b, image);
-            return [&readback, image, host](PassContext& ctx) {
-                readback.record_copy(ctx, image, host);
-            };
-        },
-        PassKind::Transfer);
+    readback.add_copy_pass(g, "readback_image", {image});
     return image;
 }
 

@@ -181,18 +181,7 @@ std::vector<graph::ImageHandle> GpuRig::add_read_back(graph::RenderGraph& graph,
     }
     if (images.empty()) return images;
     graph.set_role(graph::PassRole::ReadBack);
-    graph.add_pass(
-        "readback",
-        [&](graph::PassBuilder& b) {
-            std::vector<graph::BufferHandle> buffers;
-            for (graph::ImageHandle image : images)
-                buffers.push_back(readback_->declare_copy(graph, b, image));
-            return [this, images, buffers](graph::PassContext& ctx) {
-                for (size_t i = 0; i < images.size(); ++i)
-                    readback_->record_copy(ctx, images[i], buffers[i]);
-            };
-        },
-        graph::PassKind::Transfer);
+    readback_->add_copy_pass(graph, "readback", images);
     return images;
 }
 
