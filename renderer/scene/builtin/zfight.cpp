@@ -65,7 +65,6 @@ tinygltf::Model build_zfight(const Settings& settings) {
         meshes[m] = b.add_mesh(names[m], quad, b.add_material(s));
     }
     const glm::quat tilt = yaw(kTilt);
-    const glm::vec3 normal = tilt * glm::vec3(0.0f, 0.0f, 1.0f);
     const glm::vec3 along = tilt * glm::vec3(1.0f, 0.0f, 0.0f);
     // Rolling B by 90 degrees in its plane flips its diagonal relative to A.
     const glm::quat roll =
@@ -73,8 +72,6 @@ tinygltf::Model build_zfight(const Settings& settings) {
     for (int i = 0; i < pairs; ++i) {
         const float t = pairs > 1 ? static_cast<float>(i) / static_cast<float>(pairs - 1) : 0.0f;
         const float d = lerp_log(facts::kZfightNearest, facts::kZfightFarthest, t);
-        const float offset =
-            d * lerp_log(facts::kZfightMinRelOffset, facts::kZfightMaxRelOffset, t);
         const Slot slot = slot_at(i, pairs, d);
         const glm::vec3 left = slot.centre - along * (slot.size * 0.6f);
         const glm::vec3 right = slot.centre + along * (slot.size * 0.6f);
@@ -83,10 +80,12 @@ tinygltf::Model build_zfight(const Settings& settings) {
         b.add_node(names[0] + tag, meshes[0], {left, tilt, scale});
         b.add_node(names[1] + tag, meshes[1], {left, roll, scale});
         b.add_node(names[2] + tag, meshes[2], {right, tilt, scale});
-        // Slightly smaller so parallax never shows its edges: it is seen only where the depth
-        // test gets the order wrong.
-        b.add_node(names[3] + tag, meshes[3],
-                   {right - normal * offset, tilt, scale * glm::vec3(0.8f, 0.8f, 1.0f)});
+        // Pushed back along the view ray (the camera is at the origin) by the facts' view-depth
+        // gap, parallel to the front one; slightly smaller so parallax never shows its edges:
+        // it is seen only where the depth test gets the order wrong.
+        const float depth = -right.z;
+        const glm::vec3 back = right * (1.0f + facts::zfight_gap_metres(depth) / depth);
+        b.add_node(names[3] + tag, meshes[3], {back, tilt, scale * glm::vec3(0.8f, 0.8f, 1.0f)});
     }
     CameraSpec cam;
     cam.yfov = kYfov;

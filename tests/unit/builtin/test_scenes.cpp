@@ -207,11 +207,20 @@ TEST(BuiltinScenes, ZfightCoplanarPairsShareAPlaneAndNearPairsDoNot) {
         for (const glm::vec3& p : tris[slot * 8 + 2].p) {  // coplanar B
             EXPECT_NEAR(glm::dot(n, p - a.p[0]), 0.0f, 1e-5f * d);
         }
-        const test::WorldTriangle& front = tris[slot * 8 + 4];
-        const test::WorldTriangle& back = tris[slot * 8 + 6];
-        const float gap = std::abs(glm::dot(n, back.p[0] - front.p[0]));
-        EXPECT_GT(gap, 0.5f * facts::kZfightMinRelOffset * d);
-        EXPECT_LT(gap, 2.0f * facts::kZfightMaxRelOffset * d);
+        // A quad's two triangles hold opposite corners twice: the mean of the six is its centre.
+        auto centre = [&](size_t first) {
+            glm::vec3 sum(0.0f);
+            for (size_t t = first; t < first + 2; ++t)
+                for (const glm::vec3& p : tris[t].p) sum += p;
+            return sum / 6.0f;
+        };
+        const glm::vec3 front = centre(slot * 8 + 4), back = centre(slot * 8 + 6);
+        EXPECT_NEAR(glm::length(glm::cross(glm::normalize(front), glm::normalize(back))), 0.0f,
+                    1e-5f)
+            << "behind the front quad's centre, on one view ray";
+        const float gap = front.z - back.z;
+        EXPECT_NEAR(gap, facts::zfight_gap_metres(-front.z), 1e-3f * gap);
+        EXPECT_LT(gap, 0.15f * -front.z) << "nearly coplanar, not stacked";
     }
 }
 
