@@ -352,6 +352,7 @@ void Renderer::set_scene(const scene::Scene& scene) {
 passes::FrameOptions Renderer::Impl::options_for(const Settings& settings) {
     passes::FrameOptions options = passes::FrameOptions::from(settings);
     check_device(context->report(), options);
+    options.decal_pass = options.decal_pass && scene->decal_groups() > 0;
     // material_alpha_cutoff: checked against the scene (an unknown name throws) and uploaded
     // when it changed, before this frame begins.
     scene->set_alpha_cutoff_overrides(settings.get_map("material_alpha_cutoff"));

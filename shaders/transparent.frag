@@ -1,17 +1,23 @@
 #version 460
-// Transparent pass: BLEND materials lit like forward (without prepass inputs: they are not
-// in the prepass), output alpha for SRC_ALPHA / ONE_MINUS_SRC_ALPHA blending into the HDR
-// target. Screen-space AO and contact shadows apply too: the atrium's BLEND materials are
-// decals lying on the opaque surface those images describe. No discard, so the counting
-// variant keeps early tests. Defines: COUNT_FRAGMENTS (default 0).
+// Transparent and decals passes: surfaces lit like forward without prepass inputs (they are
+// not in the prepass), with their own normals. Screen-space AO and contact shadows apply
+// too: the atrium's BLEND materials and every coplanar overlay lie on the opaque surface
+// those images describe. Defines: COUNT_FRAGMENTS (default 0); ALPHA_MODE (default 2):
+//   0 OPAQUE  alpha written as 1 (no blending)
+//   1 MASK    discard below the cutoff, then alpha 1 (no depth writes, so early tests hold)
+//   2 BLEND   alpha for SRC_ALPHA / ONE_MINUS_SRC_ALPHA blending into the HDR target
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/count.glsl"
 #include "common/lighting.glsl"
 
-#if COUNT_FRAGMENTS
-layout(early_fragment_tests) in;
+#ifndef ALPHA_MODE
+#define ALPHA_MODE 2
 #endif
+
+// No pipeline of this shader writes depth: testing early is the same test, and only
+// fragments that pass it run (and are counted).
+layout(early_fragment_tests) in;
 
 layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_normal;
@@ -22,6 +28,9 @@ layout(location = 0) out vec4 out_color;
 
 void main() {
     vec4 base = texture(base_color_texture, in_uv0) * material.base_color_factor;
+#if ALPHA_MODE == 1
+    if (base.a < alpha_cutoff()) discard;
+#endif
     count_fragment();
     vec3 n_vertex = vertex_normal(in_normal);
     Surface s = material_surface(base, in_uv0);
@@ -29,5 +38,5 @@ void main() {
     s.roughness = material_roughness(in_uv0);
     s.occlusion *= screen_ao();
     float sun = sun_shadow(in_world_position, facing(n_vertex)) * screen_contact_shadow();
-    out_color = vec4(shade(s, in_world_position, sun), base.a);
+    out_color = vec4(shade(s, in_world_position, sun), ALPHA_MODE == 2 ? base.a : 1.0);
 }

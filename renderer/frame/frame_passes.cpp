@@ -4,6 +4,7 @@
 #include "renderer/passes/ao_temporal.h"
 #include "renderer/passes/clear_counts.h"
 #include "renderer/passes/contact_shadows.h"
+#include "renderer/passes/decals.h"
 #include "renderer/passes/depth_precision.h"
 #include "renderer/passes/depth_prepass.h"
 #include "renderer/passes/depth_resolve.h"
@@ -42,6 +43,7 @@ std::vector<std::unique_ptr<passes::FramePass>> make_frame_passes(const passes::
     add(std::make_unique<ForwardPass>(s));
     add(std::make_unique<EqualCheckPass>(s));                      // diagnostics: forward's counts
     add(std::make_unique<DepthResolvePass>(s, Resolve::Forward));  // prepass=off
+    add(std::make_unique<DecalsPass>(s));  // coplanar overlays, once, over forward's result
     add(std::make_unique<SkyboxPass>(s));
     add(std::make_unique<TransparentPass>(s));
     add(std::make_unique<TonemapPass>(s));

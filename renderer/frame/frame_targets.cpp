@@ -1,12 +1,15 @@
 #include "renderer/frame/frame_targets.h"
 
+#include <vector>
+
 #include "renderer/vk/context.h"
 
 namespace ds {
 namespace {
 
 constexpr VkFormat kCountFormat = VK_FORMAT_R32_UINT;
-constexpr const char* kCountNames[] = {"prepass_counts", "forward_counts", "transparent_counts"};
+constexpr const char* kCountNames[] = {"prepass_counts", "forward_counts", "decal_counts",
+                                       "transparent_counts"};
 
 // The graph leaves these imports in TRANSFER_SRC after the frame (what readback_* copies
 // from), and the previous frame's copy (or that final barrier) was the last to touch them;
@@ -64,8 +67,9 @@ void FrameTargets::ensure_msaa(VkSampleCountFlagBits samples, vk::DestroyList& r
 }
 
 void FrameTargets::retire_all(vk::DestroyList& retired) {
-    for (vk::Image* image :
-         {&msaa_depth_, &msaa_hdr_, &final_, &depth_, &counts_[0], &counts_[1], &counts_[2]}) {
+    std::vector<vk::Image*> images = {&msaa_depth_, &msaa_hdr_, &final_, &depth_};
+    for (vk::Image& count : counts_) images.push_back(&count);
+    for (vk::Image* image : images) {
         if (*image) retired.defer(std::move(*image));
         *image = vk::Image{};
     }
@@ -119,8 +123,8 @@ void FrameTargets::import(graph::RenderGraph& graph, const passes::FrameOptions&
     }
     if (!options.count_fragments) return;
     // Only passes that run count: the prepass is left out with prepass=off.
-    const bool counted[] = {options.prepass, true, true};
-    graph::ImageHandle* handles[] = {&res.prepass_counts, &res.forward_counts,
+    const bool counted[] = {options.prepass, true, options.decal_pass, true};
+    graph::ImageHandle* handles[] = {&res.prepass_counts, &res.forward_counts, &res.decal_counts,
                                      &res.transparent_counts};
     for (size_t i = 0; i < counts_.size(); ++i)
         if (counted[i])

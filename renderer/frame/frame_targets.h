@@ -52,7 +52,7 @@ class FrameTargets {
     VkExtent2D size_{0, 0};
     vk::Image final_;
     vk::Image depth_;
-    std::array<vk::Image, 3> counts_;  // prepass, forward, transparent; until count_fragments
+    std::array<vk::Image, 4> counts_;  // prepass, forward, decals, transparent; until counting
     vk::Image msaa_depth_;             // msaa > 1 only
     vk::Image msaa_hdr_;
 };

@@ -3,6 +3,7 @@
 // (model + normal matrices), textures with mips, samplers, and one descriptor set per
 // material (lavapipe has no descriptor indexing). Immutable once built, but for the
 // material_alpha_cutoff overrides; set_scene() replaces the whole object.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -108,6 +109,11 @@ class GpuScene {
     const std::vector<GpuMesh>& meshes() const { return meshes_; }
     const SurfaceTable& surfaces() const { return surfaces_; }
     const std::vector<scene::DrawGroup>& draw_groups() const { return draw_groups_; }
+    // Groups of coplanar overlays (scene::DrawGroup::decal): the decals pass's.
+    size_t decal_groups() const {
+        return size_t(std::count_if(draw_groups_.begin(), draw_groups_.end(),
+                                    [](const scene::DrawGroup& g) { return g.decal; }));
+    }
     // World-space centre of each instance's bounds (sorting blended draws).
     const std::vector<glm::vec3>& instance_centers() const { return instance_centers_; }
     // How each image's mip chain was filled (the report says which path ran).

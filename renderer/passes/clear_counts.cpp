@@ -6,7 +6,7 @@ namespace ds::passes {
 
 void ClearCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     std::vector<graph::ImageHandle> counts;
-    for (graph::ImageHandle h : {res.prepass_counts, res.forward_counts, res.transparent_counts})
+    for (graph::ImageHandle h : {res.prepass_counts, res.forward_counts, res.decal_counts, res.transparent_counts})
         if (h.valid()) counts.push_back(h);
     if (counts.empty() && !in.options.zfight) return;
     graph.add_pass(

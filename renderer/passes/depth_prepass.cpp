@@ -276,9 +276,10 @@ void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, Draw d
     // prepass_sort: nearest instances first, so the depth test rejects hidden layers before
     // their (normal-mapped) fragment shader runs; off: instanced groups in authored order.
     auto draw_modes = [&](std::span<const AlphaMode> modes) {
-        if (!in.options.prepass_sort) return draw_groups(cmd, *in.scene, layout, modes);
+        const Decals decals = scene_groups(in.options.decal_pass);
+        if (!in.options.prepass_sort) return draw_groups(cmd, *in.scene, layout, modes, decals);
         const auto sorted =
-            sort_by_distance(*in.scene, in.camera_position, modes, DrawOrder::FrontToBack);
+            sort_by_distance(*in.scene, in.camera_position, modes, DrawOrder::FrontToBack, decals);
         return draw_sorted(cmd, *in.scene, layout, sorted);
     };
     if (draw.mask) {

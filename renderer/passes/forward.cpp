@@ -161,11 +161,12 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     const AlphaMode opaque[] = {AlphaMode::Opaque};
     const AlphaMode mask[] = {AlphaMode::Mask};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
-    draw_groups(cmd, *in.scene, layout, opaque);
+    const Decals decals = scene_groups(o.decal_pass);
+    draw_groups(cmd, *in.scene, layout, opaque, decals);
     // MASK after opaque either way: with the prepass and EQUAL the same pipeline (EQUAL does
     // the alpha test's work), otherwise the discard pipeline, testing against opaque depth.
     if (draw.mask) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
-    draw_groups(cmd, *in.scene, layout, mask);
+    draw_groups(cmd, *in.scene, layout, mask, decals);
     vk::fn().cmd_end_rendering(cmd);
 }
 

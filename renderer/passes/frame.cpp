@@ -111,6 +111,7 @@ FrameOptions FrameOptions::from(const Settings& s) {
     o.gtao = s.get_bool("gtao") && o.prepass;
     o.contact_shadows = s.get_bool("contact_shadows") && o.prepass;
     o.sky = s.get_bool("sky");
+    o.decal_pass = s.get_bool("decal_pass");  // the renderer clears it for a scene without
     o.invariant = s.get_bool("invariant");
     o.reverse_z = s.get_bool("reverse_z");
     // equal_check reads forward's per-pixel counts and names the surfaces that won.

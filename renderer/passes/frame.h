@@ -76,6 +76,7 @@ struct FrameOptions {
     bool gtao = true;             // effective: also needs the prepass
     bool contact_shadows = true;  // effective: also needs the prepass
     bool sky = true;
+    bool decal_pass = true;  // effective: decal_pass and the scene has coplanar overlays
     bool invariant = true;
     bool reverse_z = true;
     bool count_fragments = false;
@@ -138,6 +139,7 @@ struct FrameResources {
     // With count_fragments=on: per-pixel u32 counts of fragments that ran the shader.
     graph::ImageHandle prepass_counts;
     graph::ImageHandle forward_counts;
+    graph::ImageHandle decal_counts;  // decal_pass (effective) only
     graph::ImageHandle transparent_counts;
     // Diagnostics (off: invalid). surface_id: R32_UINT, the prepass's winning surface per
     // pixel (gpu_scene.h SurfaceTable; 0 = none); zfight: R32_UINT competitors per pixel.

@@ -102,6 +102,35 @@ void set_depth_state(VkCommandBuffer cmd, bool test, bool write, VkCompareOp com
     vk::fn().cmd_set_depth_compare_op(cmd, compare);
 }
 
+void declare_hdr_over_depth(graph::PassBuilder& b, FrameResources& res, bool msaa, bool resolve) {
+    if (!msaa) {
+        b.read(res.depth, graph::Access::DepthReadOnly);
+        b.write(res.hdr, graph::Access::ColorAttachment);
+        return;
+    }
+    b.read(res.msaa_depth, graph::Access::DepthReadOnly);
+    b.write(res.msaa_hdr, graph::Access::ColorAttachment);
+    if (!resolve) return;
+    res.hdr = b.create_image("hdr", {.format = kHdrFormat,
+                                     .size = graph::ImageSize::relative(1.0f),
+                                     .semantic = graph::Semantic::HdrColor});
+    b.write(res.hdr, graph::Access::ResolveDst);
+}
+
+void begin_hdr_over_depth(graph::PassContext& ctx, const FrameResources& res, bool msaa,
+                          bool resolve) {
+    const VkAttachmentLoadOp load = VK_ATTACHMENT_LOAD_OP_LOAD;
+    const VkRenderingAttachmentInfo color =
+        !msaa     ? color_attachment(ctx.view(res.hdr), load)
+        : resolve ? resolving_color_attachment(ctx.view(res.msaa_hdr), ctx.view(res.hdr), load,
+                                               VK_ATTACHMENT_STORE_OP_STORE)
+                  : color_attachment(ctx.view(res.msaa_hdr), load);
+    const graph::ImageHandle depth_image = msaa ? res.msaa_depth : res.depth;
+    const VkRenderingAttachmentInfo depth = depth_attachment(
+        ctx.view(depth_image), ctx.layout(depth_image), load, VK_ATTACHMENT_STORE_OP_NONE);
+    begin_rendering(ctx.cmd(), ctx.extent(msaa ? res.msaa_hdr : res.hdr), {&color, 1}, &depth);
+}
+
 vk::DescriptorSetLayout create_count_set_layout(vk::Context& context) {
     const VkDescriptorSetLayoutBinding binding =
         vk::layout_binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT);

@@ -77,6 +77,14 @@ VkRenderingAttachmentInfo resolving_color_attachment(VkImageView msaa, VkImageVi
                                                      VkAttachmentStoreOp store,
                                                      std::array<float, 4> clear = {});
 
+// Drawing over forward's HDR image against the scene depth, read-only (decals, transparent).
+// msaa: into res.msaa_hdr against res.msaa_depth; with `resolve` the rendering ends by
+// resolving it (AVERAGE) into res.hdr, which declare_hdr_over_depth then creates.
+void declare_hdr_over_depth(graph::PassBuilder& b, FrameResources& res, bool msaa, bool resolve);
+// Begins that rendering: colour loaded and stored, depth loaded and not stored.
+void begin_hdr_over_depth(graph::PassContext& ctx, const FrameResources& res, bool msaa,
+                          bool resolve);
+
 // Why a pass that needs the prepass's depth and normals (gtao and its filters, contact
 // shadows) is not in the frame: "<knob>=off", or "prepass off" when the knob is on.
 std::string off_or_without_prepass(const FrameInputs& in, const char* knob);

@@ -68,7 +68,8 @@ std::vector<graph::ImageHandle> ReadbackCopyPass::images(const FrameInputs& in,
         case What::Counts: {
             std::vector<graph::ImageHandle> out;
             for (graph::ImageHandle h :
-                 {res.prepass_counts, res.forward_counts, res.transparent_counts, res.zfight})
+                 {res.prepass_counts, res.forward_counts, res.decal_counts, res.transparent_counts,
+                  res.zfight})
                 if (h.valid()) out.push_back(h);
             return out;
         }

@@ -50,13 +50,27 @@ void bind_material(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout 
 
 }  // namespace
 
+bool selected(const scene::DrawGroup& group, std::span<const scene::AlphaMode> modes,
+              Decals decals) {
+    if (std::find(modes.begin(), modes.end(), group.alpha_mode) == modes.end()) return false;
+    switch (decals) {
+        case Decals::Include:
+            return true;
+        case Decals::Exclude:
+            return !group.decal;
+        case Decals::Only:
+            return group.decal;
+    }
+    return false;
+}
+
 DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
-                       std::span<const scene::AlphaMode> modes,
+                       std::span<const scene::AlphaMode> modes, Decals decals,
                        std::optional<VkCullModeFlags> cull) {
     DrawCounts counts;
     uint32_t material = UINT32_MAX;
     for (const scene::DrawGroup& g : scene.draw_groups()) {
-        if (std::find(modes.begin(), modes.end(), g.alpha_mode) == modes.end()) continue;
+        if (!selected(g, modes, decals)) continue;
         const GpuMesh& mesh = scene.meshes()[g.mesh];
         if (g.instance_count == 0 || mesh.index_count == 0) continue;
         bind_material(cmd, scene, layout, mesh.material, material);
@@ -71,8 +85,8 @@ DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
 }
 
 std::vector<InstanceDraw> sort_by_distance(const GpuScene& scene, glm::vec3 camera,
-                                           std::span<const scene::AlphaMode> modes,
-                                           DrawOrder order) {
+                                           std::span<const scene::AlphaMode> modes, DrawOrder order,
+                                           Decals decals) {
     struct Item {
         float distance;
         InstanceDraw draw;
@@ -80,7 +94,7 @@ std::vector<InstanceDraw> sort_by_distance(const GpuScene& scene, glm::vec3 came
     std::vector<Item> items;
     const auto& centers = scene.instance_centers();
     for (const scene::DrawGroup& g : scene.draw_groups()) {
-        if (std::find(modes.begin(), modes.end(), g.alpha_mode) == modes.end()) continue;
+        if (!selected(g, modes, decals)) continue;
         if (scene.meshes()[g.mesh].index_count == 0) continue;
         for (uint32_t i = g.first_instance; i < g.first_instance + g.instance_count; ++i)
             items.push_back({glm::distance(centers[i], camera), {i, &g}});
@@ -98,9 +112,10 @@ std::vector<InstanceDraw> sort_by_distance(const GpuScene& scene, glm::vec3 came
     return draws;
 }
 
-std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera) {
+std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera,
+                                             Decals decals) {
     const scene::AlphaMode blend[] = {scene::AlphaMode::Blend};
-    return sort_by_distance(scene, camera, blend, DrawOrder::BackToFront);
+    return sort_by_distance(scene, camera, blend, DrawOrder::BackToFront, decals);
 }
 
 DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,

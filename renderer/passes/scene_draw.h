@@ -36,6 +36,16 @@ VkCullModeFlags cull_mode(bool double_sided);
 // Binds the scene's vertex and index buffers.
 void bind_geometry(VkCommandBuffer cmd, const GpuScene& scene);
 
+// Which draw groups a pass draws. Coplanar overlays (scene::DrawGroup::decal) are the decals
+// pass's when it runs (FrameOptions::decal_pass) and drawn like any surface otherwise.
+enum class Decals : uint8_t { Include, Exclude, Only };
+// What the scene's own passes (shadow, prepass, forward, zfight, transparent) draw.
+inline Decals scene_groups(bool decal_pass) {
+    return decal_pass ? Decals::Exclude : Decals::Include;
+}
+bool selected(const scene::DrawGroup& group, std::span<const scene::AlphaMode> modes,
+              Decals decals);
+
 struct DrawCounts {
     uint32_t draws = 0;
     uint32_t instances = 0;
@@ -45,7 +55,7 @@ struct DrawCounts {
 // order. Set 1 is bound when the material changes; the cull mode follows each group's
 // double_sided flag unless `cull` overrides it. The caller has bound the pipeline and set 0.
 DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
-                       std::span<const scene::AlphaMode> modes,
+                       std::span<const scene::AlphaMode> modes, Decals decals,
                        std::optional<VkCullModeFlags> cull = std::nullopt);
 
 // One instance, in the order it must be drawn.
@@ -57,10 +67,11 @@ enum class DrawOrder { FrontToBack, BackToFront };
 // Every instance whose alpha mode is in `modes`, ordered by the distance of its bounds'
 // centre from `camera`; the instance index breaks ties so the order (and the image) is stable.
 std::vector<InstanceDraw> sort_by_distance(const GpuScene& scene, glm::vec3 camera,
-                                           std::span<const scene::AlphaMode> modes,
-                                           DrawOrder order);
+                                           std::span<const scene::AlphaMode> modes, DrawOrder order,
+                                           Decals decals);
 // Every BLEND instance, back to front (the order blending needs).
-std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera);
+std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera,
+                                             Decals decals);
 // Draws them one instance at a time (the order is per instance, not per group).
 DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
                        std::span<const InstanceDraw> draws);

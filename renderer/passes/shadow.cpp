@@ -88,9 +88,10 @@ void ShadowPass::record(VkCommandBuffer cmd, VkImageView map, const FrameInputs&
     const AlphaMode opaque_modes[] = {AlphaMode::Opaque};
     const AlphaMode mask_modes[] = {AlphaMode::Mask};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, opaque);
-    draw_groups(cmd, *in.scene, layout_.handle(), opaque_modes, VK_CULL_MODE_NONE);
+    const Decals decals = scene_groups(in.options.decal_pass);
+    draw_groups(cmd, *in.scene, layout_.handle(), opaque_modes, decals, VK_CULL_MODE_NONE);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mask);
-    draw_groups(cmd, *in.scene, layout_.handle(), mask_modes, VK_CULL_MODE_NONE);
+    draw_groups(cmd, *in.scene, layout_.handle(), mask_modes, decals, VK_CULL_MODE_NONE);
     vk::fn().cmd_end_rendering(cmd);
 }
 

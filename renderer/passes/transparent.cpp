@@ -66,17 +66,7 @@ void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
     graph.add_pass<Data>(
         kName,
         [&](graph::PassBuilder& b, Data& d) {
-            if (in.options.msaa()) {
-                res.hdr = b.create_image("hdr", {.format = VK_FORMAT_R16G16B16A16_SFLOAT,
-                                                 .size = graph::ImageSize::relative(1.0f),
-                                                 .semantic = graph::Semantic::HdrColor});
-                b.read(res.msaa_depth, Access::DepthReadOnly);
-                b.write(res.msaa_hdr, Access::ColorAttachment);
-                b.write(res.hdr, Access::ResolveDst);
-            } else {
-                b.read(res.depth, Access::DepthReadOnly);
-                b.write(res.hdr, Access::ColorAttachment);
-            }
+            declare_hdr_over_depth(b, res, in.options.msaa(), /*resolve=*/true);
             LightingSet::declare(b, lighting);
             b.read(res.frame_uniforms, Access::UniformRead,
                    graph::Shader::Vertex | graph::Shader::Fragment);
@@ -103,18 +93,10 @@ void TransparentPass::record(graph::PassContext& ctx, const FrameInputs& in,
     }
     const VkDescriptorSet lighting_set = lighting_.write(ctx, in.frame_number, lighting);
     // msaa > 1: the samples are stored too, for the edge count (MsaaProbe) after the graph.
-    const bool msaa = in.options.msaa();
-    const VkRenderingAttachmentInfo color =
-        msaa ? resolving_color_attachment(ctx.view(res.msaa_hdr), ctx.view(res.hdr),
-                                          VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_STORE)
-             : color_attachment(ctx.view(res.hdr), VK_ATTACHMENT_LOAD_OP_LOAD);
-    const graph::ImageHandle depth_image = msaa ? res.msaa_depth : res.depth;
-    const VkRenderingAttachmentInfo depth =
-        depth_attachment(ctx.view(depth_image), ctx.layout(depth_image), VK_ATTACHMENT_LOAD_OP_LOAD,
-                         VK_ATTACHMENT_STORE_OP_NONE);
-    begin_rendering(cmd, ctx.extent(res.hdr), {&color, 1}, &depth);
+    begin_hdr_over_depth(ctx, res, in.options.msaa(), /*resolve=*/true);
     set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());
-    const std::vector<InstanceDraw> draws = sort_back_to_front(*in.scene, in.camera_position);
+    const std::vector<InstanceDraw> draws =
+        sort_back_to_front(*in.scene, in.camera_position, scene_groups(in.options.decal_pass));
     if (!draws.empty()) {
         const VkPipelineLayout layout = layout_.handle();
         bind_geometry(cmd, *in.scene);

@@ -146,7 +146,7 @@ void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bo
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &set, 0, nullptr);
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push, &push);
     const scene::AlphaMode modes[] = {scene::AlphaMode::Opaque, scene::AlphaMode::Mask};
-    draw_groups(cmd, *in.scene, layout, modes);
+    draw_groups(cmd, *in.scene, layout, modes, scene_groups(in.options.decal_pass));
     vk::fn().cmd_end_rendering(cmd);
 }
 

@@ -119,6 +119,7 @@ struct DrawGroup {
     bool double_sided = false;
     uint32_t first_instance = 0;
     uint32_t instance_count = 0;
+    bool decal = false;  // its instances are coplanar overlays (classified at load)
 };
 
 struct Camera {

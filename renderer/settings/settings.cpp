@@ -317,6 +317,11 @@ SettingsRegistry::SettingsRegistry() {
         bool_knob("contact_shadows", "passes", true, "screen-space march toward the sun",
                   I::Nothing),
         bool_knob("sky", "passes", true, "procedural sky behind the geometry", I::Nothing),
+        bool_knob("decal_pass", "passes", true,
+                  "coplanar overlays (classified at load: triangles lying on another surface and "
+                  "inside it) skip shadow, prepass and forward and are drawn once by the decals "
+                  "pass after forward; off: drawn like any surface (they Z-fight)",
+                  I::Nothing),
         // Measurement.
         bool_knob("count_fragments", "measurement", false,
                   "count, per pixel, fragments that really ran the shader in prepass, forward "

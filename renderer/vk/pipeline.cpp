@@ -97,6 +97,12 @@ GraphicsPipelineBuilder& GraphicsPipelineBuilder::front_face(VkFrontFace face) {
     return *this;
 }
 
+GraphicsPipelineBuilder& GraphicsPipelineBuilder::depth_bias(float constant, float slope) {
+    depth_bias_constant_ = constant;
+    depth_bias_slope_ = slope;
+    return *this;
+}
+
 GraphicsPipelineBuilder& GraphicsPipelineBuilder::layout(VkPipelineLayout layout) {
     layout_ = layout;
     return *this;
@@ -201,6 +207,10 @@ Pipeline GraphicsPipelineBuilder::build(Context& context, const char* name) cons
     fixed.multisample.sampleShadingEnable = min_sample_shading_ > 0.0f ? VK_TRUE : VK_FALSE;
     fixed.multisample.minSampleShading = min_sample_shading_;
     fixed.multisample.alphaToCoverageEnable = alpha_to_coverage_ ? VK_TRUE : VK_FALSE;
+    const bool biased = depth_bias_constant_ != 0.0f || depth_bias_slope_ != 0.0f;
+    fixed.raster.depthBiasEnable = biased ? VK_TRUE : VK_FALSE;
+    fixed.raster.depthBiasConstantFactor = depth_bias_constant_;
+    fixed.raster.depthBiasSlopeFactor = depth_bias_slope_;
     std::vector<VkPipelineColorBlendAttachmentState> blends;
     for (Blend b : blends_) blends.push_back(blend_state(b));
     auto blend = make<VkPipelineColorBlendStateCreateInfo>(

@@ -68,6 +68,8 @@ class GraphicsPipelineBuilder {
     // Colour attachment 0's alpha becomes the coverage mask (multisampled targets).
     GraphicsPipelineBuilder& alpha_to_coverage(bool enable);
     GraphicsPipelineBuilder& front_face(VkFrontFace face);  // default counter-clockwise (glTF)
+    // Static depth bias (depthBiasConstantFactor, depthBiasSlopeFactor; no clamp).
+    GraphicsPipelineBuilder& depth_bias(float constant, float slope);
     GraphicsPipelineBuilder& layout(VkPipelineLayout layout);
 
     Pipeline build(Context& context, const char* name = nullptr) const;  // throws ds::Error
@@ -90,6 +92,7 @@ class GraphicsPipelineBuilder {
     float min_sample_shading_ = 0.0f;
     bool alpha_to_coverage_ = false;
     VkFrontFace front_face_ = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    float depth_bias_constant_ = 0.0f, depth_bias_slope_ = 0.0f;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
 };
 

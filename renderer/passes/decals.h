@@ -1,0 +1,73 @@
+#pragma once
+// decals (decal_pass=on and the scene has coplanar overlays): seed 004's fix. The overlays the
+// importer classified (scene::DrawGroup::decal: triangles lying on another surface and inside
+// it) skip shadow, prepass, forward, zfight and transparent, and are drawn here once, after
+// forward: opaque overlays first, then MASK (alpha tested), then BLEND (alpha blended), each
+// in authored order. Depth is tested closer-or-equal against the scene depth with writes off
+// and a small bias towards the camera (4 steps plus one pixel's depth slope), so an overlay
+// with its base's exact vertices passes where the base won, one with its own vertices inside
+// the base's triangles passes despite rounding, and surfaces in front still hide both. Lit
+// like transparent (shaders/transparent.frag with ALPHA_MODE), with the overlay's own normal
+// and the base's AO and contact shadows.
+//
+// msaa > 1: draws into res.msaa_hdr against res.msaa_depth; transparent resolves afterwards.
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/graph/graph.h"
+#include "renderer/passes/frame.h"
+#include "renderer/passes/frame_pass.h"
+#include "renderer/passes/lighting_set.h"
+#include "renderer/passes/pass_util.h"
+#include "renderer/scene/scene.h"
+#include "renderer/vk/descriptors.h"
+#include "renderer/vk/destroy_list.h"
+#include "renderer/vk/pipeline.h"
+
+namespace ds::passes {
+
+class DecalsPass final : public FramePass {
+  public:
+    static constexpr const char* kName = "decals";
+
+    explicit DecalsPass(const PassServices& services);
+
+    const char* name() const override { return kName; }
+    void rebuild_pipelines(vk::DestroyList& retired) override { pipelines_.rebuild(retired); }
+    // Reads res.depth (read-only attachment), res.shadow_map, res.ao, res.contact_shadows
+    // where valid; draws into res.hdr. Counts into res.decal_counts when valid.
+    void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
+    // shaded_fragments from res.decal_counts.
+    void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
+
+  private:
+    struct Variant {
+        scene::AlphaMode mode = scene::AlphaMode::Opaque;
+        bool counting = false;  // COUNT_FRAGMENTS=1
+        bool reverse_z = true;  // the bias's direction
+        VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+        VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
+        bool operator==(const Variant&) const = default;
+        size_t hash() const {
+            return hash_fields(int(mode), counting, reverse_z, int(samples), int(depth));
+        }
+    };
+    struct Pipelines {
+        VkPipeline opaque, mask, blend;
+    };
+
+    ShaderStages compile(const Variant& variant) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
+    void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
+                const LightingInputs& lighting, const Pipelines& pipelines);
+
+    PassServices services_;
+    LightingSet lighting_;
+    vk::DescriptorSetLayout count_layout_;
+    vk::PipelineLayout layout_;
+    FrameDescriptorPool count_sets_;
+    PipelineVariants<Variant> pipelines_;
+};
+
+}  // namespace ds::passes
