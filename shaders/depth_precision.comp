@@ -1,10 +1,9 @@
 #version 460
 // depth_precision: per pixel, how far along the view ray the next representable depth value
 // lies from the stored one, in scene units (r), and the distance along that ray (g), for the
-// frame's depth format, planes and direction (b, a: 0). Computed from the derivative
-//     d(distance)/d(depth) = distance^2 (f - n) / (n f)   (reverse-Z and forward-Z alike)
-// times one step of the format: ULP of the float for D32 (the next float towards far), one
-// unorm step for D24 / D16. A difference of two nearby distances would cancel in 32 bits.
+// frame's depth format, planes and direction (b, a: 0): one step of the format (ULP of the
+// float for D32, the next float towards far; one unorm step for D24 / D16) times
+// ray_units_per_depth (common/frame.glsl).
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/frame.glsl"
@@ -39,13 +38,8 @@ void main() {
         imageStore(precision_out, p, vec4(0.0));
         return;
     }
-    const float n = frame.depth_params.x, f = frame.depth_params.y;
-    const float z = linear_depth(d);  // view-space depth
-    const float step_z = z * z * (f - n) / (n * f) * step_of(d);
-    // Along the pixel's ray: both grow by length / depth of its view-space direction.
     const vec2 ndc = (vec2(p) + 0.5) / vec2(imageSize(precision_out)) * 2.0 - 1.0;
     const vec4 view = frame.inverse_projection * vec4(ndc, d, 1.0);
-    const vec3 v = view.xyz / view.w;
-    const float along = length(v) / max(abs(v.z), 1e-20);
-    imageStore(precision_out, p, vec4(step_z * along, z * along, 0.0, 0.0));
+    const float distance = length(view.xyz / view.w);
+    imageStore(precision_out, p, vec4(step_of(d) * ray_units_per_depth(d, ndc), distance, 0.0, 0.0));
 }

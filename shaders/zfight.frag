@@ -3,7 +3,9 @@
 // A fragment of another surface than the pixel's winner (surface_id) that passes its alpha
 // test competes when its depth lies within push.max_steps representable steps of the stored
 // depth (D32_SFLOAT: ULPs of the float; D24 / D16: unorm steps). Each competitor adds one to
-// the pixel's count and appends (pixel, winner, competitor, steps) for the report.
+// the pixel's count and appends (pixel, winner, competitor, steps and gap) for the report:
+// the gap in scene units along the view ray as a float with its low 11 mantissa bits
+// replaced by the steps (at most 1024).
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/bindings.glsl"
@@ -21,7 +23,7 @@ layout(set = 2, binding = 2, r32ui) uniform uimage2D competitors;
 layout(set = 2, binding = 3, std430) buffer Records {
     uint count;  // appended; past push.capacity the records are dropped (and counted)
     uint pad0, pad1, pad2;
-    uvec4 records[];  // pixel index, winner id, competitor id, steps
+    uvec4 records[];  // pixel index, winner id, competitor id, gap bits | steps
 }
 fights;
 
@@ -32,6 +34,8 @@ layout(push_constant) uniform Push {
     uint capacity;  // records[] length
 }
 push;
+
+const uint kStepsMask = 0x7ffu;  // zfight_steps <= 1024
 
 uint depth_steps(float a, float b) {
     if (push.depth_bits == 32u) {
@@ -51,9 +55,14 @@ void main() {
         const float alpha = texture(base_color_texture, in_uv0).a * material.base_color_factor.a;
         if (alpha < alpha_cutoff()) return;
     }
-    const uint steps = depth_steps(texelFetch(stored_depth, p, 0).r, gl_FragCoord.z);
+    const float stored = texelFetch(stored_depth, p, 0).r;
+    const uint steps = depth_steps(stored, gl_FragCoord.z);
     if (steps > push.max_steps) return;
     imageAtomicAdd(competitors, p, 1u);
     const uint i = atomicAdd(fights.count, 1u);
-    if (i < push.capacity) fights.records[i] = uvec4(uint(p.y) * push.width + uint(p.x), winner, me, steps);
+    if (i >= push.capacity) return;
+    const vec2 ndc = gl_FragCoord.xy * frame.viewport.zw * 2.0 - 1.0;
+    const float gap = abs(gl_FragCoord.z - stored) * ray_units_per_depth(stored, ndc);
+    const uint packed = (floatBitsToUint(gap) & ~kStepsMask) | steps;
+    fights.records[i] = uvec4(uint(p.y) * push.width + uint(p.x), winner, me, packed);
 }

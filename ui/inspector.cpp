@@ -261,7 +261,8 @@ std::vector<uint8_t> Inspector::selected_pair_pixels() const {
     return keep;
 }
 
-// What fights at a zfight pixel: "coplanar_a_0 vs coplanar_b_0 (0 steps)", pair by pair.
+// What fights at a zfight pixel, pair by pair: "coplanar_a_0 vs coplanar_b_0 (1 step, 12 um)",
+// the gap in depth steps and in scene units along the view ray.
 std::string Inspector::zfight_text(uint32_t x, uint32_t y) const {
     if (!frame_.zfight) return {};
     const uint32_t pixel = y * frame_.width + x;
@@ -272,7 +273,8 @@ std::string Inspector::zfight_text(uint32_t x, uint32_t y) const {
     for (; it != hits.end() && it->pixel == pixel; ++it) {
         const ZfightPair& p = frame_.zfight->pairs[it->pair];
         out += (out.empty() ? ": " : "; ") + p.a.node + " vs " + p.b.node + " (" +
-               std::to_string(it->steps) + (it->steps == 1 ? " step)" : " steps)");
+               std::to_string(it->steps) + (it->steps == 1 ? " step, " : " steps, ") +
+               view::length_text(it->gap) + ")";
     }
     return out;
 }

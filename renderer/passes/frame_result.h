@@ -96,6 +96,7 @@ struct ZfightHit {
     uint32_t pixel = 0;  // y * width + x
     uint32_t pair = 0;   // index into ZfightResult::pairs
     uint32_t steps = 0;
+    float gap = 0;  // the same gap in scene units, along the pixel's view ray
 };
 struct ZfightResult {
     uint32_t steps = 0;             // zfight_steps

@@ -38,16 +38,17 @@ ZfightResult zfight_pairs(std::span<const ZfightRecord> records, const SurfaceTa
     };
     using Key = std::pair<uint32_t, uint32_t>;  // instance indices, low first
     std::map<Key, Acc> by_pair;
-    std::map<std::pair<uint32_t, Key>, uint32_t> hit_steps;  // (pixel, pair): least steps
+    // (pixel, pair): the record with the least steps
+    std::map<std::pair<uint32_t, Key>, const ZfightRecord*> least;
     for (const ZfightRecord& r : records) {
         const auto a = table.find(r.winner), b = table.find(r.competitor);
         if (!a || !b) continue;
         const Key key = std::minmax(a->instance, b->instance);
         Acc& acc = by_pair[key];
         acc.pixels.insert(r.pixel);
-        acc.min_steps = std::min(acc.min_steps, r.steps);
-        auto [it, added] = hit_steps.try_emplace({r.pixel, key}, r.steps);
-        if (!added) it->second = std::min(it->second, r.steps);
+        acc.min_steps = std::min(acc.min_steps, r.steps());
+        auto [it, added] = least.try_emplace({r.pixel, key}, &r);
+        if (!added && r.steps() < it->second->steps()) it->second = &r;
     }
     std::vector<std::pair<Key, const Acc*>> order;
     for (const auto& [key, acc] : by_pair) order.push_back({key, &acc});
@@ -61,8 +62,8 @@ ZfightResult zfight_pairs(std::span<const ZfightRecord> records, const SurfaceTa
         out.pairs.push_back(
             {table.name(key.first), table.name(key.second), acc->pixels.size(), acc->min_steps});
     }
-    for (const auto& [where, steps] : hit_steps)  // ordered by pixel already
-        out.hits.push_back({where.first, index_of.at(where.second), steps});
+    for (const auto& [where, r] : least)  // ordered by pixel already
+        out.hits.push_back({where.first, index_of.at(where.second), r->steps(), r->gap()});
     return out;
 }
 

@@ -9,6 +9,7 @@
 // instance, so overlapping triangles of one mesh fight too, and triangles that share an
 // edge never do (each pixel centre belongs to one of them). It needs the prepass and msaa=1
 // (a multisampled depth is stored at sample positions, not at the centre it compares at).
+#include <bit>
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
@@ -27,9 +28,14 @@ namespace ds::passes {
 
 // One competitor as the shader appends it (std430 uvec4).
 struct ZfightRecord {
-    uint32_t pixel = 0;                   // y * width + x
-    uint32_t winner = 0, competitor = 0;  // surface ids
-    uint32_t steps = 0;
+    static constexpr uint32_t kStepsMask = 0x7ff;  // zfight_steps <= 1024
+    uint32_t pixel = 0;                            // y * width + x
+    uint32_t winner = 0, competitor = 0;           // surface ids
+    // The gap in scene units along the view ray, a float whose low 11 mantissa bits hold the
+    // gap in depth steps instead.
+    uint32_t gap_and_steps = 0;
+    uint32_t steps() const { return gap_and_steps & kStepsMask; }
+    float gap() const { return std::bit_cast<float>(gap_and_steps & ~kStepsMask); }
 };
 static_assert(sizeof(ZfightRecord) == 16);
 

@@ -65,15 +65,6 @@ void normal_text(Readout& r) {
     }
 }
 
-// A length in scene units (metres) at a readable scale: "0.37 mm", "12.4 m", "3.1 um".
-std::string length_text(float metres) {
-    const double m = metres;
-    if (m < 1e-4) return text("%.3g um", m * 1e6);
-    if (m < 1.0) return text("%.3g mm", m * 1e3);
-    if (m < 1e3) return text("%.3g m", m);
-    return text("%.3g km", m * 1e-3);
-}
-
 void colour_text(const InspectedImage& image, Readout& r) {
     r.raw_text = tuple_text(r.raw.data(), r.channels, "%.3f");
     if (image.semantic == Semantic::HdrColor) {
@@ -139,6 +130,14 @@ void describe(const InspectedImage& image, Readout& r) {
 }
 
 }  // namespace
+
+std::string length_text(float metres) {
+    const double m = metres;
+    if (m < 1e-4) return text("%.3g um", m * 1e6);
+    if (m < 1.0) return text("%.3g mm", m * 1e3);
+    if (m < 1e3) return text("%.3g m", m);
+    return text("%.3g km", m * 1e-3);
+}
 
 std::optional<Readout> readout(const InspectedImage& image, uint32_t x, uint32_t y) {
     if (x >= image.width || y >= image.height) return std::nullopt;

@@ -27,5 +27,7 @@ struct Readout {
 // UnormScalar is labelled from the image name: "roughness" (name contains "rough"), "shadow"
 // (contains "shadow"), else "value". Other has raw_text only.
 std::optional<Readout> readout(const InspectedImage& image, uint32_t x, uint32_t y);
+// A length in scene units (metres) at a readable scale: "0.37 mm", "12.4 m", "3.1 um".
+std::string length_text(float metres);
 
 }  // namespace ds::view

@@ -36,4 +36,16 @@ float linear_depth(float d) {
                                       : n * f / (f - d * (f - n));  // d=0 near
 }
 
+// Scene units along the view ray through `ndc` (x, y in -1..1) per unit of depth-buffer value
+// at d: d(depth)/d(distance) is n f / (z^2 (f - n)) in either convention, stretched by the
+// ray's length per unit of view depth. Multiply a depth difference by it: subtracting two
+// nearby distances would cancel in 32 bits.
+float ray_units_per_depth(float d, vec2 ndc) {
+    float n = frame.depth_params.x, f = frame.depth_params.y;
+    float z = linear_depth(d);
+    vec4 view = frame.inverse_projection * vec4(ndc, d, 1.0);
+    vec3 v = view.xyz / view.w;
+    return z * z * (f - n) / (n * f) * length(v) / max(abs(v.z), 1e-20);
+}
+
 #endif

@@ -190,6 +190,34 @@ bool coplanar(const scene::Scene& s, uint32_t a, uint32_t b) {
     return true;
 }
 
+// One representable step of the format at depth d, as a depth difference.
+double one_step(double d, const std::string& format) {
+    if (format == "d32f") return std::abs(double(std::nextafter(float(d), 2.0f)) - float(d));
+    return 1.0 / (format == "d24" ? 16777215.0 : 65535.0);
+}
+
+// Each hit's gap in scene units is its gap in steps times one step along the pixel's view ray
+// (distance^2 (f - n) / (n f) per unit of depth, stretched off the axis), give or take the
+// rounding of the two depths (1.5 steps).
+void expect_gaps_in_scene_units(const ZfightResult& z, const std::vector<std::vector<Hit>>& hits,
+                                const scene::Scene& s, const Config& c) {
+    const double n = s.camera.znear, f = s.camera.zfar;
+    const double half_tan = std::tan(double(s.camera.yfov) * 0.5);
+    const double aspect = double(kWidth) / kHeight;
+    for (const ZfightHit& h : z.hits) {
+        const std::vector<Hit>& here = hits[h.pixel];
+        ASSERT_FALSE(here.empty()) << "a hit where the host sees no surface";
+        const double d = here.front().depth;
+        const double zview = c.reverse ? n * f / (n + d * (f - n)) : n * f / (f - d * (f - n));
+        const double x = ((h.pixel % kWidth) + 0.5) / kWidth * 2.0 - 1.0;
+        const double y = ((h.pixel / kWidth) + 0.5) / kHeight * 2.0 - 1.0;
+        const double stretch =
+            std::sqrt(1.0 + std::pow(x * half_tan * aspect, 2) + std::pow(y * half_tan, 2));
+        const double step = one_step(d, c.format) * zview * zview * (f - n) / (n * f) * stretch;
+        EXPECT_NEAR(h.gap / step, double(h.steps), 1.5) << "pixel " << h.pixel;
+    }
+}
+
 class ZfightDerived : public test::SharedScene {
   protected:
     static void SetUpTestSuite() { set_up_with("zfight"); }
@@ -205,7 +233,8 @@ TEST_F(ZfightDerived, PairsAreExactlyThoseTheGeometryPredicts) {
         const std::string config =
             std::string(c.format) + (c.reverse ? " reverse-Z" : " forward-Z");
         SCOPED_TRACE(config);
-        const auto derived = derive(rasterise(project(*scene_, c.reverse), c), c.format);
+        const auto hits = rasterise(project(*scene_, c.reverse), c);
+        const auto derived = derive(hits, c.format);
         const FrameResult f = renderer_->render(
             scene_->camera,
             test::settings_of({"zfight=on", std::string("depth_format=") + c.format,
@@ -243,6 +272,20 @@ TEST_F(ZfightDerived, PairsAreExactlyThoseTheGeometryPredicts) {
                                     }))
                 << name << " never overlap";
         EXPECT_GE(required, 6u) << "the six coplanar pairs at least";
+        expect_gaps_in_scene_units(*f.zfight, hits, *scene_, c);
+        // With the widest window forward-Z's nearly coplanar pairs compete too, 64 steps apart
+        // (reverse-Z keeps them thousands of ULPs apart).
+        const FrameResult wide =
+            renderer_->render(scene_->camera,
+                              test::settings_of({"zfight=on", "zfight_steps=1024",
+                                                 std::string("depth_format=") + c.format,
+                                                 c.reverse ? "reverse_z=on" : "reverse_z=off"}),
+                              kWidth, kHeight, ReadBack::No);
+        ASSERT_TRUE(wide.zfight);
+        if (!c.reverse) {
+            EXPECT_GT(wide.zfight->hits.size(), f.zfight->hits.size());
+        }
+        expect_gaps_in_scene_units(*wide.zfight, hits, *scene_, c);
         printf("[ %-16s ] %zu pairs must fight, %zu found, %lu pixels\n", config.c_str(), required,
                found.size(), (unsigned long)f.zfight->pixels);
     }
