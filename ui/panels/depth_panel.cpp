@@ -1,12 +1,20 @@
 // Depth: what the Z-fighting diagnostics found this frame. zfight's pairs of surfaces (mesh,
 // material, node; pixels and the smallest gap in depth steps) and equal_check's holes and
 // ties with the surfaces involved; a click shows the image behind them. When a diagnostic is
-// off, one button turns it on; when the frame left it out, the report's reason.
+// off, one button turns it on; when the frame left it out, the report's reason. Precision:
+// the size of one depth step against distance for this frame's format, planes and direction
+// and for the alternatives, with the scene's depth range shaded.
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
 #include <imgui.h>
 
+#include "renderer/format/format.h"
+#include "renderer/view/precision.h"
+#include "renderer/view/readout.h"
 #include "ui/panels/panels.h"
 
 namespace ds::ui {
@@ -87,6 +95,122 @@ void equal_check_section(PanelIo& io) {
                           static_cast<unsigned long long>(s.multiple));
 }
 
+// The scene's bounds as view depths from the camera, within the planes.
+std::pair<double, double> scene_depth_range(const Inspector& in, double n, double f) {
+    const scene::Bounds& b = in.scene().bounds;
+    const scene::Camera& cam = in.camera();
+    double lo = f, hi = n;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                               (i & 4) ? b.max.z : b.min.z);
+        const double z = glm::dot(corner - cam.position, cam.forward);
+        lo = std::min(lo, z);
+        hi = std::max(hi, z);
+    }
+    return {std::clamp(lo, n, f), std::clamp(hi, n, f)};
+}
+
+struct Curve {
+    view::DepthConfig config;
+    const char* label;
+    ImU32 colour;
+};
+
+// log10 step against log10 distance, n .. f, for every configuration; the frame's is thick.
+void precision_plot(const Inspector& in, const std::array<Curve, 6>& curves, int current) {
+    const view::DepthConfig& c = curves[size_t(current)].config;
+    const double ln = std::log10(c.znear), lf = std::log10(c.zfar);
+    constexpr int kSamples = 96;
+    auto sample_z = [&](int i) { return std::pow(10.0, ln + (lf - ln) * (i + 0.5) / kSamples); };
+    double lo = 1e300, hi = -1e300;
+    for (const Curve& curve : curves)
+        for (int i = 0; i < kSamples; ++i) {
+            const double s = std::log10(std::max(view::step_at(curve.config, sample_z(i)), 1e-30));
+            lo = std::min(lo, s);
+            hi = std::max(hi, s);
+        }
+    const ImVec2 p0 = ImGui::GetCursorScreenPos();
+    const ImVec2 size(std::max(ImGui::GetContentRegionAvail().x, 100.0f), 150.0f);
+    ImGui::InvisibleButton("precision plot", size);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    auto to_screen = [&](double lz, double ls) {
+        return ImVec2(p0.x + float((lz - ln) / (lf - ln)) * size.x,
+                      p0.y + size.y - float((ls - lo) / std::max(hi - lo, 1e-9)) * size.y);
+    };
+    dl->AddRectFilled(p0, ImVec2(p0.x + size.x, p0.y + size.y), IM_COL32(20, 20, 24, 255));
+    // A line per decade of distance, labelled; the step's decades as faint lines.
+    const ImU32 grid = IM_COL32(255, 255, 255, 28), label = IM_COL32(200, 200, 200, 160);
+    for (double e = std::ceil(ln); e <= lf; e += 1.0) {
+        const float x = to_screen(e, lo).x;
+        dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p0.y + size.y), grid);
+        dl->AddText(ImVec2(x + 2, p0.y + size.y - ImGui::GetTextLineHeight()), label,
+                    view::length_text(float(std::pow(10.0, e))).c_str());
+    }
+    const double every = std::max(1.0, std::ceil((hi - lo) / 6.0));
+    for (double e = std::ceil(lo / every) * every; e <= hi; e += every) {
+        const float y = to_screen(ln, e).y;
+        dl->AddLine(ImVec2(p0.x, y), ImVec2(p0.x + size.x, y), grid);
+        if (y < p0.y + size.y - 2.0f * ImGui::GetTextLineHeight())  // clear of the x labels
+            dl->AddText(ImVec2(p0.x + 2, y), label,
+                        view::length_text(float(std::pow(10.0, e))).c_str());
+    }
+    const auto [front, back] = scene_depth_range(in, c.znear, c.zfar);
+    dl->AddRectFilled(ImVec2(to_screen(std::log10(front), 0).x, p0.y),
+                      ImVec2(to_screen(std::log10(back), 0).x, p0.y + size.y),
+                      IM_COL32(80, 80, 110, 90));
+    for (size_t k = 0; k < curves.size(); ++k) {
+        std::array<ImVec2, kSamples> points;
+        for (int i = 0; i < kSamples; ++i) {
+            const double z = sample_z(i);
+            points[size_t(i)] = to_screen(
+                std::log10(z), std::log10(std::max(view::step_at(curves[k].config, z), 1e-30)));
+        }
+        dl->AddPolyline(points.data(), kSamples, curves[k].colour, 0,
+                        int(k) == current ? 3.0f : 1.2f);
+    }
+    if (ImGui::IsItemHovered()) {
+        const double lz = ln + (ImGui::GetIO().MousePos.x - p0.x) / size.x * (lf - ln);
+        const double z = std::pow(10.0, std::clamp(lz, ln, lf));
+        std::string tip = "at " + view::length_text(float(z)) + ", one step is:";
+        for (const Curve& curve : curves)
+            tip += std::string("\n  ") + curve.label + ": " +
+                   view::length_text(float(view::step_at(curve.config, z)));
+        ImGui::SetTooltip("%s", tip.c_str());
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped(
+        "x: distance, znear to zfar; y: one depth step; both log. Shaded: the scene's depth "
+        "range. Unorm steps are the same either way round: reverse-Z helps floats only.");
+    ImGui::PopStyleColor();
+}
+
+void precision_section(PanelIo& io) {
+    const FrameResult& frame = io.inspector.frame();
+    if (!frame.depth) return;
+    const DepthResult& d = *frame.depth;
+    const double n = d.znear, f = d.zfar;
+    const uint32_t bits = format::depth_bits(d.format);
+    const std::array<Curve, 6> curves = {{
+        {{32, true, n, f}, "reverse-Z d32f", IM_COL32(90, 220, 120, 255)},
+        {{24, true, n, f}, "reverse-Z d24", IM_COL32(90, 170, 230, 255)},
+        {{16, true, n, f}, "reverse-Z d16", IM_COL32(170, 120, 230, 255)},
+        {{32, false, n, f}, "forward-Z d32f", IM_COL32(240, 200, 80, 255)},
+        {{24, false, n, f}, "forward-Z d24", IM_COL32(240, 130, 60, 255)},
+        {{16, false, n, f}, "forward-Z d16", IM_COL32(230, 70, 70, 255)},
+    }};
+    int current = 0;
+    for (size_t k = 0; k < curves.size(); ++k)
+        if (curves[k].config.bits == bits && curves[k].config.reverse_z == d.reverse_z)
+            current = int(k);
+    ImGui::Text("this frame: %s, znear %g, zfar %g", curves[size_t(current)].label, n, f);
+    precision_plot(io.inspector, curves, current);
+    for (size_t k = 0; k < curves.size(); ++k) {  // the legend
+        if (k % 3) ImGui::SameLine();
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(curves[k].colour), "%s%s",
+                           curves[k].label, int(k) == current ? " (this frame)" : "");
+    }
+}
+
 }  // namespace
 
 void depth_panel(PanelIo& io, const PanelLayout& layout) {
@@ -103,6 +227,7 @@ void depth_panel(PanelIo& io, const PanelLayout& layout) {
     if (ImGui::CollapsingHeader("Z-fighting", ImGuiTreeNodeFlags_DefaultOpen)) zfight_section(io);
     if (ImGui::CollapsingHeader("EQUAL check", ImGuiTreeNodeFlags_DefaultOpen))
         equal_check_section(io);
+    if (ImGui::CollapsingHeader("Precision", ImGuiTreeNodeFlags_DefaultOpen)) precision_section(io);
     ImGui::End();
 }
 
