@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -121,6 +122,26 @@ double plain(float v) {
     return std::stod(out.str());
 }
 
+// The coplanar overlays the importer classified (scene::Scene::decals) and the surfaces they
+// lie on, and whether this frame drew them in the decals pass (decal_pass=on) or like any
+// surface.
+nlohmann::json decals_json(const scene::Scene& s, const FrameResult& f) {
+    auto name = [&](uint32_t instance) {
+        const scene::Mesh& mesh = s.meshes[s.instances[instance].mesh];
+        return surface_json({mesh.name, s.materials[mesh.material].name, s.instances[instance].node});
+    };
+    nlohmann::json overlays = nlohmann::json::array();
+    for (const scene::Decal& d : s.decals) {
+        const scene::Mesh& mesh = s.meshes[s.instances[d.instance].mesh];
+        overlays.push_back({{"overlay", name(d.instance)},
+                            {"base", name(d.base)},
+                            {"alpha_mode", scene::to_string(s.materials[mesh.material].alpha_mode)}});
+    }
+    const bool pass = std::any_of(f.passes.begin(), f.passes.end(),
+                                  [](const PassResult& p) { return p.name == "decals"; });
+    return {{"overlays", overlays}, {"decals_pass", pass}};
+}
+
 nlohmann::json depth_json(const DepthResult& depth) {
     return {{"format", format::name(depth.format)},
             {"znear", plain(depth.znear)},
@@ -148,6 +169,7 @@ nlohmann::json frame_report(const ReportInput& in) {
         {"msaa", msaa_json(f.msaa)},
     };
     if (f.depth) json["depth"] = depth_json(*f.depth);
+    json["decals"] = decals_json(in.scene, f);
     // Left out when not counted, so that a reader never takes "not counted" for zero.
     if (f.covered_pixels) json["coverage"] = {{"covered_pixels", *f.covered_pixels}};
     if (f.masked_discards)

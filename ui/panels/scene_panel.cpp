@@ -50,6 +50,19 @@ void masked_cutoffs(PanelIo& io, const SceneSummary& s) {
     }
 }
 
+// The coplanar overlays classified at load and what each lies on (report.json "decals").
+void decal_list(const scene::Scene& s) {
+    if (s.decals.empty()) return;
+    if (!ImGui::TreeNode("decals", "%zu coplanar overlays (decals)", s.decals.size())) return;
+    for (const scene::Decal& d : s.decals) {
+        const scene::Mesh& mesh = s.meshes[s.instances[d.instance].mesh];
+        ImGui::BulletText("%s (%s) on %s", s.instances[d.instance].node.c_str(),
+                          scene::to_string(s.materials[mesh.material].alpha_mode),
+                          s.instances[d.base].node.c_str());
+    }
+    ImGui::TreePop();
+}
+
 }  // namespace
 
 void scene_panel(PanelIo& io, const PanelLayout& layout) {
@@ -80,6 +93,7 @@ void scene_panel(PanelIo& io, const PanelLayout& layout) {
     ImGui::Text("%zu draw groups, %zu instances, %zu meshes", s.draw_groups, s.instances, s.meshes);
     ImGui::Text("%llu triangles", static_cast<unsigned long long>(s.triangles));
     ImGui::Text("materials: %zu opaque, %zu masked, %zu blend", s.opaque, s.masked, s.blend);
+    decal_list(io.inspector.scene());
     masked_cutoffs(io, s);
     ImGui::End();
 }
