@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "model_builder.h"
+#include "renderer/scene/builtin/scene_facts.h"
 #include "renderer/scene/decals.h"
 #include "renderer/scene/importer.h"
 #include "renderer/scene/loader.h"
@@ -284,6 +285,15 @@ void expect_consistent(const Scene& s) {
         std::is_sorted(s.decals.begin(), s.decals.end(),
                        [](const Decal& a, const Decal& b) { return a.instance < b.instance; }));
     EXPECT_EQ(listed.size(), s.decals.size());
+}
+
+TEST(DecalsBuiltin, DecalsSceneHasExactlyItsOverlaysOnTheirBases) {
+    const Scene s = load_scene("decals", Settings{});
+    std::map<std::string, std::string> want;
+    for (const auto& o : builtin::facts::kDecalsOverlays)
+        want[o.node] = builtin::facts::kDecalsSurfaces[o.surface].node;
+    EXPECT_EQ(decal_nodes(s), want);
+    expect_consistent(s);
 }
 
 TEST(DecalsBuiltin, AtriumsDecalNodesLieOnItsWallsAndFloor) {
