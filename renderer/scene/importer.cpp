@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "renderer/scene/decals.h"
 #include "renderer/scene/gltf_accessor.h"
 #include "renderer/scene/gltf_material.h"
 #include "renderer/scene/gltf_mesh.h"
@@ -23,37 +24,57 @@ void check_header(const tinygltf::Model& model) {
             fail("required extension " + one_line(extension) + " is not supported");
 }
 
-// Instances sharing (mesh, alpha mode, double-sided) form one instanced draw (seed 000). Groups
-// keep first-use order; each group's instances are made contiguous, in traversal order.
-void build_draw_groups(Scene& scene, const std::vector<MeshPlacement>& placements,
-                       const MeshImport& meshes) {
+// Every (placement, primitive) as an instance, in traversal order.
+std::vector<Instance> place_instances(const std::vector<MeshPlacement>& placements,
+                                      const MeshImport& meshes) {
+    std::vector<Instance> placed;
+    for (const MeshPlacement& placement : placements)
+        for (uint32_t mesh : meshes.by_gltf_mesh[static_cast<size_t>(placement.gltf_mesh)])
+            placed.push_back({mesh, placement.world, placement.node});
+    return placed;
+}
+
+// Instances sharing (mesh, alpha mode, double-sided, decal) form one instanced draw (seed 000);
+// coplanar overlays are found first (decals.h), so a mesh used both as an overlay and not
+// makes two groups. Groups keep first-use order; each group's instances are made contiguous,
+// in traversal order. Scene::decals names overlay and base by their final indices.
+void build_draw_groups(Scene& scene, std::vector<Instance> placed) {
+    const std::vector<int32_t> base = find_decal_bases(scene.meshes, placed);
     struct Key {
         uint32_t mesh;
         AlphaMode alpha_mode;
         bool double_sided;
+        bool decal;
         auto operator<=>(const Key&) const = default;
     };
     std::map<Key, size_t> group_of;
-    std::vector<std::vector<const MeshPlacement*>> placed;  // per group
-    for (const MeshPlacement& placement : placements) {
-        for (uint32_t mesh : meshes.by_gltf_mesh[static_cast<size_t>(placement.gltf_mesh)]) {
-            const Material& material = scene.materials[scene.meshes[mesh].material];
-            const Key key{mesh, material.alpha_mode, material.double_sided};
-            const auto [it, added] = group_of.try_emplace(key, scene.draw_groups.size());
-            if (added) {
-                scene.draw_groups.push_back({mesh, key.alpha_mode, key.double_sided, 0, 0});
-                placed.emplace_back();
-            }
-            placed[it->second].push_back(&placement);
+    std::vector<std::vector<size_t>> members;  // per group, indices into `placed`
+    for (size_t i = 0; i < placed.size(); ++i) {
+        const uint32_t mesh = placed[i].mesh;
+        const Material& material = scene.materials[scene.meshes[mesh].material];
+        const Key key{mesh, material.alpha_mode, material.double_sided, base[i] >= 0};
+        const auto [it, added] = group_of.try_emplace(key, scene.draw_groups.size());
+        if (added) {
+            scene.draw_groups.push_back({mesh, key.alpha_mode, key.double_sided, 0, 0, key.decal});
+            members.emplace_back();
         }
+        members[it->second].push_back(i);
     }
+    std::vector<uint32_t> final_index(placed.size());
     for (size_t g = 0; g < scene.draw_groups.size(); ++g) {
         DrawGroup& group = scene.draw_groups[g];
         group.first_instance = static_cast<uint32_t>(scene.instances.size());
-        group.instance_count = static_cast<uint32_t>(placed[g].size());
-        for (const MeshPlacement* p : placed[g])
-            scene.instances.push_back({group.mesh, p->world, p->node});
+        group.instance_count = static_cast<uint32_t>(members[g].size());
+        for (size_t i : members[g]) {
+            final_index[i] = static_cast<uint32_t>(scene.instances.size());
+            scene.instances.push_back(std::move(placed[i]));
+        }
     }
+    for (size_t i = 0; i < placed.size(); ++i)
+        if (base[i] >= 0)
+            scene.decals.push_back({final_index[i], final_index[static_cast<size_t>(base[i])]});
+    std::sort(scene.decals.begin(), scene.decals.end(),
+              [](const Decal& a, const Decal& b) { return a.instance < b.instance; });
 }
 
 // A file camera without zfar asks for an infinite projection; the renderer wants a finite
@@ -132,7 +153,7 @@ Scene import_checked(const tinygltf::Model& model, std::string name, std::string
     }
 
     const SceneWalk walk = walk_scene(model, scene_index);
-    build_draw_groups(scene, walk.placements, meshes);
+    build_draw_groups(scene, place_instances(walk.placements, meshes));
     if (scene.instances.empty()) fail(nothing_to_draw(scene_index, meshes));
     for (const Instance& instance : scene.instances)
         scene.bounds.extend(transform_bounds(scene.meshes[instance.mesh].bounds, instance.world));

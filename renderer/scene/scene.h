@@ -110,7 +110,7 @@ struct Instance {
     std::string node;  // the node that places it (glTF name, or "node N"), for reports
 };
 
-// Instances that share (mesh, alpha mode, double-sided): drawn with one instanced draw
+// Instances that share (mesh, alpha mode, double-sided, decal): drawn with one instanced draw
 // (seed 000). Instances of a group are contiguous in Scene::instances. Groups keep the order
 // in which the file first uses them (authored order, never sorted front to back).
 struct DrawGroup {
@@ -119,7 +119,17 @@ struct DrawGroup {
     bool double_sided = false;
     uint32_t first_instance = 0;
     uint32_t instance_count = 0;
-    bool decal = false;  // its instances are coplanar overlays (classified at load)
+    // Its instances are coplanar overlays (Scene::decals; decals.h). Last, so positional
+    // initialisers written before it still mean what they said.
+    bool decal = false;
+};
+
+// A coplanar overlay (seed 004: Sponza's layered meshes, the same vertices as the wall under
+// them) and the surface it lies on, both indices into Scene::instances. Found by geometry at
+// load, whatever the renderer's settings (decals.h).
+struct Decal {
+    uint32_t instance = 0;  // the overlay
+    uint32_t base = 0;      // the instance it lies on (never itself a decal)
 };
 
 struct Camera {
@@ -149,6 +159,7 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Instance> instances;
     std::vector<DrawGroup> draw_groups;
+    std::vector<Decal> decals;          // sorted by instance; exactly the instances of decal groups
     Bounds bounds;                      // world space
     std::optional<Camera> file_camera;  // the file's first camera, when it has one
     Camera camera;                      // file_camera, or framed from the bounds

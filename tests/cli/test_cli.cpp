@@ -28,8 +28,8 @@ TEST(Cli, HelpDescribesEveryCommand) {
 TEST(Cli, ScenesListsOneLineEach) {
     auto r = run_depthscope("scenes");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(count_lines(r.out), 5u) << r.out;
-    for (const char* name : {"atrium", "overdraw", "zfight", "foliage", "edges"}) {
+    EXPECT_EQ(count_lines(r.out), 6u) << r.out;
+    for (const char* name : {"atrium", "overdraw", "zfight", "foliage", "edges", "decals"}) {
         EXPECT_NE(r.out.find(name), std::string::npos) << name;
     }
     EXPECT_EQ(r.out.rfind("atrium", 0), 0u) << "the default scene comes first";

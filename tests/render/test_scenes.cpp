@@ -20,7 +20,8 @@ TEST_P(SceneRenders, NonBlankAndValidationClean) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BuiltIn, SceneRenders,
-                         ::testing::Values("atrium", "overdraw", "zfight", "foliage", "edges"),
+                         ::testing::Values("atrium", "overdraw", "zfight", "foliage", "edges",
+                                           "decals"),
                          [](const auto& info) { return info.param; });
 
 INSTANTIATE_TEST_SUITE_P(
@@ -47,5 +48,6 @@ TEST_P(ExportRoundTrip, ExportedSceneRendersLikeTheBuiltIn) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BuiltIn, ExportRoundTrip,
-                         ::testing::Values("atrium", "overdraw", "zfight", "foliage", "edges"),
+                         ::testing::Values("atrium", "overdraw", "zfight", "foliage", "edges",
+                                           "decals"),
                          [](const auto& info) { return info.param; });

@@ -18,7 +18,7 @@ struct Entry {
 };
 
 // The first entry is the default scene.
-constexpr std::array<Entry, 5> kScenes = {{
+constexpr std::array<Entry, 6> kScenes = {{
     {"atrium",
      "Sponza-like courtyard: two floors of arcades, curtains, masked foliage, coplanar decals",
      build_atrium},
@@ -30,6 +30,9 @@ constexpr std::array<Entry, 5> kScenes = {{
      build_foliage},
     {"edges", "thin rods, wires, gratings and slanted slabs on a bright backdrop (MSAA)",
      build_edges},
+    {"decals",
+     "room corner with OPAQUE, MASK and BLEND overlays lying exactly on its walls and floor",
+     build_decals},
 }};
 
 const Entry* find(std::string_view name) {

@@ -1,6 +1,8 @@
 #pragma once
 // Known facts of the synthetic built-in scenes, so tests can derive their expectations (counts,
 // linear depths) from the same numbers the scenes are built from.
+#include <glm/glm.hpp>
+
 namespace ds::scene::builtin::facts {
 
 // overdraw: the camera sits at the origin looking down -Z with an identity rotation, so camera
@@ -46,5 +48,63 @@ constexpr float zfight_gap_metres(float d) {
 // foliage: every card's base-colour alpha is u (0 at the left edge, 1 at the right), so with
 // alphaCutoff c exactly the part u >= c of each card survives.
 constexpr float kFoliageAlphaCutoff = 0.5f;
+
+// decals: a room corner (seed 004's coplanar overlays). Three light-grey OPAQUE bases, each a
+// grid of kDecalsCell cells: surface s has its cell (i, j) corner at origin + axis_u * (i * cell)
+// + axis_v * (j * cell) and faces cross(axis_u, axis_v). Overlay k covers cells [i0, i1) x
+// [j0, j1) of its surface, built the same way, so its vertices are bit-identical to the base's
+// (the left wall and its overlay are authored in a local frame and placed by the same
+// non-identity node transform). Its world rectangle is origin + s * edge_u + t * edge_v, s, t in
+// [0, 1]; its UV u runs with s. A MASK overlay's texture has alpha 1 for u < kDecalsMaskKeep and
+// 0 beyond (cutoff kDecalsMaskCutoff), so exactly its part s < kDecalsMaskKeep survives; the
+// BLEND overlay's alpha is kDecalsBlendAlpha. Colours are base colour factors (linear). The
+// camera sees every overlay whole at 16:9. No two bases are coplanar; overlays never overlap.
+struct DecalsSurface {
+    const char* node;  // node and mesh name
+    glm::vec3 origin;
+    glm::vec3 axis_u;  // unit
+    glm::vec3 axis_v;  // unit
+    int cells_u;
+    int cells_v;
+};
+constexpr float kDecalsCell = 0.5f;
+constexpr DecalsSurface kDecalsSurfaces[] = {
+    {"back_wall", {-3, 0, -3}, {1, 0, 0}, {0, 1, 0}, 12, 6},  // z = -3, faces +Z
+    {"left_wall", {-3, 0, 3}, {0, 0, -1}, {0, 1, 0}, 12, 6},  // x = -3, faces +X
+    {"floor", {-3, 0, 3}, {1, 0, 0}, {0, 0, -1}, 12, 12},     // y = 0, faces +Y
+};
+constexpr glm::vec3 kDecalsBaseColour{0.7f, 0.7f, 0.7f};
+
+enum class DecalsAlpha { Opaque, Mask, Blend };
+struct DecalsOverlay {
+    const char* node;  // node and mesh name
+    int surface;       // index into kDecalsSurfaces: the base it lies on
+    int i0, i1, j0, j1;
+    DecalsAlpha alpha;
+    glm::vec3 colour;
+};
+constexpr DecalsOverlay kDecalsOverlays[] = {
+    {"decal_red_opaque", 0, 1, 5, 2, 4, DecalsAlpha::Opaque, {1, 0, 0}},
+    {"decal_green_mask", 0, 7, 11, 2, 4, DecalsAlpha::Mask, {0, 1, 0}},
+    {"decal_yellow_opaque", 2, 2, 5, 3, 6, DecalsAlpha::Opaque, {1, 1, 0}},
+    {"decal_magenta_mask", 2, 7, 11, 4, 7, DecalsAlpha::Mask, {1, 0, 1}},
+    {"decal_blue_blend", 1, 3, 8, 2, 4, DecalsAlpha::Blend, {0, 0, 1}},
+};
+constexpr float kDecalsMaskKeep = 0.5f;
+constexpr float kDecalsMaskCutoff = 0.5f;
+constexpr float kDecalsBlendAlpha = 0.5f;
+
+struct DecalsRect {
+    glm::vec3 origin;
+    glm::vec3 edge_u;
+    glm::vec3 edge_v;
+};
+constexpr DecalsRect decals_overlay_rect(const DecalsOverlay& o) {
+    const DecalsSurface& s = kDecalsSurfaces[o.surface];
+    return {s.origin + s.axis_u * (kDecalsCell * static_cast<float>(o.i0)) +
+                s.axis_v * (kDecalsCell * static_cast<float>(o.j0)),
+            s.axis_u * (kDecalsCell * static_cast<float>(o.i1 - o.i0)),
+            s.axis_v * (kDecalsCell * static_cast<float>(o.j1 - o.j0))};
+}
 
 }  // namespace ds::scene::builtin::facts

@@ -11,5 +11,6 @@ tinygltf::Model build_overdraw(const Settings& settings);
 tinygltf::Model build_zfight(const Settings& settings);
 tinygltf::Model build_foliage(const Settings& settings);
 tinygltf::Model build_edges(const Settings& settings);
+tinygltf::Model build_decals(const Settings& settings);
 
 }  // namespace ds::scene::builtin

@@ -75,8 +75,8 @@ TEST(BuiltinScenes, ListIsInOrderWithAtriumFirst) {
         EXPECT_FALSE(i.description.empty());
         EXPECT_TRUE(exists(i.name));
     }
-    EXPECT_EQ(names,
-              (std::vector<std::string>{"atrium", "overdraw", "zfight", "foliage", "edges"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"atrium", "overdraw", "zfight", "foliage", "edges",
+                                               "decals"}));
     EXPECT_FALSE(exists("sponza"));
 }
 
@@ -128,6 +128,7 @@ TEST(BuiltinScenes, AlphaModesMatchEachScenesPurpose) {
     EXPECT_EQ(alpha_modes(build("overdraw", s)), (std::set<std::string>{"OPAQUE"}));
     EXPECT_EQ(alpha_modes(build("zfight", s)), (std::set<std::string>{"OPAQUE"}));
     EXPECT_EQ(alpha_modes(build("edges", s)), (std::set<std::string>{"OPAQUE"}));
+    EXPECT_EQ(alpha_modes(build("decals", s)), (std::set<std::string>{"OPAQUE", "MASK", "BLEND"}));
     const tinygltf::Model foliage = build("foliage", s);
     EXPECT_TRUE(alpha_modes(foliage).count("MASK"));
     for (const tinygltf::Material& mat : foliage.materials) {
