@@ -128,14 +128,16 @@ double plain(float v) {
 nlohmann::json decals_json(const scene::Scene& s, const FrameResult& f) {
     auto name = [&](uint32_t instance) {
         const scene::Mesh& mesh = s.meshes[s.instances[instance].mesh];
-        return surface_json({mesh.name, s.materials[mesh.material].name, s.instances[instance].node});
+        return surface_json(
+            {mesh.name, s.materials[mesh.material].name, s.instances[instance].node});
     };
     nlohmann::json overlays = nlohmann::json::array();
     for (const scene::Decal& d : s.decals) {
         const scene::Mesh& mesh = s.meshes[s.instances[d.instance].mesh];
-        overlays.push_back({{"overlay", name(d.instance)},
-                            {"base", name(d.base)},
-                            {"alpha_mode", scene::to_string(s.materials[mesh.material].alpha_mode)}});
+        overlays.push_back(
+            {{"overlay", name(d.instance)},
+             {"base", name(d.base)},
+             {"alpha_mode", scene::to_string(s.materials[mesh.material].alpha_mode)}});
     }
     const bool pass = std::any_of(f.passes.begin(), f.passes.end(),
                                   [](const PassResult& p) { return p.name == "decals"; });

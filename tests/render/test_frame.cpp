@@ -16,12 +16,12 @@ using namespace ds::test;
 namespace {
 
 const std::vector<std::string> kAllPasses = {
-    "shadow",          "depth_prepass", "gtao",   "ao_spatial",  "ao_temporal",
-    "contact_shadows", "forward",       "skybox", "transparent", "tonemap"};
+    "shadow",  "depth_prepass", "gtao",   "ao_spatial",  "ao_temporal", "contact_shadows",
+    "forward", "decals",        "skybox", "transparent", "tonemap"};
 
 // Without the prepass, gtao and contact shadows have no input and are skipped.
-const std::vector<std::string> kPassesWithoutPrepass = {"shadow", "forward", "skybox",
-                                                        "transparent", "tonemap"};
+const std::vector<std::string> kPassesWithoutPrepass = {"shadow", "forward",     "decals",
+                                                        "skybox", "transparent", "tonemap"};
 
 // The frame's own passes (kind "frame": no clear or read-back), in execution order.
 std::vector<std::string> pass_names(const nlohmann::json& passes) {
@@ -59,9 +59,7 @@ TEST(Frame, EveryStructuralCombinationIsValidationClean) {
             EXPECT_EQ(names, kAllPasses) << run["settings"].dump();
         } else {
             // Without the prepass, gtao and contact shadows have no input and are skipped.
-            EXPECT_EQ(names, (std::vector<std::string>{"shadow", "forward", "skybox", "transparent",
-                                                       "tonemap"}))
-                << run["settings"].dump();
+            EXPECT_EQ(names, kPassesWithoutPrepass) << run["settings"].dump();
         }
     }
 }

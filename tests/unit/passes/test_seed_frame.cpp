@@ -75,11 +75,12 @@ TEST_F(SeedFrame, PassOrderAndSkips) {
     const FrameResult on = render({});
     EXPECT_EQ(names(on), (std::vector<std::string>{"shadow", "depth_prepass", "gtao", "ao_spatial",
                                                    "ao_temporal", "contact_shadows", "forward",
-                                                   "skybox", "transparent", "tonemap"}));
+                                                   "decals", "skybox", "transparent", "tonemap"}));
     EXPECT_TRUE(on.skipped.empty());
     const std::string on_dump = renderer_->graph_dump();
     const FrameResult off = render({"prepass=off", "shadows=off", "sky=off"});
-    EXPECT_EQ(names(off), (std::vector<std::string>{"forward", "transparent", "tonemap"}));
+    EXPECT_EQ(names(off),
+              (std::vector<std::string>{"forward", "decals", "transparent", "tonemap"}));
     EXPECT_EQ(off.skipped,
               (std::vector<std::string>{
                   "shadow: skipped (shadows=off)", "depth_prepass: skipped (prepass=off)",
@@ -139,10 +140,9 @@ TEST_F(SeedFrame, ShadedFragmentsShowWhatThePrepassSaves) {
     const double fwd_off = double(shaded(off, "forward"));
     std::printf(
         "covered %.0f; forward shaded: prepass on %.0f (%.4fx), off %.0f (%.3fx); "
-        "prepass %llu, transparent %llu\n",
+        "prepass %llu, decals %llu\n",
         covered, fwd_on, fwd_on / covered, fwd_off, fwd_off / covered,
-        (unsigned long long)shaded(on, "depth_prepass"),
-        (unsigned long long)shaded(on, "transparent"));
+        (unsigned long long)shaded(on, "depth_prepass"), (unsigned long long)shaded(on, "decals"));
     EXPECT_LE(fwd_on, 1.02 * covered);
     EXPECT_GE(fwd_on, 0.98 * covered) << "EQUAL must not reject visible fragments";
     EXPECT_GE(fwd_off, 2.0 * covered);
@@ -152,9 +152,13 @@ TEST_F(SeedFrame, ShadedFragmentsShowWhatThePrepassSaves) {
     EXPECT_EQ(shaded(authored, "depth_prepass"), shaded(off, "forward"));
     EXPECT_LT(shaded(on, "depth_prepass"), shaded(authored, "depth_prepass"));
     EXPECT_GE(double(shaded(on, "depth_prepass")), covered);
-    // Decals: each covered pixel at most once per decal layer, and the same with or without.
-    EXPECT_GT(shaded(on, "transparent"), 0u);
-    EXPECT_EQ(shaded(on, "transparent"), shaded(off, "transparent"));
+    // Decals (the atrium's are BLEND): shaded once by the decals pass, the same fragments with
+    // or without the prepass, and the same ones the transparent pass shades with decal_pass=off.
+    EXPECT_GT(shaded(on, "decals"), 0u);
+    EXPECT_EQ(shaded(on, "transparent"), 0u) << "the atrium's only BLEND surfaces are decals";
+    EXPECT_EQ(shaded(on, "decals"), shaded(off, "decals"));
+    const FrameResult drawn_as_transparent = render({"count_fragments=on", "decal_pass=off"});
+    EXPECT_EQ(shaded(drawn_as_transparent, "transparent"), shaded(on, "decals"));
 }
 
 // The prepass changes how the image is made, not the image (seed 004's acceptance), with

@@ -57,8 +57,8 @@ TEST_F(Inspector, EveryPanelHasDataAfterTheFirstFrames) {
     const std::vector<uint8_t> pixels = ui->frame();
     ASSERT_EQ(pixels.size(), size_t(960) * 540 * 4);
     const FrameResult& f = ui->inspector().frame();
-    // "final" is read back as is: no inspect pass, the ten frame passes and readback_final.
-    EXPECT_EQ(names(f).size(), 10u);
+    // "final" is read back as is: no inspect pass, the eleven frame passes and readback_final.
+    EXPECT_EQ(names(f).size(), 11u);
     for (const PassResult& p : f.passes) EXPECT_GT(p.gpu_ms, 0.0) << p.name;
     EXPECT_GE(f.resources.size(), 14u);
     ASSERT_TRUE(f.inspected);
