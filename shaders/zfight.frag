@@ -1,5 +1,7 @@
 #version 460
-// zfight: every opaque and masked fragment drawn again over the prepass result, no depth test.
+// zfight: every opaque and masked fragment drawn again over the prepass result, tested early
+// (closer-or-equal, read-only) against zfight_bound: the stored depth moved zfight_steps + 1
+// steps towards far, so hidden layers never run this shader.
 // A fragment of another surface than the pixel's winner (surface_id) that passes its alpha
 // test competes when its depth lies within push.max_steps representable steps of the stored
 // depth (D32_SFLOAT: ULPs of the float; D24 / D16: unorm steps). Each competitor adds one to
@@ -11,6 +13,8 @@
 #include "common/bindings.glsl"
 
 // The prepass vertex shader's outputs, all declared so the interfaces match.
+layout(early_fragment_tests) in;
+
 layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv0;

@@ -57,30 +57,15 @@ void DepthResolvePass::add(graph::RenderGraph& graph, const FrameInputs& in, Fra
 
 void DepthResolvePass::record(graph::PassContext& ctx, const FrameInputs& in,
                               graph::ImageHandle msaa_depth, graph::ImageHandle depth) {
-    VkCommandBuffer cmd = ctx.cmd();
     const VkPipeline pipeline = pipelines_.get({.depth = in.options.depth_format});
     const VkDescriptorSet set = sets_.allocate(in.frame_number, set_layout_.handle());
     vk::DescriptorWriter writer;
     writer.image(0, ctx.view(msaa_depth), nearest_.handle(), ctx.layout(msaa_depth));
     writer.update(services_.context.device(), set);
-
-    // Every pixel is written, so the old contents are not needed.
-    const VkRenderingAttachmentInfo target =
-        depth_attachment(ctx.view(depth), ctx.layout(depth), VK_ATTACHMENT_LOAD_OP_DONT_CARE,
-                         VK_ATTACHMENT_STORE_OP_STORE);
-    begin_rendering(cmd, ctx.extent(depth), {}, &target);
-    // gl_FragDepth is only written with the test on: ALWAYS passes.
-    set_depth_state(cmd, /*test=*/true, /*write=*/true, VK_COMPARE_OP_ALWAYS);
-    vk::fn().cmd_set_cull_mode(cmd, VK_CULL_MODE_NONE);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     const VkDescriptorSet sets[] = {in.frame_set, set};
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.handle(), 0, 2, sets, 0,
-                            nullptr);
     const int32_t samples = int32_t(in.options.samples);
-    vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof samples,
-                       &samples);
-    vkCmdDraw(cmd, 3, 1, 0, 0);
-    vk::fn().cmd_end_rendering(cmd);
+    draw_fullscreen_depth(ctx, depth, pipeline, layout_.handle(), sets,
+                          std::as_bytes(std::span(&samples, 1)));
 }
 
 }  // namespace ds::passes

@@ -102,6 +102,27 @@ void set_depth_state(VkCommandBuffer cmd, bool test, bool write, VkCompareOp com
     vk::fn().cmd_set_depth_compare_op(cmd, compare);
 }
 
+void draw_fullscreen_depth(graph::PassContext& ctx, graph::ImageHandle target, VkPipeline pipeline,
+                           VkPipelineLayout layout, std::span<const VkDescriptorSet> sets,
+                           std::span<const std::byte> push) {
+    VkCommandBuffer cmd = ctx.cmd();
+    // Every pixel is written, so the old contents are not needed.
+    const VkRenderingAttachmentInfo depth =
+        depth_attachment(ctx.view(target), ctx.layout(target), VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+                         VK_ATTACHMENT_STORE_OP_STORE);
+    begin_rendering(cmd, ctx.extent(target), {}, &depth);
+    // gl_FragDepth is only written with the test on: ALWAYS passes.
+    set_depth_state(cmd, /*test=*/true, /*write=*/true, VK_COMPARE_OP_ALWAYS);
+    vk::fn().cmd_set_cull_mode(cmd, VK_CULL_MODE_NONE);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, uint32_t(sets.size()),
+                            sets.data(), 0, nullptr);
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, uint32_t(push.size()),
+                       push.data());
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vk::fn().cmd_end_rendering(cmd);
+}
+
 void declare_hdr_over_depth(graph::PassBuilder& b, FrameResources& res, bool msaa, bool resolve) {
     if (!msaa) {
         b.read(res.depth, graph::Access::DepthReadOnly);

@@ -71,6 +71,12 @@ ShaderStages compile_fullscreen(shader::Compiler& compiler, const char* fragment
 vk::Pipeline create_fullscreen(vk::Context& context, const FullscreenPipeline& pipeline,
                                const ShaderStages& stages);
 
+// Records a fullscreen triangle whose fragment shader writes gl_FragDepth into every pixel of
+// `target` (loaded DONT_CARE, stored; test ALWAYS, writes on): depth_resolve, zfight_bound.
+void draw_fullscreen_depth(graph::PassContext& ctx, graph::ImageHandle target, VkPipeline pipeline,
+                           VkPipelineLayout layout, std::span<const VkDescriptorSet> sets,
+                           std::span<const std::byte> push);
+
 // A colour attachment that resolves (AVERAGE) into `resolve` at the end of the rendering.
 VkRenderingAttachmentInfo resolving_color_attachment(VkImageView msaa, VkImageView resolve,
                                                      VkAttachmentLoadOp load,

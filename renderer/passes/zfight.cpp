@@ -71,8 +71,9 @@ ZfightPass::ZfightPass(const PassServices& services)
     : services_(services),
       nearest_(vk::nearest_clamp_sampler(services.context, "zfight nearest")),
       sets_(services.context, 1, kPoolSizes, "zfight sets"),
-      pipelines_([this](const NoVariant& v) { return compile(v); },
-                 [this](const NoVariant& v, const ShaderStages& s) { return create(v, s); }) {
+      pipelines_([this](const Variant& v) { return compile(v); },
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }),
+      bound_(services) {
     const VkShaderStageFlags frag = VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorSetLayoutBinding bindings[] = {
         vk::layout_binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, frag),
@@ -86,15 +87,16 @@ ZfightPass::ZfightPass(const PassServices& services)
     layout_ = vk::PipelineLayout(services.context, sets, {&push, 1}, "zfight layout");
 }
 
-ShaderStages ZfightPass::compile(const NoVariant&) const {
+ShaderStages ZfightPass::compile(const Variant&) const {
     // The prepass's vertex shader, handing the surface base on: the same gl_Position.
     const std::vector<shader::Define> surface = {{"SURFACE_ID", "1"}};
     return {services_.compiler.compile("depth_prepass.vert", shader::Stage::Vertex, surface).spirv,
             services_.compiler.compile("zfight.frag", shader::Stage::Fragment).spirv};
 }
 
-vk::Pipeline ZfightPass::create(const NoVariant&, const ShaderStages& s) const {
+vk::Pipeline ZfightPass::create(const Variant& v, const ShaderStages& s) const {
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
+        .depth_attachment(v.depth)
         .build(services_.context, "zfight");
 }
 
@@ -112,12 +114,13 @@ void ZfightPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
     const graph::BufferHandle records = services_.readback.import_storage(
         graph, "zfight_records", kHeaderBytes + VkDeviceSize(capacity_) * 16, kHeaderBytes);
     records_ = records;
-    const Bound bound{res.surface_id, res.depth, res.zfight, records};
+    const Bound bound{res.surface_id, res.depth, bound_.add(graph, in, res), res.zfight, records};
     graph.add_pass(name(), [&](graph::PassBuilder& b) {
         b.read(res.frame_uniforms, Access::UniformRead,
                graph::Shader::Vertex | graph::Shader::Fragment);
         b.read(bound.surfaces, Access::Sampled);
         b.read(bound.depth, Access::Sampled);
+        b.read(bound.limit, Access::DepthReadOnly);
         b.write(bound.competitors, Access::StorageReadWrite);
         b.write(bound.records, Access::StorageReadWrite);
         return [this, in, bound](graph::PassContext& ctx) { record(ctx, in, bound); };
@@ -137,11 +140,16 @@ void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bo
     const VkExtent2D extent = ctx.extent(bound.depth);
     const Push push{in.options.zfight_steps, format::depth_bits(ctx.format(bound.depth)),
                     extent.width, capacity_};
-    begin_rendering(cmd, extent, {}, nullptr);  // no attachments: the fragments only count
-    set_depth_state(cmd, /*test=*/false, /*write=*/false, VK_COMPARE_OP_ALWAYS);
+    // No colour: the fragments only count. Layers beyond the limit fail the early test.
+    const VkRenderingAttachmentInfo limit =
+        depth_attachment(ctx.view(bound.limit), ctx.layout(bound.limit), VK_ATTACHMENT_LOAD_OP_LOAD,
+                         VK_ATTACHMENT_STORE_OP_NONE);
+    begin_rendering(cmd, extent, {}, &limit);
+    set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());
     bind_geometry(cmd, *in.scene);
     const VkPipelineLayout layout = layout_.handle();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get({}));
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                      pipelines_.get({.depth = in.options.depth_format}));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
                             nullptr);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &set, 0, nullptr);

@@ -16,6 +16,7 @@
 
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
+#include "renderer/passes/zfight_bound.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
@@ -50,17 +51,25 @@ class ZfightPass final : public FramePass {
     const char* name() const override { return "zfight"; }
     std::optional<std::string> skipped(const FrameInputs& in) const override;
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
-    void rebuild_pipelines(vk::DestroyList& retired) override { pipelines_.rebuild(retired); }
+    void rebuild_pipelines(vk::DestroyList& retired) override {
+        pipelines_.rebuild(retired);
+        bound_.rebuild_pipelines(retired);
+    }
     // FrameResult::zfight: the competing pixels and the pairs of surfaces, by pixels.
     void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
 
   private:
     struct Bound {
-        graph::ImageHandle surfaces, depth, competitors;
+        graph::ImageHandle surfaces, depth, limit, competitors;  // limit: ZfightBound's
         graph::BufferHandle records;
     };
-    ShaderStages compile(const NoVariant& variant) const;
-    vk::Pipeline create(const NoVariant& variant, const ShaderStages& stages) const;
+    struct Variant {
+        VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format (the limit's)
+        bool operator==(const Variant&) const = default;
+        size_t hash() const { return hash_fields(int(depth)); }
+    };
+    ShaderStages compile(const Variant& variant) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
     void record(graph::PassContext& ctx, const FrameInputs& in, const Bound& bound);
 
     PassServices services_;
@@ -68,7 +77,8 @@ class ZfightPass final : public FramePass {
     vk::DescriptorSetLayout set_layout_;
     vk::PipelineLayout layout_;
     FrameDescriptorPool sets_;
-    PipelineVariants<NoVariant> pipelines_;
+    PipelineVariants<Variant> pipelines_;
+    ZfightBound bound_;
     graph::BufferHandle records_;  // this frame's, if it ran
     uint32_t capacity_ = 0;
 };

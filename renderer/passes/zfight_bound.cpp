@@ -1,0 +1,74 @@
+#include "renderer/passes/zfight_bound.h"
+
+#include "renderer/format/format.h"
+#include "renderer/shader/compiler.h"
+#include "renderer/vk/context.h"
+
+namespace ds::passes {
+namespace {
+
+const VkDescriptorPoolSize kPoolSizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+
+struct Push {
+    uint32_t steps, depth_bits;
+};
+
+}  // namespace
+
+ZfightBound::ZfightBound(const PassServices& services)
+    : services_(services),
+      nearest_(vk::nearest_clamp_sampler(services.context, "zfight bound nearest")),
+      sets_(services.context, 1, kPoolSizes, "zfight bound sets"),
+      pipelines_(
+          [this](const Variant&) {
+              return compile_fullscreen(services_.compiler, "zfight_bound.frag");
+          },
+          [this](const Variant& v, const ShaderStages& s) {
+              return create_fullscreen(services_.context,
+                                       {.fragment = "zfight_bound.frag",
+                                        .depth = v.depth,
+                                        .layout = layout_.handle(),
+                                        .name = "zfight bound"},
+                                       s);
+          }) {
+    const VkDescriptorSetLayoutBinding binding = vk::layout_binding(
+        0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT);
+    set_layout_ = vk::DescriptorSetLayout(services.context, {&binding, 1}, "zfight bound set");
+    const VkDescriptorSetLayout sets[] = {services.frame_layout, set_layout_.handle()};
+    const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(Push)};
+    layout_ = vk::PipelineLayout(services.context, sets, {&push, 1}, "zfight bound layout");
+}
+
+graph::ImageHandle ZfightBound::add(graph::RenderGraph& graph, const FrameInputs& in,
+                                    const FrameResources& res) {
+    const graph::ImageHandle stored = res.depth;
+    graph::ImageHandle bound;
+    graph.add_pass("zfight_bound", [&](graph::PassBuilder& b) {
+        bound = b.create_image("zfight_bound",
+                               {.format = in.options.depth_format,
+                                .size = graph::ImageSize::relative(1.0f),
+                                .semantic = in.options.reverse_z ? graph::Semantic::ReverseZDepth
+                                                                 : graph::Semantic::ForwardZDepth});
+        b.read(res.frame_uniforms, graph::Access::UniformRead,
+               graph::Shader::Vertex | graph::Shader::Fragment);
+        b.read(stored, graph::Access::Sampled);
+        b.write(bound, graph::Access::DepthAttachment);
+        return
+            [this, in, stored, bound](graph::PassContext& ctx) { record(ctx, in, stored, bound); };
+    });
+    return bound;
+}
+
+void ZfightBound::record(graph::PassContext& ctx, const FrameInputs& in, graph::ImageHandle stored,
+                         graph::ImageHandle bound) {
+    const VkDescriptorSet set = sets_.allocate(in.frame_number, set_layout_.handle());
+    vk::DescriptorWriter writer;
+    writer.image(0, ctx.view(stored), nearest_.handle(), ctx.layout(stored));
+    writer.update(services_.context.device(), set);
+    const VkDescriptorSet sets[] = {in.frame_set, set};
+    const Push push{in.options.zfight_steps, format::depth_bits(in.options.depth_format)};
+    draw_fullscreen_depth(ctx, bound, pipelines_.get({.depth = in.options.depth_format}),
+                          layout_.handle(), sets, std::as_bytes(std::span(&push, 1)));
+}
+
+}  // namespace ds::passes
