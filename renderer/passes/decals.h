@@ -18,10 +18,9 @@
 #include "renderer/graph/graph.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
-#include "renderer/passes/lighting_set.h"
+#include "renderer/passes/overlay_drawing.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/scene/scene.h"
-#include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
 
@@ -53,20 +52,11 @@ class DecalsPass final : public FramePass {
             return hash_fields(int(mode), counting, reverse_z, int(samples), int(depth));
         }
     };
-    struct Pipelines {
-        VkPipeline opaque, mask, blend;
-    };
-
     ShaderStages compile(const Variant& variant) const;
     vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
-    void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
-                const LightingInputs& lighting, const Pipelines& pipelines);
 
     PassServices services_;
-    LightingSet lighting_;
-    vk::DescriptorSetLayout count_layout_;
-    vk::PipelineLayout layout_;
-    FrameDescriptorPool count_sets_;
+    OverlayDrawing drawing_;
     PipelineVariants<Variant> pipelines_;
 };
 

@@ -38,11 +38,7 @@ class DepthResolvePass final : public FramePass {
 
   private:
     // The single-sample depth it writes: the frame's depth_format.
-    struct Variant {
-        VkFormat depth = VK_FORMAT_UNDEFINED;
-        bool operator==(const Variant&) const = default;
-        size_t hash() const { return hash_fields(int(depth)); }
-    };
+    using Variant = DepthFormatVariant;
 
     ShaderStages compile(const Variant& variant) const;
     vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;

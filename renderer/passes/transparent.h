@@ -16,9 +16,8 @@
 #include "renderer/graph/graph.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
-#include "renderer/passes/lighting_set.h"
+#include "renderer/passes/overlay_drawing.h"
 #include "renderer/passes/pass_util.h"
-#include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
 
@@ -49,14 +48,9 @@ class TransparentPass final : public FramePass {
 
     ShaderStages compile(const Variant& variant) const;
     vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
-    void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
-                const LightingInputs& lighting, VkPipeline pipeline);
 
     PassServices services_;
-    LightingSet lighting_;
-    vk::DescriptorSetLayout count_layout_;
-    vk::PipelineLayout layout_;
-    FrameDescriptorPool count_sets_;
+    OverlayDrawing drawing_;
     PipelineVariants<Variant> pipelines_;
 };
 

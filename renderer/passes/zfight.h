@@ -63,11 +63,7 @@ class ZfightPass final : public FramePass {
         graph::ImageHandle surfaces, depth, limit, competitors;  // limit: ZfightBound's
         graph::BufferHandle records;
     };
-    struct Variant {
-        VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format (the limit's)
-        bool operator==(const Variant&) const = default;
-        size_t hash() const { return hash_fields(int(depth)); }
-    };
+    using Variant = DepthFormatVariant;  // the frame's depth_format (the limit's)
     ShaderStages compile(const Variant& variant) const;
     vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
     void record(graph::PassContext& ctx, const FrameInputs& in, const Bound& bound);

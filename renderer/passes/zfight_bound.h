@@ -26,11 +26,7 @@ class ZfightBound {
     void rebuild_pipelines(vk::DestroyList& retired) { pipelines_.rebuild(retired); }
 
   private:
-    struct Variant {
-        VkFormat depth = VK_FORMAT_UNDEFINED;
-        bool operator==(const Variant&) const = default;
-        size_t hash() const { return hash_fields(int(depth)); }
-    };
+    using Variant = DepthFormatVariant;
     void record(graph::PassContext& ctx, const FrameInputs& in, graph::ImageHandle stored,
                 graph::ImageHandle bound);
 

@@ -1,0 +1,78 @@
+#include "renderer/passes/overlay_drawing.h"
+
+#include <string>
+
+#include "renderer/passes/scene_draw.h"
+#include "renderer/vk/context.h"
+#include "renderer/vk/functions.h"
+
+namespace ds::passes {
+namespace {
+const VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}};
+}
+
+OverlayDrawing::OverlayDrawing(const PassServices& services, const char* name)
+    : services_(services),
+      lighting_(services.context, services.preferred_depth_format),
+      count_layout_(create_count_set_layout(services.context)),
+      count_sets_(services.context, 1, kCountPoolSizes,
+                  (std::string(name) + " count sets").c_str()) {
+    const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
+                                          lighting_.layout(), count_layout_.handle()};
+    layout_ =
+        vk::PipelineLayout(services.context, sets, {}, (std::string(name) + " layout").c_str());
+}
+
+void OverlayDrawing::add(graph::RenderGraph& graph, const char* name, const FrameInputs& in,
+                         FrameResources& res, graph::ImageHandle counts, bool resolve, Draw draw) {
+    // Not in the prepass: no prepass normal or roughness.
+    const LightingInputs lighting = {.shadow_map = res.shadow_map,
+                                     .normals = {},
+                                     .roughness = {},
+                                     .ao = res.ao,
+                                     .contact_shadows = res.contact_shadows};
+    struct Data {
+        FrameInputs in;
+        FrameResources res;
+    };
+    graph.add_pass<Data>(
+        name,
+        [&](graph::PassBuilder& b, Data& d) {
+            declare_hdr_over_depth(b, res, in.options.msaa(), resolve);
+            LightingSet::declare(b, lighting);
+            b.read(res.frame_uniforms, graph::Access::UniformRead,
+                   graph::Shader::Vertex | graph::Shader::Fragment);
+            if (counts.valid()) declare_counts(b, counts);
+            d = {in, res};
+        },
+        [this, lighting, counts, resolve, draw](graph::PassContext& ctx, const Data& d) {
+            record(ctx, d.in, d.res, lighting, counts, resolve, draw);
+        });
+}
+
+void OverlayDrawing::record(graph::PassContext& ctx, const FrameInputs& in,
+                            const FrameResources& res, const LightingInputs& lighting,
+                            graph::ImageHandle counts, bool resolve, const Draw& draw) {
+    VkCommandBuffer cmd = ctx.cmd();
+    VkDescriptorSet count_set = VK_NULL_HANDLE;
+    if (counts.valid()) {
+        count_set = count_sets_.allocate(in.frame_number, count_layout_.handle());
+        write_count_set(services_.context.device(), count_set, ctx.view(counts));
+    }
+    const VkDescriptorSet lighting_set = lighting_.write(ctx, in.frame_number, lighting);
+    begin_hdr_over_depth(ctx, res, in.options.msaa(), resolve);
+    set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());
+    const VkPipelineLayout layout = layout_.handle();
+    bind_geometry(cmd, *in.scene);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
+                            nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &lighting_set, 0,
+                            nullptr);
+    if (count_set)
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kCountSet, 1,
+                                &count_set, 0, nullptr);
+    draw(cmd, in);
+    vk::fn().cmd_end_rendering(cmd);
+}
+
+}  // namespace ds::passes

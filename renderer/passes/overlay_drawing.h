@@ -1,0 +1,46 @@
+#pragma once
+// What the transparent and decals passes share (a pass never includes another pass): surfaces
+// drawn over forward's HDR image against the read-only scene depth, closer-or-equal, lit
+// without prepass inputs (LightingSet with the shadow map, AO and contact shadows; their own
+// normals), counting fragments into a count image when it is valid. The pipeline layout is
+// {frame, material, lighting, count}; each pass builds its own pipelines on it and records its
+// own draws.
+#include <functional>
+
+#include <vulkan/vulkan.h>
+
+#include "renderer/graph/graph.h"
+#include "renderer/passes/frame.h"
+#include "renderer/passes/lighting_set.h"
+#include "renderer/passes/pass_util.h"
+#include "renderer/vk/descriptors.h"
+#include "renderer/vk/pipeline.h"
+
+namespace ds::passes {
+
+class OverlayDrawing {
+  public:
+    // Binds the pipelines and draws; the geometry and every set are bound already.
+    using Draw = std::function<void(VkCommandBuffer cmd, const FrameInputs& in)>;
+
+    OverlayDrawing(const PassServices& services, const char* name);
+
+    VkPipelineLayout layout() const { return layout_.handle(); }
+    // The graph pass `name`. resolve: at msaa > 1 the rendering resolves res.msaa_hdr into
+    // res.hdr, which it creates (declare_hdr_over_depth).
+    void add(graph::RenderGraph& graph, const char* name, const FrameInputs& in,
+             FrameResources& res, graph::ImageHandle counts, bool resolve, Draw draw);
+
+  private:
+    void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
+                const LightingInputs& lighting, graph::ImageHandle counts, bool resolve,
+                const Draw& draw);
+
+    PassServices services_;
+    LightingSet lighting_;
+    vk::DescriptorSetLayout count_layout_;
+    vk::PipelineLayout layout_;
+    FrameDescriptorPool count_sets_;
+};
+
+}  // namespace ds::passes
