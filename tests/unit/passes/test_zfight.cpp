@@ -56,13 +56,16 @@ TEST_F(Zfight, OffAddsNoPassAndNoImage) {
     for (const std::string& n : names(f)) EXPECT_NE(n, "zfight");
 }
 
-// Overdraw's layers lie 1 m and more apart, each quad two triangles sharing a diagonal.
+// Overdraw's layers lie 1 m and more apart, each quad two triangles sharing a diagonal: no
+// fight in any format or direction.
 TEST_F(Zfight, SeparatedLayersAndSharedEdgesDoNotFight) {
-    for (const char* reverse : {"reverse_z=on", "reverse_z=off"}) {
-        const FrameResult f = render("overdraw", {"zfight=on", reverse});
-        ASSERT_TRUE(f.zfight) << reverse;
-        EXPECT_EQ(f.zfight->pixels, 0u) << reverse;
-        EXPECT_TRUE(f.zfight->pairs.empty()) << reverse;
+    for (const char* format : {"depth_format=d32f", "depth_format=d24", "depth_format=d16"}) {
+        for (const char* reverse : {"reverse_z=on", "reverse_z=off"}) {
+            const FrameResult f = render("overdraw", {"zfight=on", format, reverse});
+            ASSERT_TRUE(f.zfight) << format << " " << reverse;
+            EXPECT_EQ(f.zfight->pixels, 0u) << format << " " << reverse;
+            EXPECT_TRUE(f.zfight->pairs.empty()) << format << " " << reverse;
+        }
     }
 }
 
