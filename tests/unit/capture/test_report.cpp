@@ -44,7 +44,9 @@ TEST(Report, HasEveryFieldOfAFrameAndOnlyTheMeasuredOptionalOnes) {
     const nlohmann::json report = report_of(two_pass_frame());
     EXPECT_EQ(keys(report), (std::set<std::string>{"tool", "device", "scene", "size", "settings",
                                                    "frame", "validation_messages", "passes",
-                                                   "counters", "skipped", "msaa"}));
+                                                   "counters", "skipped", "msaa", "decals"}));
+    EXPECT_EQ(report["decals"],
+              (nlohmann::json{{"overlays", nlohmann::json::array()}, {"decals_pass", false}}));
     EXPECT_EQ(report["device"]["driver"], "driver 1");
     EXPECT_EQ(report["size"]["width"], 32);
     EXPECT_EQ(report["frame"]["gpu_ms"], 2.5);
@@ -53,6 +55,36 @@ TEST(Report, HasEveryFieldOfAFrameAndOnlyTheMeasuredOptionalOnes) {
     EXPECT_EQ(report["msaa"], (nlohmann::json{{"samples", 1}}));
     EXPECT_TRUE(report["settings"].is_object());
     EXPECT_EQ(report["settings"].size(), Settings{}.values().size());
+}
+
+// Each classified overlay names itself and its base (mesh, material, node) and its alpha mode;
+// decals_pass says whether this frame drew them in the decals pass.
+TEST(Report, DecalsNameOverlayAndBase) {
+    scene::Scene scene;
+    scene.materials.resize(2);
+    scene.materials[0].name = "plaster";
+    scene.materials[1].name = "poster";
+    scene.materials[1].alpha_mode = scene::AlphaMode::Mask;
+    scene.meshes.resize(2);
+    scene.meshes[0].name = "wall_mesh";
+    scene.meshes[1].name = "poster_mesh";
+    scene.meshes[1].material = 1;
+    scene.instances.resize(2);
+    scene.instances[0].node = "wall";
+    scene.instances[1] = {.mesh = 1, .world = glm::mat4(1.0f), .node = "poster"};
+    scene.decals = {{.instance = 1, .base = 0}};
+    FrameResult frame = two_pass_frame();
+    frame.passes.push_back({});
+    frame.passes.back().name = "decals";
+    const nlohmann::json report = frame_report(
+        {.device = {}, .scene = scene, .settings = {}, .frame = frame, .validation_messages = 0});
+    const nlohmann::json expected = {
+        {"overlays",
+         {{{"overlay", {{"mesh", "poster_mesh"}, {"material", "poster"}, {"node", "poster"}}},
+           {"base", {{"mesh", "wall_mesh"}, {"material", "plaster"}, {"node", "wall"}}},
+           {"alpha_mode", "mask"}}}},
+        {"decals_pass", true}};
+    EXPECT_EQ(report["decals"], expected);
 }
 
 TEST(Report, PassesKeepOrderStatsAndTheExactCountOnlyWhereCounted) {
