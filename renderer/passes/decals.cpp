@@ -1,5 +1,6 @@
 #include "renderer/passes/decals.h"
 
+#include <array>
 #include <vector>
 
 #include "renderer/gpu_scene/gpu_scene.h"
@@ -25,13 +26,25 @@ DecalsPass::DecalsPass(const PassServices& services)
     : services_(services),
       drawing_(services, kName),
       pipelines_([this](const Variant& v) { return compile(v); },
-                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {}
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
+                 [](const Variant& v, const ShaderStages& s) {
+                     return describe_pipeline(pipeline_name(v), s, /*alpha_to_coverage=*/false);
+                 }) {}
 
 ShaderStages DecalsPass::compile(const Variant& v) const {
     std::vector<shader::Define> defines = {{"ALPHA_MODE", std::to_string(int(v.mode))}};
     if (v.counting) defines.push_back({"COUNT_FRAGMENTS", "1"});
     return {services_.compiler.compile("transparent.vert", shader::Stage::Vertex).spirv,
             services_.compiler.compile("transparent.frag", shader::Stage::Fragment, defines).spirv};
+}
+
+// Distinct for every variant one frame can use (counting changes the fragment shader).
+std::string DecalsPass::pipeline_name(const Variant& v) {
+    std::string name = v.mode == AlphaMode::Opaque ? "decals opaque"
+                       : v.mode == AlphaMode::Mask ? "decals mask"
+                                                   : "decals blend";
+    if (v.counting) name += " counting";
+    return name;
 }
 
 vk::Pipeline DecalsPass::create(const Variant& v, const ShaderStages& s) const {
@@ -42,34 +55,43 @@ vk::Pipeline DecalsPass::create(const Variant& v, const ShaderStages& s) const {
         .depth_attachment(v.depth)
         .samples(v.samples)
         .depth_bias(towards_camera * kBiasSteps, towards_camera * kBiasSlope)
-        .build(services_.context, "decals");
+        .build(services_.context, pipeline_name(v).c_str());
 }
 
 void DecalsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
+    uses_.clear();
     if (!in.options.decal_pass) return;
-    auto pipeline = [&](AlphaMode mode) {
-        return pipelines_.get({.mode = mode,
-                               .counting = res.decal_counts.valid(),
-                               .reverse_z = in.options.reverse_z,
-                               .samples = in.options.samples,
-                               .depth = in.options.depth_format});
+    struct Step {
+        AlphaMode mode;
+        VkPipeline pipeline;
+        PipelineInfo info;
     };
-    const std::pair<AlphaMode, VkPipeline> order[] = {
-        {AlphaMode::Opaque, pipeline(AlphaMode::Opaque)},
-        {AlphaMode::Mask, pipeline(AlphaMode::Mask)},
-        {AlphaMode::Blend, pipeline(AlphaMode::Blend)}};
+    auto step = [&](AlphaMode mode) {
+        const Variant v{.mode = mode,
+                        .counting = res.decal_counts.valid(),
+                        .reverse_z = in.options.reverse_z,
+                        .samples = in.options.samples,
+                        .depth = in.options.depth_format};
+        return Step{mode, pipelines_.get(v), pipelines_.info(v)};
+    };
+    const std::array<Step, 3> order = {step(AlphaMode::Opaque), step(AlphaMode::Mask),
+                                       step(AlphaMode::Blend)};
     const VkPipelineLayout layout = drawing_.layout();
     drawing_.add(graph, kName, in, res, res.decal_counts, /*resolve=*/false,
-                 [order, layout](VkCommandBuffer cmd, const FrameInputs& in) {
-                     for (const auto& [mode, pipeline] : order) {
-                         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-                         draw_groups(cmd, *in.scene, layout, {&mode, 1}, Decals::Only);
+                 [this, order, layout](VkCommandBuffer cmd, const FrameInputs& in) {
+                     for (const Step& s : order) {
+                         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.pipeline);
+                         uses_.add(
+                             s.info,
+                             draw_groups(cmd, *in.scene, layout, {&s.mode, 1}, Decals::Only).draws);
                      }
                  });
 }
 
 void DecalsPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
-    if (!own.empty()) own[0].shaded_fragments = c.readback.u32_sum(c.res.decal_counts);
+    if (own.empty()) return;
+    own[0].shaded_fragments = c.readback.u32_sum(c.res.decal_counts);
+    own[0].pipelines = uses_.list();
 }
 
 }  // namespace ds::passes

@@ -35,7 +35,10 @@ DepthPrepass::DepthPrepass(const PassServices& services)
       count_sets_(services.context, 1, kCountPoolSizes, "prepass count sets"),
       discard_sets_(services.context, 1, kDiscardPoolSizes, "prepass discard count sets"),
       pipelines_([this](const Variant& v) { return compile(v); },
-                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
+                 [](const Variant& v, const ShaderStages& s) {
+                     return describe_pipeline(pipeline_name(v), s, v.alpha_to_coverage);
+                 }) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           discard_layout_.handle(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "depth prepass layout");
@@ -73,19 +76,31 @@ ShaderStages DepthPrepass::compile(const Variant& v) const {
     return s;
 }
 
+// Distinct for every variant one frame can use; the defines that change the fragment shader's
+// early-Z (counting, alpha to coverage, discard counters) show.
+std::string DepthPrepass::pipeline_name(const Variant& v) {
+    static constexpr const char* kNames[] = {"depth_prepass opaque", "depth_prepass mask",
+                                             "depth_prepass unsplit"};
+    std::string name = kNames[int(v.alpha)];
+    if (v.alpha_to_coverage) name += " a2c";
+    if (v.count_discards) name += " count_discards";
+    if (v.counting) name += " counting";
+    return name;
+}
+
 vk::Pipeline DepthPrepass::create(const Variant& v, const ShaderStages& s) const {
-    static constexpr const char* kNames[] = {"prepass opaque", "prepass mask", "prepass unsplit"};
     vk::GraphicsPipelineBuilder b = scene_pipeline_builder(layout_.handle(), s.vert, s.frag);
     b.color_attachment(kNormalFormat).color_attachment(kRoughnessFormat);
     if (v.surface_id) b.color_attachment(kSurfaceFormat);
     return b.depth_attachment(v.depth)
         .samples(v.samples)
         .alpha_to_coverage(v.alpha_to_coverage)
-        .build(services_.context, kNames[int(v.alpha)]);
+        .build(services_.context, pipeline_name(v).c_str());
 }
 
 void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     discards_ = {};
+    uses_.clear();
     if (!in.options.prepass) return;
     const Variant opaque{.counting = res.prepass_counts.valid(),
                          .surface_id = in.options.surface_id,
@@ -100,9 +115,12 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
     Draw draw;
     if (in.options.masked_split) {
         draw.opaque = pipelines_.get(opaque);
+        draw.opaque_info = pipelines_.info(opaque);
         draw.mask = pipelines_.get(tested);
+        draw.mask_info = pipelines_.info(tested);
     } else {
         draw.opaque = pipelines_.get(tested);
+        draw.opaque_info = pipelines_.info(tested);
     }
     // count_discards=on: two counters in a host buffer, zeroed by the host before the submit.
     const graph::BufferHandle discards =
@@ -143,6 +161,7 @@ VkDescriptorSet DepthPrepass::discard_set(graph::PassContext& ctx, const FrameIn
 void DepthPrepass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {
     if (own.empty()) return;
     own[0].shaded_fragments = c.readback.u32_sum(c.res.prepass_counts);
+    own[0].pipelines = uses_.list();
     const std::span<const std::byte> bytes = c.readback.buffer_bytes(discards_);
     if (bytes.size() < kDiscardBytes) return;
     uint32_t counts[2] = {};
@@ -261,7 +280,7 @@ void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const 
     vk::fn().cmd_end_rendering(cmd);
 }
 
-void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, Draw draw) const {
+void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw) {
     set_depth_state(cmd, /*test=*/true, /*write=*/true, in.options.closer());
     bind_geometry(cmd, *in.scene);
     const VkPipelineLayout layout = layout_.handle();
@@ -286,14 +305,14 @@ void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, Draw d
         const AlphaMode opaque[] = {AlphaMode::Opaque};
         const AlphaMode mask[] = {AlphaMode::Mask};
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
-        draw_modes(opaque);
+        uses_.add(draw.opaque_info, draw_modes(opaque).draws);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
-        draw_modes(mask);
+        uses_.add(draw.mask_info, draw_modes(mask).draws);
     } else {
         // One pipeline with discard for opaque and MASK alike.
         const AlphaMode all[] = {AlphaMode::Opaque, AlphaMode::Mask};
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
-        draw_modes(all);
+        uses_.add(draw.opaque_info, draw_modes(all).draws);
     }
 }
 

@@ -31,6 +31,7 @@
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
+#include "renderer/passes/pipeline_use.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
@@ -79,12 +80,14 @@ class DepthPrepass final : public FramePass {
     struct Draw {
         VkPipeline opaque = VK_NULL_HANDLE;  // unsplit: the one pipeline
         VkPipeline mask = VK_NULL_HANDLE;    // unsplit: null
+        PipelineInfo opaque_info, mask_info;
         VkDescriptorSet counts = VK_NULL_HANDLE;
         VkDescriptorSet discards = VK_NULL_HANDLE;
     };
 
     ShaderStages compile(const Variant& variant) const;
     vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
+    static std::string pipeline_name(const Variant& variant);
     // msaa > 1: the multisampled normals and roughness (transients) of this frame.
     struct Msaa {
         graph::ImageHandle normals, roughness, surface_id;
@@ -97,7 +100,7 @@ class DepthPrepass final : public FramePass {
                 const Msaa& msaa, Draw draw, graph::BufferHandle discards);
     void begin(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
                const Msaa& msaa) const;
-    void draw_scene(VkCommandBuffer cmd, const FrameInputs& in, Draw draw) const;
+    void draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw);
 
     PassServices services_;
     vk::DescriptorSetLayout discard_layout_;
@@ -107,6 +110,7 @@ class DepthPrepass final : public FramePass {
     FrameDescriptorPool discard_sets_;
     PipelineVariants<Variant> pipelines_;
     graph::BufferHandle discards_;  // this frame's discard counters (count_discards=on)
+    PipelineUses uses_;             // this frame's
 };
 
 }  // namespace ds::passes

@@ -24,7 +24,10 @@ ForwardPass::ForwardPass(const PassServices& services)
       count_layout_(create_count_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "forward count sets"),
       pipelines_([this](const Variant& v) { return compile(v); },
-                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
+                 [](const Variant& v, const ShaderStages& s) {
+                     return describe_pipeline(pipeline_name(v), s, v.alpha_to_coverage);
+                 }) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           lighting_.layout(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "forward layout");
@@ -36,7 +39,9 @@ void ForwardPass::rebuild_pipelines(vk::DestroyList& retired) {
 }
 
 void ForwardPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
-    if (!own.empty()) own[0].shaded_fragments = c.readback.u32_sum(c.res.forward_counts);
+    if (own.empty()) return;
+    own[0].shaded_fragments = c.readback.u32_sum(c.res.forward_counts);
+    own[0].pipelines = uses_.list();
 }
 
 ShaderStages ForwardPass::compile(const Variant& v) const {
@@ -53,17 +58,25 @@ ShaderStages ForwardPass::compile(const Variant& v) const {
     return s;
 }
 
-vk::Pipeline ForwardPass::create(const Variant& v, const ShaderStages& s) const {
-    const char* name = v.alpha_mask ? (v.prepass_inputs ? "forward prepass mask" : "forward mask")
+// Distinct for every variant one frame can use; counting and alpha to coverage change the
+// fragment shader (and so maybe its early-Z), so they show.
+std::string ForwardPass::pipeline_name(const Variant& v) {
+    std::string name = v.alpha_mask ? (v.prepass_inputs ? "forward prepass mask" : "forward mask")
                        : v.prepass_inputs ? "forward prepass"
                                           : "forward opaque";
+    if (v.alpha_to_coverage) name += " a2c";
+    if (v.counting) name += " counting";
+    return name;
+}
+
+vk::Pipeline ForwardPass::create(const Variant& v, const ShaderStages& s) const {
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
         .color_attachment(kHdrFormat)
         .depth_attachment(v.depth)
         .samples(v.samples)
         .sample_shading(v.sample_shading ? 1.0f : 0.0f)
         .alpha_to_coverage(v.alpha_to_coverage)
-        .build(services_.context, name);
+        .build(services_.context, pipeline_name(v).c_str());
 }
 
 void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
@@ -80,9 +93,14 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
     mask.alpha_to_coverage = o.alpha_to_coverage;
     Draw draw;
     draw.opaque = pipelines_.get(opaque);
+    draw.opaque_info = pipelines_.info(opaque);
     // Only EQUAL makes the alpha test redundant: with greater_or_equal the cut-out parts of a
     // MASK surface are nearer than what the prepass kept there, and would pass.
-    if (!o.prepass || !o.depth_equal) draw.mask = pipelines_.get(mask);
+    if (!o.prepass || !o.depth_equal) {
+        draw.mask = pipelines_.get(mask);
+        draw.mask_info = pipelines_.info(mask);
+    }
+    uses_.clear();
     draw.lighting = {.shadow_map = res.shadow_map,
                      .normals = o.prepass ? res.normals : graph::ImageHandle{},
                      .roughness = o.prepass ? res.roughness : graph::ImageHandle{},
@@ -162,11 +180,12 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     const AlphaMode mask[] = {AlphaMode::Mask};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
     const Decals decals = scene_groups(o.decal_pass);
-    draw_groups(cmd, *in.scene, layout, opaque, decals);
+    uses_.add(draw.opaque_info, draw_groups(cmd, *in.scene, layout, opaque, decals).draws);
     // MASK after opaque either way: with the prepass and EQUAL the same pipeline (EQUAL does
     // the alpha test's work), otherwise the discard pipeline, testing against opaque depth.
     if (draw.mask) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
-    draw_groups(cmd, *in.scene, layout, mask, decals);
+    uses_.add(draw.mask ? draw.mask_info : draw.opaque_info,
+              draw_groups(cmd, *in.scene, layout, mask, decals).draws);
     vk::fn().cmd_end_rendering(cmd);
 }
 

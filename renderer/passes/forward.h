@@ -32,6 +32,7 @@
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/lighting_set.h"
 #include "renderer/passes/pass_util.h"
+#include "renderer/passes/pipeline_use.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
@@ -76,11 +77,13 @@ class ForwardPass final : public FramePass {
     struct Draw {
         VkPipeline opaque = VK_NULL_HANDLE;  // with the prepass and EQUAL: opaque and MASK
         VkPipeline mask = VK_NULL_HANDLE;    // otherwise: MASK, with its discard
+        PipelineInfo opaque_info, mask_info;
         LightingInputs lighting;
     };
 
     ShaderStages compile(const Variant& variant) const;
     vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
+    static std::string pipeline_name(const Variant& variant);
     void declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res,
                  const LightingInputs& lighting) const;
     void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
@@ -94,6 +97,7 @@ class ForwardPass final : public FramePass {
     vk::PipelineLayout layout_;
     FrameDescriptorPool count_sets_;
     PipelineVariants<Variant> pipelines_;
+    PipelineUses uses_;  // this frame's
 };
 
 }  // namespace ds::passes

@@ -16,6 +16,15 @@
 
 namespace ds {
 
+// A graphics pipeline a pass drew with this frame: its debug name, whether the depth test can
+// run before its fragment shader ("guaranteed" or "lost: <reasons>", shader::early_z_verdict,
+// decided once per pipeline variant from its fragment SPIR-V and state) and its draws.
+struct PipelineReport {
+    std::string name;
+    std::string early_z;
+    uint32_t draws = 0;
+};
+
 // One pass of a frame, as measured by the GPU.
 struct PassResult {
     std::string name;
@@ -35,6 +44,8 @@ struct PassResult {
     std::optional<uint64_t> shaded_fragments;
     // The graph resources the pass declared, by name, in declaration order.
     std::vector<std::string> reads, writes;
+    // Geometry passes: the pipelines it bound, in first-bind order (empty for the others).
+    std::vector<PipelineReport> pipelines;
 };
 
 // One resource of the frame's graph (the inspector's Resources panel).

@@ -20,7 +20,10 @@ using scene::AlphaMode;
 ShadowPass::ShadowPass(const PassServices& services)
     : services_(services),
       pipelines_([this](const Variant& v) { return compile(v); },
-                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
+                 [](const Variant& v, const ShaderStages& s) {
+                     return describe_pipeline(pipeline_name(v), s, /*alpha_to_coverage=*/false);
+                 }) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "shadow layout");
     pipelines_.get({.mask = false});  // shader errors surface at start-up, not in the first frame
@@ -37,10 +40,18 @@ ShaderStages ShadowPass::compile(const Variant& v) const {
     return s;
 }
 
+const char* ShadowPass::pipeline_name(const Variant& v) {
+    return v.mask ? "shadow mask" : "shadow opaque";
+}
+
+void ShadowPass::collect(const FrameCollect&, std::span<PassResult> own, FrameResult&) {
+    if (!own.empty()) own[0].pipelines = uses_.list();
+}
+
 vk::Pipeline ShadowPass::create(const Variant& v, const ShaderStages& s) const {
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag, VertexInputs::PositionUv)
         .depth_attachment(services_.preferred_depth_format)
-        .build(services_.context, v.mask ? "shadow mask" : "shadow opaque");
+        .build(services_.context, pipeline_name(v));
 }
 
 std::optional<std::string> ShadowPass::skipped(const FrameInputs& in) const {
@@ -49,6 +60,7 @@ std::optional<std::string> ShadowPass::skipped(const FrameInputs& in) const {
 }
 
 void ShadowPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
+    uses_.clear();
     if (!in.options.shadows) return;
     const VkPipeline opaque = pipelines_.get({.mask = false});
     const VkPipeline mask = pipelines_.get({.mask = true});
@@ -74,7 +86,7 @@ void ShadowPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
 }
 
 void ShadowPass::record(VkCommandBuffer cmd, VkImageView map, const FrameInputs& in,
-                        VkPipeline opaque, VkPipeline mask) const {
+                        VkPipeline opaque, VkPipeline mask) {
     // Stored: forward and transparent sample it after this pass.
     const VkRenderingAttachmentInfo depth =
         depth_attachment(map, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
@@ -89,9 +101,13 @@ void ShadowPass::record(VkCommandBuffer cmd, VkImageView map, const FrameInputs&
     const AlphaMode mask_modes[] = {AlphaMode::Mask};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, opaque);
     const Decals decals = scene_groups(in.options.decal_pass);
-    draw_groups(cmd, *in.scene, layout_.handle(), opaque_modes, decals, VK_CULL_MODE_NONE);
+    uses_.add(pipelines_.info({.mask = false}),
+              draw_groups(cmd, *in.scene, layout_.handle(), opaque_modes, decals, VK_CULL_MODE_NONE)
+                  .draws);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mask);
-    draw_groups(cmd, *in.scene, layout_.handle(), mask_modes, decals, VK_CULL_MODE_NONE);
+    uses_.add(
+        pipelines_.info({.mask = true}),
+        draw_groups(cmd, *in.scene, layout_.handle(), mask_modes, decals, VK_CULL_MODE_NONE).draws);
     vk::fn().cmd_end_rendering(cmd);
 }
 

@@ -14,6 +14,7 @@
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
+#include "renderer/passes/pipeline_use.h"
 #include "renderer/scene/scene.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
@@ -34,6 +35,8 @@ class ShadowPass final : public FramePass {
     std::optional<std::string> skipped(const FrameInputs& in) const override;
     // Creates res.shadow_map and draws into it.
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
+    // Its two pipelines and their draws.
+    void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
 
     // World -> shadow clip space: looking along -to_sun, x/y/depth spanning the bounds
     // (a little padded), depth 0 nearest the sun.
@@ -47,12 +50,14 @@ class ShadowPass final : public FramePass {
     };
     ShaderStages compile(const Variant& variant) const;
     vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
+    static const char* pipeline_name(const Variant& variant);
     void record(VkCommandBuffer cmd, VkImageView map, const FrameInputs& in, VkPipeline opaque,
-                VkPipeline mask) const;
+                VkPipeline mask);
 
     PassServices services_;
     vk::PipelineLayout layout_;
     PipelineVariants<Variant> pipelines_;
+    PipelineUses uses_;  // this frame's
 };
 
 }  // namespace ds::passes

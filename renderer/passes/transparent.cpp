@@ -17,7 +17,10 @@ TransparentPass::TransparentPass(const PassServices& services)
     : services_(services),
       drawing_(services, kName),
       pipelines_([this](const Variant& v) { return compile(v); },
-                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
+                 [](const Variant& v, const ShaderStages& s) {
+                     return describe_pipeline(pipeline_name(v), s, /*alpha_to_coverage=*/false);
+                 }) {
     pipelines_.get({.depth = services.preferred_depth_format});
 }
 
@@ -32,31 +35,43 @@ ShaderStages TransparentPass::compile(const Variant& v) const {
             services_.compiler.compile("transparent.frag", shader::Stage::Fragment, defines).spirv};
 }
 
+// Distinct for every variant one frame can use (counting changes the fragment shader).
+std::string TransparentPass::pipeline_name(const Variant& v) {
+    std::string name = "transparent";
+    if (v.counting) name += " counting";
+    return name;
+}
+
 vk::Pipeline TransparentPass::create(const Variant& v, const ShaderStages& s) const {
     return scene_pipeline_builder(drawing_.layout(), s.vert, s.frag)
         .color_attachment(kHdrFormat, vk::Blend::Alpha)
         .depth_attachment(v.depth)
         .samples(v.samples)
-        .build(services_.context, "transparent");
+        .build(services_.context, pipeline_name(v).c_str());
 }
 
 void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
-    const VkPipeline pipeline = pipelines_.get({.counting = res.transparent_counts.valid(),
-                                                .samples = in.options.samples,
-                                                .depth = in.options.depth_format});
+    const Variant v{.counting = res.transparent_counts.valid(),
+                    .samples = in.options.samples,
+                    .depth = in.options.depth_format};
+    const VkPipeline pipeline = pipelines_.get(v);
+    const PipelineInfo info = pipelines_.info(v);
     const VkPipelineLayout layout = drawing_.layout();
+    uses_.clear();
     // msaa > 1: the samples are stored too, for the edge count (MsaaProbe) after the graph.
     drawing_.add(graph, kName, in, res, res.transparent_counts, /*resolve=*/true,
-                 [pipeline, layout](VkCommandBuffer cmd, const FrameInputs& in) {
+                 [this, pipeline, info, layout](VkCommandBuffer cmd, const FrameInputs& in) {
                      const std::vector<InstanceDraw> draws = sort_back_to_front(
                          *in.scene, in.camera_position, scene_groups(in.options.decal_pass));
                      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-                     draw_sorted(cmd, *in.scene, layout, draws);
+                     uses_.add(info, draw_sorted(cmd, *in.scene, layout, draws).draws);
                  });
 }
 
 void TransparentPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
-    if (!own.empty()) own[0].shaded_fragments = c.readback.u32_sum(c.res.transparent_counts);
+    if (own.empty()) return;
+    own[0].shaded_fragments = c.readback.u32_sum(c.res.transparent_counts);
+    own[0].pipelines = uses_.list();
 }
 
 }  // namespace ds::passes

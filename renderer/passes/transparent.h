@@ -18,6 +18,7 @@
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/overlay_drawing.h"
 #include "renderer/passes/pass_util.h"
+#include "renderer/passes/pipeline_use.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
 
@@ -48,10 +49,12 @@ class TransparentPass final : public FramePass {
 
     ShaderStages compile(const Variant& variant) const;
     vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
+    static std::string pipeline_name(const Variant& variant);
 
     PassServices services_;
     OverlayDrawing drawing_;
     PipelineVariants<Variant> pipelines_;
+    PipelineUses uses_;  // this frame's
 };
 
 }  // namespace ds::passes

@@ -25,6 +25,8 @@ const VkDescriptorPoolSize kPoolSizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SA
 constexpr VkDeviceSize kHeaderBytes = 16;  // count + padding (std430 uvec4 alignment)
 constexpr uint32_t kRecordsPerPixel = 2;   // competitor records the buffer holds, on average
 
+constexpr const char* kPipelineName = "zfight";
+
 struct Push {
     uint32_t max_steps, depth_bits, width, capacity;
 };
@@ -72,7 +74,10 @@ ZfightPass::ZfightPass(const PassServices& services)
       nearest_(vk::nearest_clamp_sampler(services.context, "zfight nearest")),
       sets_(services.context, 1, kPoolSizes, "zfight sets"),
       pipelines_([this](const Variant& v) { return compile(v); },
-                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }),
+                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
+                 [](const Variant&, const ShaderStages& s) {
+                     return describe_pipeline(kPipelineName, s, /*alpha_to_coverage=*/false);
+                 }),
       bound_(services) {
     const VkShaderStageFlags frag = VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorSetLayoutBinding bindings[] = {
@@ -97,7 +102,7 @@ ShaderStages ZfightPass::compile(const Variant&) const {
 vk::Pipeline ZfightPass::create(const Variant& v, const ShaderStages& s) const {
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
         .depth_attachment(v.depth)
-        .build(services_.context, "zfight");
+        .build(services_.context, kPipelineName);
 }
 
 std::optional<std::string> ZfightPass::skipped(const FrameInputs& in) const {
@@ -108,6 +113,7 @@ std::optional<std::string> ZfightPass::skipped(const FrameInputs& in) const {
 
 void ZfightPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     records_ = {};
+    uses_.clear();
     if (!in.options.zfight) return;
     const VkExtent2D extent = graph.resources()[res.depth.index].extent;
     capacity_ = extent.width * extent.height * kRecordsPerPixel;
@@ -148,18 +154,21 @@ void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bo
     set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());
     bind_geometry(cmd, *in.scene);
     const VkPipelineLayout layout = layout_.handle();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                      pipelines_.get({.depth = in.options.depth_format}));
+    const Variant variant{.depth = in.options.depth_format};
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get(variant));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
                             nullptr);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &set, 0, nullptr);
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push, &push);
     const scene::AlphaMode modes[] = {scene::AlphaMode::Opaque, scene::AlphaMode::Mask};
-    draw_groups(cmd, *in.scene, layout, modes, scene_groups(in.options.decal_pass));
+    uses_.add(
+        pipelines_.info(variant),
+        draw_groups(cmd, *in.scene, layout, modes, scene_groups(in.options.decal_pass)).draws);
     vk::fn().cmd_end_rendering(cmd);
 }
 
-void ZfightPass::collect(const FrameCollect& c, std::span<PassResult>, FrameResult& frame) {
+void ZfightPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {
+    if (!own.empty()) own.back().pipelines = uses_.list();  // after zfight_bound's
     const std::span<const std::byte> bytes = c.readback.buffer_bytes(records_);
     if (bytes.size() < kHeaderBytes) return;
     uint32_t appended = 0;

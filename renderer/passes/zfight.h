@@ -16,6 +16,7 @@
 
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
+#include "renderer/passes/pipeline_use.h"
 #include "renderer/passes/zfight_bound.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/image.h"
@@ -76,6 +77,7 @@ class ZfightPass final : public FramePass {
     PipelineVariants<Variant> pipelines_;
     ZfightBound bound_;
     graph::BufferHandle records_;  // this frame's, if it ran
+    PipelineUses uses_;            // this frame's
     uint32_t capacity_ = 0;
 };
 

@@ -99,6 +99,20 @@ TEST(Report, PassesKeepOrderStatsAndTheExactCountOnlyWhereCounted) {
     EXPECT_EQ(passes[1]["shaded_fragments"], 512);
 }
 
+// A geometry pass lists its pipelines (name, early-Z verdict, draws) in bind order; a pass
+// that bound none has no "pipelines" key.
+TEST(Report, PassesListTheirPipelinesOnlyWhereTheyDrew) {
+    FrameResult frame = two_pass_frame();
+    frame.passes[0].pipelines = {{"depth_prepass opaque", "guaranteed", 12},
+                                 {"depth_prepass mask", "lost: discard", 3}};
+    const nlohmann::json passes = report_of(frame)["passes"];
+    EXPECT_EQ(passes[0]["pipelines"],
+              (nlohmann::json{
+                  {{"name", "depth_prepass opaque"}, {"early_z", "guaranteed"}, {"draws", 12}},
+                  {{"name", "depth_prepass mask"}, {"early_z", "lost: discard"}, {"draws", 3}}}));
+    EXPECT_FALSE(passes[1].contains("pipelines"));
+}
+
 TEST(Report, OptionalCountsAppearWhenMeasured) {
     FrameResult frame = two_pass_frame();
     frame.covered_pixels = 100;
