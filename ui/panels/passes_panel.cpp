@@ -1,7 +1,8 @@
 // Passes: the frame's passes in execution order with their GPU cost (this frame and the
 // median of the last 120), shader invocations and a bar each, clear and read-back passes
-// folded into one row; the selected pass's reads and writes (click one to view it); the
-// frame-time history.
+// folded into one row; the selected pass's reads and writes (click one to view it) and its
+// pipelines with their early-Z verdicts (also a tooltip on the row; lost ones in a warning
+// colour); the frame-time history.
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -32,6 +33,24 @@ void declarations(PanelIo& io, const PassResult& pass) {
     list("writes", pass.writes);
 }
 
+const ImVec4 kLostColour(1.0f, 0.6f, 0.3f, 1.0f);  // a pipeline that loses early-Z
+
+bool lost(const PipelineReport& r) {
+    return r.early_z != "guaranteed";
+}
+
+// One line per pipeline the pass drew with: name, draws, early-Z verdict.
+void pipelines(const PassResult& pass) {
+    for (const PipelineReport& r : pass.pipelines) {
+        ImGui::Text("%s, %u draws:", r.name.c_str(), r.draws);
+        ImGui::SameLine();
+        if (lost(r))
+            ImGui::TextColored(kLostColour, "early-Z %s", r.early_z.c_str());
+        else
+            ImGui::TextDisabled("early-Z %s", r.early_z.c_str());
+    }
+}
+
 void pass_row(PanelIo& io, const PassResult& p, double worst) {
     const Inspector& in = io.inspector;
     ImGui::TableNextRow();
@@ -40,8 +59,17 @@ void pass_row(PanelIo& io, const PassResult& p, double worst) {
     std::string label = p.name;
     if (p.role != graph::PassRole::Frame)
         label += std::string(" (") + graph::pass_role_name(p.role) + ")";
+    // A pass with a pipeline that loses early-Z says so in its row.
+    const bool any_lost = std::any_of(p.pipelines.begin(), p.pipelines.end(), lost);
+    if (any_lost) ImGui::PushStyleColor(ImGuiCol_Text, kLostColour);
     if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns))
         io.actions.push_back(SelectPass{selected ? std::string() : p.name});
+    if (any_lost) ImGui::PopStyleColor();
+    if (!p.pipelines.empty() && ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        pipelines(p);
+        ImGui::EndTooltip();
+    }
     ImGui::TableNextColumn();
     ImGui::Text("%.2f", p.gpu_ms);
     ImGui::TableNextColumn();
@@ -101,7 +129,7 @@ void pass_table(PanelIo& io, const FrameResult& frame) {
     ImGui::EndTable();
 }
 
-// The selected pass: its name, reads and writes, and shaded fragments where counted.
+// The selected pass: its name, reads and writes, shaded fragments where counted, pipelines.
 void selected_pass(PanelIo& io, const FrameResult& frame) {
     for (const PassResult& p : frame.passes) {
         if (p.name != io.inspector.selected_pass()) continue;
@@ -111,6 +139,7 @@ void selected_pass(PanelIo& io, const FrameResult& frame) {
         if (p.shaded_fragments)
             ImGui::Text("shaded fragments %llu",
                         static_cast<unsigned long long>(*p.shaded_fragments));
+        pipelines(p);
     }
 }
 
