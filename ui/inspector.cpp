@@ -71,6 +71,7 @@ double PassHistory::median(const std::string& pass) const {
 
 Inspector::Inspector(Renderer& renderer, Settings settings, scene::Scene scene, Options options)
     : renderer_(renderer),
+      device_(device_info(renderer)),
       settings_(std::move(settings)),
       last_good_(settings_),
       options_(options),

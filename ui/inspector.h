@@ -18,6 +18,7 @@
 #include <variant>
 #include <vector>
 
+#include "renderer/device_info.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
@@ -112,6 +113,7 @@ class Inspector {
 
     // State, for the panels and tests.
     Renderer& renderer() { return renderer_; }
+    const DeviceInfo& device() const { return device_; }
     const Settings& settings() const { return settings_; }
     const scene::Scene& scene() const { return scene_; }
     const SceneSummary& scene_summary() const { return summary_; }
@@ -149,6 +151,7 @@ class Inspector {
     void render();
 
     Renderer& renderer_;
+    DeviceInfo device_;  // what the panels say of the device's counters
     Settings settings_;
     Settings last_good_;  // the settings of the last frame that rendered
     scene::Scene scene_;

@@ -33,12 +33,11 @@ nlohmann::json scene_summary(const scene::Scene& s) {
     };
 }
 
-nlohmann::json counters_note() {
+nlohmann::json counters_note(const DeviceInfo& device) {
     return {
-        {"stats",
-         "the device's pipeline statistics; lavapipe counts fragment shader invocations once "
-         "per rasterized 4x4 block, before the depth test, so they cannot show what a prepass "
-         "saves"},
+        {"stats", "the device's pipeline statistics; fragment_shader_invocations: " +
+                      (device.fragment_statistic.empty() ? std::string("not described")
+                                                         : device.fragment_statistic)},
         {"shaded_fragments",
          "exact: fragments that ran the fragment shader after the depth and alpha tests, "
          "counted per pixel by the shaders (count_fragments=on)"},
@@ -173,7 +172,7 @@ nlohmann::json frame_report(const ReportInput& in) {
         {"validation_messages", in.validation_messages},
         {"passes",
          passes_json(f.passes, [&](size_t i) { return frame_pass_measurements(f.passes[i]); })},
-        {"counters", counters_note()},
+        {"counters", counters_note(in.device)},
         {"skipped", f.skipped},
         {"msaa", msaa_json(f.msaa)},
     };

@@ -36,8 +36,9 @@ using PassMeasurements = std::function<nlohmann::json(size_t index)>;
 nlohmann::json passes_json(const std::vector<PassResult>& passes, const PassMeasurements& measured);
 
 nlohmann::json scene_summary(const scene::Scene& scene);
-// What the device's statistics and the exact counters mean (the report keeps both numbers).
-nlohmann::json counters_note();
+// What the device's statistics (on `device`) and the exact counters mean (the report keeps
+// both numbers).
+nlohmann::json counters_note(const DeviceInfo& device);
 
 // Writes pretty JSON; throws ds::Error when the file cannot be written.
 void write_json(const std::filesystem::path& path, const nlohmann::json& json);

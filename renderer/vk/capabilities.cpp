@@ -151,6 +151,7 @@ void probe_properties(VkPhysicalDevice device, DeviceReport& r) {
     vkGetPhysicalDeviceProperties2(device, &p2);
     r.driver_name = driver.driverName;
     r.driver_info = driver.driverInfo;
+    r.driver_id = driver.driverID;
     r.depth_resolve_modes = resolve.supportedDepthResolveModes;
     r.stencil_resolve_modes = resolve.supportedStencilResolveModes;
 }

@@ -48,6 +48,7 @@ struct DeviceReport {
     uint32_t device_id = 0;
     std::string driver_name;
     std::string driver_info;
+    VkDriverId driver_id = VkDriverId(0);  // 0: not reported (Vulkan 1.1 devices)
     std::vector<VkFormat> depth_formats;          // supported candidates, preference order
     VkFormat depth_format = VK_FORMAT_UNDEFINED;  // the one the renderer uses
     VkSampleCountFlags color_sample_counts = 0;

@@ -96,6 +96,23 @@ TEST(Cli, DeviceByIndexAndNameAndAClearErrorOtherwise) {
 // material_alpha_cutoff: bad syntax fails while parsing settings, a name that is no MASK
 // material of the scene when rendering; both are one usage-error line and leave no capture
 // folder. A good value reaches report.json in canonical form, and `settings` lists the knob.
+// report.json labels the device's fragment-shader statistic with what it counts there; on
+// lavapipe: once per rasterized 4x4 block, before the depth test.
+TEST(Cli, ReportSaysWhatTheFragmentStatisticMeansOnThisDevice) {
+    const auto dir = ds::test::fresh_dir("counters-note");
+    auto r =
+        run_depthscope("capture --scene overdraw --size 64x36 --out " + (dir / "out").string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto json = nlohmann::json::parse(ds::test::read_file(dir / "out" / "report.json"));
+    const std::string stats = json["counters"]["stats"];
+    if (json["device"]["name"].get<std::string>().find("llvmpipe") != std::string::npos) {
+        EXPECT_NE(stats.find("once per rasterized 4x4 block, before the depth test"),
+                  std::string::npos)
+            << stats;
+    }
+    EXPECT_EQ(stats.find("not described"), std::string::npos) << stats;
+}
+
 TEST(Cli, MaterialAlphaCutoffErrorsAndReport) {
     auto dir = ds::test::fresh_dir("material-alpha-cutoff");
     const struct {

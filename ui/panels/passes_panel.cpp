@@ -51,7 +51,7 @@ void pipelines(const PassResult& pass) {
     }
 }
 
-void pass_row(PanelIo& io, const PassResult& p, double worst) {
+void pass_row(PanelIo& io, const PassResult& p, double worst, bool counted) {
     const Inspector& in = io.inspector;
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
@@ -59,8 +59,11 @@ void pass_row(PanelIo& io, const PassResult& p, double worst) {
     std::string label = p.name;
     if (p.role != graph::PassRole::Frame)
         label += std::string(" (") + graph::pass_role_name(p.role) + ")";
-    // A pass with a pipeline that loses early-Z says so in its row.
-    const bool any_lost = std::any_of(p.pipelines.begin(), p.pipelines.end(), lost);
+    // A pass that drew with a pipeline that loses early-Z says so in its row (one bound with
+    // nothing to draw, such as the MASK pipeline of a scene without MASK, does not count).
+    const bool any_lost =
+        std::any_of(p.pipelines.begin(), p.pipelines.end(),
+                    [](const PipelineReport& r) { return lost(r) && r.draws > 0; });
     if (any_lost) ImGui::PushStyleColor(ImGuiCol_Text, kLostColour);
     if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns))
         io.actions.push_back(SelectPass{selected ? std::string() : p.name});
@@ -78,9 +81,47 @@ void pass_row(PanelIo& io, const PassResult& p, double worst) {
     ImGui::Text("%llu", static_cast<unsigned long long>(p.vertex_shader_invocations));
     ImGui::TableNextColumn();
     ImGui::Text("%llu", static_cast<unsigned long long>(p.fragment_shader_invocations));
+    if (counted) {
+        ImGui::TableNextColumn();
+        if (p.shaded_fragments)
+            ImGui::Text("%llu", static_cast<unsigned long long>(*p.shaded_fragments));
+    }
     ImGui::TableNextColumn();
     const float fraction = worst > 0 ? float(p.gpu_ms / worst) : 0.0f;
     ImGui::ProgressBar(fraction, ImVec2(-1, ImGui::GetTextLineHeight()), "");
+}
+
+// The column headers, each with what its number means on this device as a tooltip.
+void header_row(const DeviceInfo& device, bool counted) {
+    struct Column {
+        const char* name;
+        std::string meaning;
+    };
+    std::vector<Column> columns = {
+        {"pass", "graph pass, in execution order; orange: a pipeline without early-Z"},
+        {"ms", "GPU time this frame, from timestamps around the pass"},
+        {"median", "GPU time, median of the last 120 frames"},
+        {"VS inv", "vertex-shader invocations (the device's pipeline statistic)"},
+        {"FS inv", "fragment-shader invocations (the device's pipeline statistic): " +
+                       device.fragment_statistic}};
+    if (counted)
+        columns.push_back({"shaded",
+                           "exact: fragments that ran the fragment shader after the "
+                           "depth and alpha tests (count_fragments=on)"});
+    for (const Column& c : columns) ImGui::TableSetupColumn(c.name);
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+    for (size_t i = 0; i < columns.size(); ++i) {
+        ImGui::TableSetColumnIndex(int(i));
+        ImGui::TableHeader(columns[i].name);
+        if (ImGui::IsItemHovered()) {
+            ImGui::BeginTooltip();
+            ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+            ImGui::TextUnformatted(columns[i].meaning.c_str());
+            ImGui::PopTextWrapPos();
+            ImGui::EndTooltip();
+        }
+    }
 }
 
 // The folded group of clear and read-back passes; true when it is open (then TreePop()).
@@ -101,21 +142,18 @@ void pass_table(PanelIo& io, const FrameResult& frame) {
     double worst = 0.0;
     for (const PassResult& p : frame.passes) worst = std::max(worst, p.gpu_ms);
 
+    // count_fragments=on: the exact count beside the device's statistic.
+    const bool counted = std::any_of(frame.passes.begin(), frame.passes.end(),
+                                     [](const PassResult& p) { return p.shaded_fragments; });
     const ImGuiTableFlags flags =
         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("passes", 6, flags)) return;
-    ImGui::TableSetupColumn("pass");
-    ImGui::TableSetupColumn("ms");
-    ImGui::TableSetupColumn("median");
-    ImGui::TableSetupColumn("VS inv");
-    ImGui::TableSetupColumn("FS inv");
-    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
-    ImGui::TableHeadersRow();
+    if (!ImGui::BeginTable("passes", counted ? 7 : 6, flags)) return;
+    header_row(io.inspector.device(), counted);
     double support_ms = 0.0;
     int support = 0;
     for (const PassResult& p : frame.passes) {
         if (p.role == graph::PassRole::Frame) {
-            pass_row(io, p, worst);
+            pass_row(io, p, worst, counted);
         } else {
             support_ms += p.gpu_ms;
             ++support;
@@ -123,7 +161,7 @@ void pass_table(PanelIo& io, const FrameResult& frame) {
     }
     if (support > 0 && support_row(support, support_ms)) {
         for (const PassResult& p : frame.passes)
-            if (p.role != graph::PassRole::Frame) pass_row(io, p, worst);
+            if (p.role != graph::PassRole::Frame) pass_row(io, p, worst, counted);
         ImGui::TreePop();
     }
     ImGui::EndTable();

@@ -33,7 +33,10 @@ FrameResult two_pass_frame() {
 nlohmann::json report_of(const FrameResult& frame, const Settings& settings = {}) {
     scene::Scene scene;
     scene.name = "made-up";
-    return frame_report({.device = {.name = "gpu", .driver = "driver 1", .api_version = "1.3.0"},
+    return frame_report({.device = {.name = "gpu",
+                                    .driver = "driver 1",
+                                    .api_version = "1.3.0",
+                                    .fragment_statistic = "counts every other fragment"},
                          .scene = scene,
                          .settings = settings,
                          .frame = frame,
@@ -48,6 +51,9 @@ TEST(Report, HasEveryFieldOfAFrameAndOnlyTheMeasuredOptionalOnes) {
     EXPECT_EQ(report["decals"],
               (nlohmann::json{{"overlays", nlohmann::json::array()}, {"decals_pass", false}}));
     EXPECT_EQ(report["device"]["driver"], "driver 1");
+    // The statistic is labelled with what it means on this device.
+    EXPECT_NE(report["counters"]["stats"].get<std::string>().find("counts every other fragment"),
+              std::string::npos);
     EXPECT_EQ(report["size"]["width"], 32);
     EXPECT_EQ(report["frame"]["gpu_ms"], 2.5);
     EXPECT_EQ(report["validation_messages"], 2);
