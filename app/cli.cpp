@@ -60,6 +60,9 @@ CLI::App* add_capture_command(CLI::App& app, Options& o, std::string& size_text)
                         "with --ui: the graph resource the viewer shows (default final)");
     capture->add_flag("--dump-graph", o.dump_graph,
                       "print the compiled render graph: passes, resources, barriers");
+    capture->add_flag("--advise", o.advise,
+                      "also render the frame without (or with) the prepass and write the "
+                      "prepass advisor's `advice` into report.json");
     return capture;
 }
 
@@ -88,6 +91,10 @@ CLI::App* add_bench_command(CLI::App& app, Options& o, std::string& size_text) {
     bench->add_option("--json", o.out, "also write the results as JSON to FILE");
     bench->add_flag("--ui", o.ui,
                     "draw the inspector offscreen every frame (its cost is measured)");
+    bench->add_flag("--advise", o.advise,
+                    "the prepass advisor: each combination with prepass=on and off (counted "
+                    "once, timed --frames times); overdraw, costs, predicted and measured "
+                    "change, verdict");
     return bench;
 }
 

@@ -34,6 +34,7 @@ struct Options {
     int bench_frames = 20;
     int bench_warmup = 5;
     std::vector<std::string> matrix;  // "name=v1,v2"
+    bool advise = false;  // bench / capture --advise: the prepass advisor (prepass on and off)
 };
 
 // Parses argv. Returns the exit code to use right away (help printed: 0), or nullopt to run.

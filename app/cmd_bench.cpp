@@ -11,7 +11,9 @@
 #include "app/bench.h"
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "renderer/capture/advice.h"
 #include "renderer/capture/report.h"
+#include "renderer/common/error.h"
 #include "renderer/device_info.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
@@ -187,14 +189,61 @@ void bench_combination(const Options& o, Renderer& renderer, const scene::Scene&
     if (ui) print_ui_cost(runs[runs.size() - 2], runs.back());
 }
 
-void write_results(const Options& o, const scene::Scene& scene, const Settings& base,
-                   const std::vector<RunResult>& runs) {
+void write_results(const Options& o, const scene::Scene& scene, const nlohmann::json& runs) {
     capture::write_json_atomically(o.out, {{"scene", scene.name},
                                            {"size", {o.size.width, o.size.height}},
                                            {"frames", o.bench_frames},
                                            {"warmup", o.bench_warmup},
-                                           {"runs", runs_json(runs, base)}});
+                                           {"runs", runs}});
     std::printf("\nbench: wrote %s\n", o.out.c_str());
+}
+
+// --advise: the advisor owns the prepass knob, so a matrix over it (or --ui) is refused.
+void check_advise(const Options& o, const std::vector<std::vector<Assignment>>& combinations) {
+    if (!o.advise) return;
+    if (o.ui) throw UsageError("--advise and --ui: one at a time");
+    for (const auto& combination : combinations)
+        for (const auto& [name, value] : combination)
+            if (name == "prepass")
+                throw UsageError(
+                    "--advise renders prepass=on and off itself: drop --matrix prepass=...");
+}
+
+void print_advice(const capture::Advice& a) {
+    const capture::AdviceSide& on = a.input.with_prepass;
+    const capture::AdviceSide& off = a.input.without;
+    std::printf("  %-26s %12s %12s\n", "", "with prepass", "without");
+    std::printf("  %-26s %12llu %12llu   (exact, count_fragments=on)\n", "forward shaded",
+                (unsigned long long)on.forward_shaded, (unsigned long long)off.forward_shaded);
+    std::printf("  %-26s %12.3f %12.3f   (GPU ms, medians)\n", "depth_prepass + resolve",
+                on.depth_ms, off.depth_ms);
+    std::printf("  %-26s %12.3f %12.3f\n", "forward", on.forward_ms, off.forward_ms);
+    std::printf("  %-26s %12.3f %12.3f\n", "frame", on.frame_ms, off.frame_ms);
+    std::printf("  %-26s %12.3f %12.3f\n", "forward ns per fragment", a.ns_per_fragment_with,
+                a.ns_per_fragment_without);
+    std::printf(
+        "  overdraw %.3f (%llu pixels covered); keeping the prepass: predicted %+.3f ms, "
+        "measured %+.3f ms (whole frame %+.3f ms, with the passes only the prepass feeds)\n",
+        a.overdraw, (unsigned long long)off.covered_pixels, a.predicted_change_ms,
+        a.measured_change_ms, a.frame_change_ms);
+    std::printf("verdict: %s\n", capture::verdict_line(a).c_str());
+}
+
+// One combination through the advisor: both configurations, counted once, timed alternately.
+nlohmann::json advise_combination(const Options& o, Renderer& renderer, const scene::Scene& scene,
+                                  const Settings& base, const std::vector<Assignment>& combination,
+                                  size_t index) {
+    const Settings settings = combined(base, combination);
+    std::string label;
+    for (const auto& [name, value] : combination) label += " " + name + "=" + value;
+    std::printf("\nadvice %zu:%s\n", index + 1, label.empty() ? " (defaults)" : label.c_str());
+    const capture::RenderFrame render = [&](const Settings& s) {
+        return renderer.render(scene.camera, s, o.size.width, o.size.height, ReadBack::No);
+    };
+    const capture::Advice advice = capture::advise(capture::measure_advice(
+        settings, render, {.frames = o.bench_frames, .warmup = o.bench_warmup}));
+    print_advice(advice);
+    return {{"settings", settings.values()}, {"advice", capture::advice_json(advice)}};
 }
 
 }  // namespace
@@ -205,6 +254,7 @@ int run_bench(const Options& o) {
     const auto combinations = expand_matrix(o.matrix);
     // Check every combination before the first frame: a typo should not cost a long run.
     for (const auto& combination : combinations) combined(base, combination);  // throws
+    check_advise(o, combinations);
     const scene::Scene scene = scene::load_scene(o.scene, base);
     RendererOptions renderer_options;
     renderer_options.validate = o.validate;
@@ -219,10 +269,17 @@ int run_bench(const Options& o) {
                                               VkExtent2D{o.size.width, o.size.height},
                                               VkExtent2D{o.size.width, o.size.height});
 
-    std::vector<RunResult> runs;
-    for (const auto& combination : combinations)
-        bench_combination(o, renderer, scene, ui.get(), base, combination, runs);
-    if (!o.out.empty()) write_results(o, scene, base, runs);
+    nlohmann::json runs_out = nlohmann::json::array();
+    if (o.advise) {
+        for (size_t i = 0; i < combinations.size(); ++i)
+            runs_out.push_back(advise_combination(o, renderer, scene, base, combinations[i], i));
+    } else {
+        std::vector<RunResult> runs;
+        for (const auto& combination : combinations)
+            bench_combination(o, renderer, scene, ui.get(), base, combination, runs);
+        runs_out = runs_json(runs, base);
+    }
+    if (!o.out.empty()) write_results(o, scene, runs_out);
     // No count line: bench never printed one (the messages themselves came as they were seen).
     return validation_exit_code(renderer, /*print_count=*/false);
 }

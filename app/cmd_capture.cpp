@@ -1,5 +1,6 @@
 // capture and export-scene: load a scene, render or write it, and leave complete output only.
 #include <cstdio>
+#include <optional>
 
 #include <renderdoc_app.h>
 
@@ -98,14 +99,29 @@ FrameResult capture_plain_frame(const Options& o, Renderer& renderer, const Sett
     return frame;
 }
 
+// --advise: the prepass advisor over the same camera, size and settings (prepass on and off,
+// counted once each, timed kAdviceFrames times), rendered after the written frame.
+capture::Advice advise(const Options& o, Renderer& renderer, const Settings& settings,
+                       const scene::Scene& scene) {
+    const capture::RenderFrame render = [&](const Settings& s) {
+        return renderer.render(scene.camera, s, o.size.width, o.size.height, ReadBack::No);
+    };
+    const capture::Advice advice =
+        capture::advise(capture::measure_advice(settings, render, {.frames = 5, .warmup = 1}));
+    std::printf("depthscope: advice: %s\n", capture::verdict_line(advice).c_str());
+    return advice;
+}
+
 void write_report(const Renderer& renderer, const scene::Scene& scene, const Settings& settings,
-                  const FrameResult& frame, const capture::OutputDir& out) {
+                  const FrameResult& frame, const capture::Advice* advice,
+                  const capture::OutputDir& out) {
     const nlohmann::json report =
         capture::frame_report({.device = device_info(renderer),
                                .scene = scene,
                                .settings = settings,
                                .frame = frame,
-                               .validation_messages = renderer.validation_message_count()});
+                               .validation_messages = renderer.validation_message_count(),
+                               .advice = advice});
     capture::write_json(out.staging_path("report.json"), report);
 }
 
@@ -131,7 +147,10 @@ int run_capture(const Options& o) {
                            out.staging_path("frame")};
     const FrameResult frame = o.ui ? capture_ui_frame(o, renderer, settings, scene, out, rdc)
                                    : capture_plain_frame(o, renderer, settings, scene, out, rdc);
-    write_report(renderer, scene, settings, frame, out);
+    // Before anything is committed: a failure here leaves no capture folder.
+    std::optional<capture::Advice> advice;
+    if (o.advise) advice = advise(o, renderer, settings, scene);
+    write_report(renderer, scene, settings, frame, advice ? &*advice : nullptr, out);
     if (o.dump_graph) std::printf("%s\n", renderer.graph_dump().c_str());
     out.commit();
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());

@@ -185,6 +185,7 @@ nlohmann::json frame_report(const ReportInput& in) {
                                    {"discarded", f.masked_discards->discarded}};
     if (f.zfight) json["zfight"] = zfight_json(*f.zfight);
     if (f.equal_check) json["equal_check"] = equal_check_json(*f.equal_check);
+    if (in.advice) json["advice"] = advice_json(*in.advice);
     return json;
 }
 

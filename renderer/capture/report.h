@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/capture/advice.h"
 #include "renderer/common/device_info.h"
 #include "renderer/passes/frame_result.h"
 #include "renderer/scene/scene.h"
@@ -24,6 +25,7 @@ struct ReportInput {
     const Settings& settings;
     const FrameResult& frame;
     uint64_t validation_messages = 0;
+    const Advice* advice = nullptr;  // capture --advise: report.json's `advice`
 };
 
 // report.json's object.
