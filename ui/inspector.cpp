@@ -14,6 +14,8 @@ namespace ds::ui {
 namespace {
 
 constexpr const char* kZfightImage = "zfight";  // shown as a heat map over the frame
+// MeasureAdvice: timed frames per configuration after one warm-up (it blocks the UI meanwhile).
+constexpr capture::AdviceRun kAdviceRun{.frames = 5, .warmup = 1};
 
 template <class... Ts>
 struct Overloaded : Ts... {
@@ -135,6 +137,7 @@ void Inspector::draw() {
     passes_panel(panel, layout);
     resources_panel(panel, layout);
     depth_panel(panel, layout);
+    advisor_panel(panel, layout);
     viewer_panel(panel, layout);  // last: it takes the camera input the others left
 }
 
@@ -184,6 +187,7 @@ void Inspector::apply(const Action& action) {
                            message_ = e.what();
                        }
                    },
+                   [&](const MeasureAdvice&) { measure_advice(); },
                },
                action);
 }
@@ -249,6 +253,24 @@ void Inspector::render() {
                                  selected_pair_pixels());
     } else
         view_ = view::DecodedView{};
+}
+
+// Both configurations through the inspector's renderer, camera, size and settings; the next
+// frame renders the settings as they are again.
+void Inspector::measure_advice() {
+    const VkExtent2D size = render_size();
+    const scene::Camera camera = camera_.camera();
+    const capture::RenderFrame render = [&](const Settings& s) {
+        return renderer_.render(camera, s, size.width, size.height, ReadBack::No);
+    };
+    try {
+        advice_ = capture::advise(capture::measure_advice(settings_, render, kAdviceRun));
+        advice_label_ =
+            scene_.name + " at " + std::to_string(size.width) + "x" + std::to_string(size.height);
+        advice_error_.clear();
+    } catch (const std::exception& e) {
+        advice_error_ = e.what();  // the last advice, if any, stays
+    }
 }
 
 // The selected zfight pair's pixels as a keep mask (empty: no pair selected, show all).

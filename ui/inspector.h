@@ -18,6 +18,7 @@
 #include <variant>
 #include <vector>
 
+#include "renderer/capture/advice.h"
 #include "renderer/device_info.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/scene.h"
@@ -53,8 +54,10 @@ struct SetAutoReload {
     bool on = true;
 };
 struct ResetSettings {};
+// The Advisor panel's "measure": the prepass advisor over the current camera and settings.
+struct MeasureAdvice {};
 using Action = std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders,
-                            SetAutoReload, ResetSettings>;
+                            SetAutoReload, ResetSettings, MeasureAdvice>;
 
 enum class MouseTarget : uint8_t { Camera, Image };
 
@@ -128,6 +131,11 @@ class Inspector {
     bool shader_error() const { return shader_error_; }
     bool auto_reload() const { return auto_reload_; }
     uint64_t frames_rendered() const { return frames_rendered_; }
+    // The last MeasureAdvice's result (none until measured), what it measured ("overdraw at
+    // 960x540") and its error, if it failed.
+    const std::optional<capture::Advice>& advice() const { return advice_; }
+    const std::string& advice_label() const { return advice_label_; }
+    const std::string& advice_error() const { return advice_error_; }
     const scene::Camera& camera() const { return camera_.camera(); }
     CameraInput& camera_input() { return camera_input_; }
     // The render size the next frame uses: the viewer's area times render_scale.
@@ -149,6 +157,7 @@ class Inspector {
     // nothing, when the rebuild fails.
     void change_settings(const Settings& changed);
     void render();
+    void measure_advice();
 
     Renderer& renderer_;
     DeviceInfo device_;  // what the panels say of the device's counters
@@ -171,6 +180,8 @@ class Inspector {
     bool auto_reload_ = true;
     ShaderWatch watch_;
     uint64_t frames_rendered_ = 0;
+    std::optional<capture::Advice> advice_;
+    std::string advice_label_, advice_error_;
     mutable PanelState panel_state_;
 };
 

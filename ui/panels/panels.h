@@ -31,6 +31,7 @@ void settings_panel(PanelIo& io, const PanelLayout& layout);
 void scene_panel(PanelIo& io, const PanelLayout& layout);
 void shaders_panel(PanelIo& io, const PanelLayout& layout);
 void depth_panel(PanelIo& io, const PanelLayout& layout);
+void advisor_panel(PanelIo& io, const PanelLayout& layout);
 
 // Shared widgets.
 void help_marker(const char* text);  // "(?)" with a tooltip
