@@ -11,6 +11,9 @@
 #include <memory>
 #include <sstream>
 
+#include <imgui.h>
+
+#include "renderer/capture/image_writer.h"
 #include "renderer/scene/loader.h"
 #include "tests/unit/passes/shared_renderer.h"
 #include "ui/config.h"
@@ -286,6 +289,40 @@ TEST_F(Inspector, ResetRebuildsABuiltInSceneBuiltFromSettings) {
     ui->frame();
     EXPECT_EQ(in.settings().get("overdraw_layers"), "8");
     EXPECT_EQ(in.scene_summary().opaque, 8u);
+}
+
+// The Advisor panel's "measure": both configurations through the inspector's renderer, camera
+// and size; the overdraw comes from exact counts (every pixel covered by each layer), and the
+// inspector's own settings and frames are as before.
+TEST_F(Inspector, MeasureAdviceGivesTheOverdrawScenesLayers) {
+    auto ui = open("overdraw", {}, {640, 360});
+    ui::Inspector& in = ui->inspector();
+    EXPECT_FALSE(in.advice());
+    in.queue(ui::MeasureAdvice{});
+    ui->frame();
+    ASSERT_TRUE(in.advice()) << in.advice_error();
+    EXPECT_DOUBLE_EQ(in.advice()->overdraw, 8.0);
+    const VkExtent2D size = in.render_size();
+    EXPECT_EQ(in.advice()->input.without.covered_pixels, uint64_t(size.width) * size.height);
+    EXPECT_TRUE(in.advice()->keep);
+    EXPECT_EQ(in.advice_label(),
+              "overdraw at " + std::to_string(size.width) + "x" + std::to_string(size.height));
+    EXPECT_EQ(in.settings().get("prepass"), "on");
+    EXPECT_EQ(in.settings().get("count_fragments"), "off");
+    EXPECT_TRUE(has_pass(in.frame(), "depth_prepass"));
+    // The panel, opened, draws the result (an ImGui assertion would abort here).
+    ImGui::SetWindowCollapsed("Advisor", false);
+    const std::vector<uint8_t> pixels = ui->frame();
+    if (const char* png = std::getenv("DS_ADVISOR_PNG"))
+        capture::write_png_rgba8(png, 640, 360, pixels);
+
+    in.queue(ui::SetSetting{"overdraw_layers", "3"});
+    in.queue(ui::MeasureAdvice{});
+    ui->frame();
+    ASSERT_TRUE(in.advice()) << in.advice_error();
+    EXPECT_DOUBLE_EQ(in.advice()->overdraw, 3.0);
+    EXPECT_TRUE(in.advice_error().empty()) << in.advice_error();
+    EXPECT_TRUE(in.message().empty()) << in.message();
 }
 
 TEST_F(Inspector, LeftDragOrbitsAndCtrlWheelZoomsTheImage) {
