@@ -72,7 +72,9 @@ Advice advise(const AdviceInput& in) {
     a.predicted_change_ms = a.prepass_ms - a.ns_per_fragment_without * saved * 1e-6;
     a.measured_change_ms = (on.depth_ms + on.forward_ms) - (off.depth_ms + off.forward_ms);
     a.frame_change_ms = on.frame_ms - off.frame_ms;
-    a.keep = a.measured_change_ms < 0;
+    // A prepass that spares forward no fragment can only cost: drop it whatever the timing
+    // noise says (at a fraction of a millisecond a measured difference can have either sign).
+    a.keep = saved > 0 && a.measured_change_ms < 0;
     a.rule_keep = a.overdraw > kRuleOverdraw;
     return a;
 }
