@@ -39,6 +39,7 @@ layout(location = 2) out uint out_surface;
 #endif
 
 void main() {
+    count_fragment();
     float coverage = 1.0;  // output 0's alpha: the sample mask with alpha-to-coverage
 #if ALPHA_MASK
     bool tested = ALPHA_MASK == 1 || (material.flags & kMaterialAlphaMask) != 0u;
@@ -50,11 +51,11 @@ void main() {
 #else
     if (tested && alpha < alpha_cutoff()) {
         count_discarded();
+        count_discarded_fragment();
         discard;
     }
 #endif
 #endif
-    count_fragment();
     out_normal = vec4(encode_normal(shading_normal(vertex_normal(in_normal), in_tangent, in_uv0)),
                       coverage);
     out_roughness = material_roughness(in_uv0);

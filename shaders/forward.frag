@@ -34,14 +34,17 @@ layout(location = 3) in vec4 in_tangent;
 layout(location = 0) out vec4 out_color;
 
 void main() {
+    count_fragment();
     vec4 base = texture(base_color_texture, in_uv0) * material.base_color_factor;
     float coverage = 1.0;  // output alpha: the sample mask with alpha-to-coverage
 #if ALPHA_MASK && ALPHA_TO_COVERAGE
     coverage = coverage_alpha(base.a, alpha_cutoff());
 #elif ALPHA_MASK
-    if (base.a < alpha_cutoff()) discard;
+    if (base.a < alpha_cutoff()) {
+        count_discarded_fragment();
+        discard;
+    }
 #endif
-    count_fragment();
     vec3 n_vertex = vertex_normal(in_normal);
     Surface s = material_surface(base, in_uv0);
 #if PREPASS

@@ -27,11 +27,14 @@ layout(location = 3) in vec4 in_tangent;
 layout(location = 0) out vec4 out_color;
 
 void main() {
+    count_fragment();
     vec4 base = texture(base_color_texture, in_uv0) * material.base_color_factor;
 #if ALPHA_MODE == 1
-    if (base.a < alpha_cutoff()) discard;
+    if (base.a < alpha_cutoff()) {
+        count_discarded_fragment();
+        discard;
+    }
 #endif
-    count_fragment();
     vec3 n_vertex = vertex_normal(in_normal);
     Surface s = material_surface(base, in_uv0);
     s.n = shading_normal(n_vertex, in_tangent, in_uv0);

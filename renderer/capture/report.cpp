@@ -39,8 +39,11 @@ nlohmann::json counters_note(const DeviceInfo& device) {
                       (device.fragment_statistic.empty() ? std::string("not described")
                                                          : device.fragment_statistic)},
         {"shaded_fragments",
-         "exact: fragments that ran the fragment shader after the depth and alpha tests, "
-         "counted per pixel by the shaders (count_fragments=on)"},
+         "exact: fragments that ran the fragment shader, counted per pixel by the shaders on "
+         "entry (count_fragments=on); with early fragment tests those that passed the depth "
+         "test, for a pipeline with discard (late depth test) every fragment it rasterized"},
+        {"discarded_fragments",
+         "exact: of those, the fragments the alpha test discarded (count_fragments=on)"},
     };
 }
 
@@ -108,6 +111,7 @@ nlohmann::json frame_pass_measurements(const PassResult& p) {
           {"clipping_primitives", p.clipping_primitives}}},
     };
     if (p.shaded_fragments) json["shaded_fragments"] = *p.shaded_fragments;
+    if (p.discarded_fragments) json["discarded_fragments"] = *p.discarded_fragments;
     return json;
 }
 

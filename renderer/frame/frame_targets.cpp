@@ -8,8 +8,10 @@ namespace ds {
 namespace {
 
 constexpr VkFormat kCountFormat = VK_FORMAT_R32_UINT;
-constexpr const char* kCountNames[] = {"prepass_counts", "forward_counts", "decal_counts",
-                                       "transparent_counts"};
+// Per counting pass: its shaded counts, then its discarded ones.
+constexpr const char* kCountNames[] = {
+    "prepass_counts", "prepass_discarded", "forward_counts",     "forward_discarded",
+    "decal_counts",   "decal_discarded",   "transparent_counts", "transparent_discarded"};
 
 // The graph leaves these imports in TRANSFER_SRC after the frame (what readback_* copies
 // from), and the previous frame's copy (or that final barrier) was the last to touch them;
@@ -124,12 +126,16 @@ void FrameTargets::import(graph::RenderGraph& graph, const passes::FrameOptions&
     if (!options.count_fragments) return;
     // Only passes that run count: the prepass is left out with prepass=off.
     const bool counted[] = {options.prepass, true, options.decal_pass, true};
-    graph::ImageHandle* handles[] = {&res.prepass_counts, &res.forward_counts, &res.decal_counts,
-                                     &res.transparent_counts};
-    for (size_t i = 0; i < counts_.size(); ++i)
-        if (counted[i])
-            *handles[i] = import_image(kCountNames[i], counts_[i], graph::Semantic::Count,
-                                       after_copy(), copied);
+    passes::CountImages* counting[] = {&res.prepass_counts, &res.forward_counts, &res.decal_counts,
+                                       &res.transparent_counts};
+    for (size_t i = 0; i < std::size(counting); ++i) {
+        if (!counted[i]) continue;
+        auto import_count = [&](size_t k) {
+            return import_image(kCountNames[k], counts_[k], graph::Semantic::Count, after_copy(),
+                                copied);
+        };
+        *counting[i] = {import_count(2 * i), import_count(2 * i + 1)};
+    }
 }
 
 void FrameTargets::reset() {

@@ -52,8 +52,9 @@ class FrameTargets {
     VkExtent2D size_{0, 0};
     vk::Image final_;
     vk::Image depth_;
-    std::array<vk::Image, 4> counts_;  // prepass, forward, decals, transparent; until counting
-    vk::Image msaa_depth_;             // msaa > 1 only
+    // prepass, forward, decals, transparent: shaded and discarded each; once counting
+    std::array<vk::Image, 8> counts_;
+    vk::Image msaa_depth_;  // msaa > 1 only
     vk::Image msaa_hdr_;
 };
 

@@ -6,8 +6,9 @@ namespace ds::passes {
 
 void ClearCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     std::vector<graph::ImageHandle> counts;
-    for (graph::ImageHandle h : {res.prepass_counts, res.forward_counts, res.decal_counts, res.transparent_counts})
-        if (h.valid()) counts.push_back(h);
+    for (const CountImages& c :
+         {res.prepass_counts, res.forward_counts, res.decal_counts, res.transparent_counts})
+        if (c.valid()) counts.insert(counts.end(), {c.shaded, c.discarded});
     if (counts.empty() && !in.options.zfight) return;
     graph.add_pass(
         name(),

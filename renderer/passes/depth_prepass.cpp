@@ -17,7 +17,6 @@ using graph::Access;
 using scene::AlphaMode;
 
 namespace {
-const VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}};
 const VkDescriptorPoolSize kDiscardPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
 constexpr VkDeviceSize kDiscardBytes = 2 * sizeof(uint32_t);  // invoked, discarded
 
@@ -160,7 +159,8 @@ VkDescriptorSet DepthPrepass::discard_set(graph::PassContext& ctx, const FrameIn
 
 void DepthPrepass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {
     if (own.empty()) return;
-    own[0].shaded_fragments = c.readback.u32_sum(c.res.prepass_counts);
+    own[0].shaded_fragments = c.readback.u32_sum(c.res.prepass_counts.shaded);
+    own[0].discarded_fragments = c.readback.u32_sum(c.res.prepass_counts.discarded);
     own[0].pipelines = uses_.list();
     const std::span<const std::byte> bytes = c.readback.buffer_bytes(discards_);
     if (bytes.size() < kDiscardBytes) return;
@@ -273,7 +273,7 @@ void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const 
     if (discards.valid()) draw.discards = discard_set(ctx, in, discards);
     if (res.prepass_counts.valid()) {
         draw.counts = count_sets_.allocate(in.frame_number, count_layout_.handle());
-        write_count_set(services_.context.device(), draw.counts, ctx.view(res.prepass_counts));
+        write_count_set(ctx, services_.context.device(), draw.counts, res.prepass_counts);
     }
     begin(ctx, in, res, msaa);
     draw_scene(cmd, in, draw);

@@ -66,7 +66,7 @@ void EqualCheckPass::add(graph::RenderGraph& graph, const FrameInputs& in, Frame
     capacity_ = extent.width * extent.height;
     result_ = services_.readback.import_storage(
         graph, "equal_check_result", kHeaderBytes + VkDeviceSize(capacity_) * 8, kHeaderBytes);
-    Bound bound{res.forward_counts, res.depth, res.surface_id, {}, result_};
+    Bound bound{res.forward_counts.shaded, res.depth, res.surface_id, {}, result_};
     const float far_depth = in.options.far_depth();
     graph.add_pass(
         name(),

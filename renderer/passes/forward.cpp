@@ -14,9 +14,7 @@ namespace ds::passes {
 using graph::Access;
 using scene::AlphaMode;
 
-namespace {
-const VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}};
-}
+namespace {}
 
 ForwardPass::ForwardPass(const PassServices& services)
     : services_(services),
@@ -40,7 +38,8 @@ void ForwardPass::rebuild_pipelines(vk::DestroyList& retired) {
 
 void ForwardPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
     if (own.empty()) return;
-    own[0].shaded_fragments = c.readback.u32_sum(c.res.forward_counts);
+    own[0].shaded_fragments = c.readback.u32_sum(c.res.forward_counts.shaded);
+    own[0].discarded_fragments = c.readback.u32_sum(c.res.forward_counts.discarded);
     own[0].pipelines = uses_.list();
 }
 
@@ -157,7 +156,7 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     VkDescriptorSet counts = VK_NULL_HANDLE;
     if (res.forward_counts.valid()) {
         counts = count_sets_.allocate(in.frame_number, count_layout_.handle());
-        write_count_set(services_.context.device(), counts, ctx.view(res.forward_counts));
+        write_count_set(ctx, services_.context.device(), counts, res.forward_counts);
     }
     const VkDescriptorSet lighting = lighting_.write(ctx, in.frame_number, draw.lighting);
 

@@ -118,6 +118,13 @@ VkFormat resolve_depth_format(DepthChoice choice, std::span<const VkFormat> supp
 // scene camera's other plane).
 scene::Camera effective_camera(const scene::Camera& camera, const FrameOptions& options);
 
+// count_fragments=on: one pass's per-pixel u32 counts of the fragments that ran its fragment
+// shader (shaded; counted on entry) and of those its alpha test then discarded.
+struct CountImages {
+    graph::ImageHandle shaded, discarded;
+    bool valid() const { return shaded.valid(); }
+};
+
 // Graph handles the passes of one frame meet through; a pass fills what it writes.
 struct FrameResources {
     graph::BufferHandle frame_uniforms;  // FrameUniforms (imported)
@@ -136,11 +143,11 @@ struct FrameResources {
     graph::ImageHandle msaa_depth;
     graph::ImageHandle msaa_hdr;
     graph::ImageHandle final_image;  // R8G8B8A8_SRGB (imported; tonemap writes it)
-    // With count_fragments=on: per-pixel u32 counts of fragments that ran the shader.
-    graph::ImageHandle prepass_counts;
-    graph::ImageHandle forward_counts;
-    graph::ImageHandle decal_counts;  // decal_pass (effective) only
-    graph::ImageHandle transparent_counts;
+    // With count_fragments=on: each counting pass's CountImages.
+    CountImages prepass_counts;
+    CountImages forward_counts;
+    CountImages decal_counts;  // decal_pass (effective) only
+    CountImages transparent_counts;
     // Diagnostics (off: invalid). surface_id: R32_UINT, the prepass's winning surface per
     // pixel (gpu_scene.h SurfaceTable; 0 = none); zfight: R32_UINT competitors per pixel.
     graph::ImageHandle surface_id;

@@ -37,11 +37,14 @@ struct PassResult {
     uint64_t vertex_shader_invocations = 0;
     uint64_t fragment_shader_invocations = 0;
     uint64_t clipping_primitives = 0;
-    // count_fragments=on (depth_prepass, forward, transparent): fragments that really ran
-    // the fragment shader after the depth and alpha tests, summed from a per-pixel u32 image.
-    // Exact for shaders without discard (early fragment tests); a pipeline with discard
-    // counts after the discard, and its late depth test may still reject the fragment.
+    // count_fragments=on (depth_prepass, forward, decals, transparent): fragments that ran the
+    // fragment shader, counted on entry, summed from a per-pixel u32 image. With early
+    // fragment tests (every pipeline without discard) they passed the depth test; a pipeline
+    // with discard runs before its late depth test, so it counts what it rasterized.
     std::optional<uint64_t> shaded_fragments;
+    // count_fragments=on, the same passes: fragments their alpha test discarded (counted
+    // just before the discard; shaded_fragments includes them).
+    std::optional<uint64_t> discarded_fragments;
     // The graph resources the pass declared, by name, in declaration order.
     std::vector<std::string> reads, writes;
     // Geometry passes: the pipelines it bound, in first-bind order (empty for the others).

@@ -7,9 +7,7 @@
 #include "renderer/vk/functions.h"
 
 namespace ds::passes {
-namespace {
-const VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}};
-}
+namespace {}
 
 OverlayDrawing::OverlayDrawing(const PassServices& services, const char* name)
     : services_(services),
@@ -24,7 +22,7 @@ OverlayDrawing::OverlayDrawing(const PassServices& services, const char* name)
 }
 
 void OverlayDrawing::add(graph::RenderGraph& graph, const char* name, const FrameInputs& in,
-                         FrameResources& res, graph::ImageHandle counts, bool resolve, Draw draw) {
+                         FrameResources& res, const CountImages& counts, bool resolve, Draw draw) {
     // Not in the prepass: no prepass normal or roughness.
     const LightingInputs lighting = {.shadow_map = res.shadow_map,
                                      .normals = {},
@@ -52,12 +50,12 @@ void OverlayDrawing::add(graph::RenderGraph& graph, const char* name, const Fram
 
 void OverlayDrawing::record(graph::PassContext& ctx, const FrameInputs& in,
                             const FrameResources& res, const LightingInputs& lighting,
-                            graph::ImageHandle counts, bool resolve, const Draw& draw) {
+                            const CountImages& counts, bool resolve, const Draw& draw) {
     VkCommandBuffer cmd = ctx.cmd();
     VkDescriptorSet count_set = VK_NULL_HANDLE;
     if (counts.valid()) {
         count_set = count_sets_.allocate(in.frame_number, count_layout_.handle());
-        write_count_set(services_.context.device(), count_set, ctx.view(counts));
+        write_count_set(ctx, services_.context.device(), count_set, counts);
     }
     const VkDescriptorSet lighting_set = lighting_.write(ctx, in.frame_number, lighting);
     begin_hdr_over_depth(ctx, res, in.options.msaa(), resolve);

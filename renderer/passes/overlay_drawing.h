@@ -29,11 +29,11 @@ class OverlayDrawing {
     // The graph pass `name`. resolve: at msaa > 1 the rendering resolves res.msaa_hdr into
     // res.hdr, which it creates (declare_hdr_over_depth).
     void add(graph::RenderGraph& graph, const char* name, const FrameInputs& in,
-             FrameResources& res, graph::ImageHandle counts, bool resolve, Draw draw);
+             FrameResources& res, const CountImages& counts, bool resolve, Draw draw);
 
   private:
     void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
-                const LightingInputs& lighting, graph::ImageHandle counts, bool resolve,
+                const LightingInputs& lighting, const CountImages& counts, bool resolve,
                 const Draw& draw);
 
     PassServices services_;

@@ -153,24 +153,32 @@ void begin_hdr_over_depth(graph::PassContext& ctx, const FrameResources& res, bo
 }
 
 vk::DescriptorSetLayout create_count_set_layout(vk::Context& context) {
-    const VkDescriptorSetLayoutBinding binding =
-        vk::layout_binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT);
-    return vk::DescriptorSetLayout(context, {&binding, 1}, "count set layout");
+    const VkDescriptorSetLayoutBinding bindings[] = {
+        vk::layout_binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT),
+        vk::layout_binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT)};
+    return vk::DescriptorSetLayout(context, bindings, "count set layout");
 }
 
-void declare_counts(graph::PassBuilder& builder, graph::ImageHandle counts) {
-    builder.write(counts, graph::Access::StorageReadWrite, graph::Shader::Fragment);
+void declare_counts(graph::PassBuilder& builder, const CountImages& counts) {
+    builder.write(counts.shaded, graph::Access::StorageReadWrite, graph::Shader::Fragment);
+    builder.write(counts.discarded, graph::Access::StorageReadWrite, graph::Shader::Fragment);
 }
 
-void write_count_set(VkDevice device, VkDescriptorSet set, VkImageView view) {
-    const VkDescriptorImageInfo info{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
-    auto write = vk::make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-    write.dstSet = set;
-    write.dstBinding = 0;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    write.pImageInfo = &info;
-    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescriptorSet set,
+                     const CountImages& counts) {
+    const VkDescriptorImageInfo infos[] = {
+        {VK_NULL_HANDLE, ctx.view(counts.shaded), VK_IMAGE_LAYOUT_GENERAL},
+        {VK_NULL_HANDLE, ctx.view(counts.discarded), VK_IMAGE_LAYOUT_GENERAL}};
+    VkWriteDescriptorSet writes[2];
+    for (uint32_t i = 0; i < 2; ++i) {
+        writes[i] = vk::make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i].dstSet = set;
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        writes[i].pImageInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(device, 2, writes, 0, nullptr);
 }
 
 std::string off_or_without_prepass(const FrameInputs& in, const char* knob) {

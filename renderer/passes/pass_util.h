@@ -104,9 +104,13 @@ const char* depth_resolve_name(const vk::DeviceReport& report, bool reverse_z);
 // Count images (shaders/common/count.glsl, set 3): R32_UINT, one per counting pass.
 inline constexpr VkFormat kCountFormat = VK_FORMAT_R32_UINT;
 inline constexpr uint32_t kCountSet = 3;
+// A pool for one count set per frame.
+inline constexpr VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2}};
 vk::DescriptorSetLayout create_count_set_layout(vk::Context& context);
-// Declares what the counting fragment shader does to `counts` (clear_counts zeroed it first).
-void declare_counts(graph::PassBuilder& builder, graph::ImageHandle counts);
-void write_count_set(VkDevice device, VkDescriptorSet set, VkImageView view);
+// Declares what the counting fragment shader does to `counts` (clear_counts zeroed them).
+void declare_counts(graph::PassBuilder& builder, const CountImages& counts);
+// Set 3: binding 0 the shaded counts, binding 1 the discarded ones.
+void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescriptorSet set,
+                     const CountImages& counts);
 
 }  // namespace ds::passes

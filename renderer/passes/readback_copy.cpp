@@ -67,10 +67,10 @@ std::vector<graph::ImageHandle> ReadbackCopyPass::images(const FrameInputs& in,
             return {res.depth};
         case What::Counts: {
             std::vector<graph::ImageHandle> out;
-            for (graph::ImageHandle h :
-                 {res.prepass_counts, res.forward_counts, res.decal_counts, res.transparent_counts,
-                  res.zfight})
-                if (h.valid()) out.push_back(h);
+            for (const CountImages& c :
+                 {res.prepass_counts, res.forward_counts, res.decal_counts, res.transparent_counts})
+                if (c.valid()) out.insert(out.end(), {c.shaded, c.discarded});
+            if (res.zfight.valid()) out.push_back(res.zfight);
             return out;
         }
     }
