@@ -90,8 +90,7 @@ void DecalsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
 
 void DecalsPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
     if (own.empty()) return;
-    own[0].shaded_fragments = c.readback.u32_sum(c.res.decal_counts.shaded);
-    own[0].discarded_fragments = c.readback.u32_sum(c.res.decal_counts.discarded);
+    collect_counts(c.readback, c.res.decal_counts, own[0]);
     own[0].pipelines = uses_.list();
 }
 

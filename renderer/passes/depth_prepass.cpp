@@ -159,8 +159,7 @@ VkDescriptorSet DepthPrepass::discard_set(graph::PassContext& ctx, const FrameIn
 
 void DepthPrepass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {
     if (own.empty()) return;
-    own[0].shaded_fragments = c.readback.u32_sum(c.res.prepass_counts.shaded);
-    own[0].discarded_fragments = c.readback.u32_sum(c.res.prepass_counts.discarded);
+    collect_counts(c.readback, c.res.prepass_counts, own[0]);
     own[0].pipelines = uses_.list();
     const std::span<const std::byte> bytes = c.readback.buffer_bytes(discards_);
     if (bytes.size() < kDiscardBytes) return;

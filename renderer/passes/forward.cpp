@@ -38,8 +38,7 @@ void ForwardPass::rebuild_pipelines(vk::DestroyList& retired) {
 
 void ForwardPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
     if (own.empty()) return;
-    own[0].shaded_fragments = c.readback.u32_sum(c.res.forward_counts.shaded);
-    own[0].discarded_fragments = c.readback.u32_sum(c.res.forward_counts.discarded);
+    collect_counts(c.readback, c.res.forward_counts, own[0]);
     own[0].pipelines = uses_.list();
 }
 

@@ -1,5 +1,6 @@
 #include "renderer/passes/pass_util.h"
 
+#include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/capabilities.h"
 #include "renderer/vk/check.h"
@@ -179,6 +180,11 @@ void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescripto
         writes[i].pImageInfo = &infos[i];
     }
     vkUpdateDescriptorSets(device, 2, writes, 0, nullptr);
+}
+
+void collect_counts(const HostReadback& readback, const CountImages& counts, PassResult& out) {
+    out.shaded_fragments = readback.u32_sum(counts.shaded);
+    out.discarded_fragments = readback.u32_sum(counts.discarded);
 }
 
 std::string off_or_without_prepass(const FrameInputs& in, const char* knob) {

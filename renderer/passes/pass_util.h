@@ -28,6 +28,10 @@ namespace ds::shader {
 class Compiler;
 }
 
+namespace ds {
+class HostReadback;
+}
+
 namespace ds::passes {
 
 // Descriptor sets that live for one frame. A pool per frame in flight, reset when its slot
@@ -112,5 +116,7 @@ void declare_counts(graph::PassBuilder& builder, const CountImages& counts);
 // Set 3: binding 0 the shaded counts, binding 1 the discarded ones.
 void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescriptorSet set,
                      const CountImages& counts);
+// The pass's shaded and discarded totals from its read-back count images (none uncounted).
+void collect_counts(const HostReadback& readback, const CountImages& counts, PassResult& out);
 
 }  // namespace ds::passes

@@ -70,8 +70,7 @@ void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
 
 void TransparentPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
     if (own.empty()) return;
-    own[0].shaded_fragments = c.readback.u32_sum(c.res.transparent_counts.shaded);
-    own[0].discarded_fragments = c.readback.u32_sum(c.res.transparent_counts.discarded);
+    collect_counts(c.readback, c.res.transparent_counts, own[0]);
     own[0].pipelines = uses_.list();
 }
 

@@ -70,4 +70,24 @@ class SharedScene : public SharedRenderer {
     static inline std::unique_ptr<scene::Scene> scene_;
 };
 
+// SharedRenderer whose tests pick their scene: render() loads it when it changes (scene
+// settings come from the first render's settings).
+class SceneSwitching : public SharedRenderer {
+  protected:
+    FrameResult render(const std::string& scene_name, const std::vector<std::string>& settings,
+                       uint32_t width, uint32_t height, ReadBack read_back,
+                       const InspectRequest& inspect = {}) {
+        const Settings s = settings_of(settings);
+        if (scene_name != loaded_) {
+            scene_ = scene::load_scene(scene_name, s);
+            renderer_->set_scene(scene_);
+            loaded_ = scene_name;
+        }
+        return renderer_->render(scene_.camera, s, width, height, read_back, inspect);
+    }
+
+    scene::Scene scene_;
+    std::string loaded_;
+};
+
 }  // namespace ds::test

@@ -17,16 +17,10 @@ using namespace ds;
 constexpr uint32_t kWidth = 320, kHeight = 180;
 constexpr uint64_t kPixels = uint64_t(kWidth) * kHeight;
 
-class FragmentCounts : public test::SharedRenderer {
+class FragmentCounts : public test::SceneSwitching {
   protected:
     FrameResult render(const std::string& scene_name, const std::vector<std::string>& settings) {
-        const Settings s = test::settings_of(settings);
-        if (scene_name != loaded_) {
-            scene_ = scene::load_scene(scene_name, s);
-            renderer_->set_scene(scene_);
-            loaded_ = scene_name;
-        }
-        return renderer_->render(scene_.camera, s, kWidth, kHeight, ReadBack::No);
+        return SceneSwitching::render(scene_name, settings, kWidth, kHeight, ReadBack::No);
     }
     static const PassResult& pass(const FrameResult& f, const std::string& name) {
         for (const PassResult& p : f.passes)
@@ -35,9 +29,6 @@ class FragmentCounts : public test::SharedRenderer {
         static const PassResult none;
         return none;
     }
-
-    scene::Scene scene_;
-    std::string loaded_;
 };
 
 // N view-filling opaque layers: forward shades every pixel once with the prepass and N times

@@ -21,21 +21,13 @@ using test::names;
 
 constexpr uint32_t kWidth = 320, kHeight = 180;
 
-class Zfight : public test::SharedRenderer {
+class Zfight : public test::SceneSwitching {
   protected:
     FrameResult render(const std::string& scene_name, const std::vector<std::string>& settings,
                        const InspectRequest& inspect = {}) {
-        const Settings s = test::settings_of(settings);
-        if (scene_name != loaded_) {
-            scene_ = scene::load_scene(scene_name, s);
-            renderer_->set_scene(scene_);
-            loaded_ = scene_name;
-        }
-        return renderer_->render(scene_.camera, s, kWidth, kHeight, ReadBack::Yes, inspect);
+        return SceneSwitching::render(scene_name, settings, kWidth, kHeight, ReadBack::Yes,
+                                      inspect);
     }
-
-    scene::Scene scene_;
-    std::string loaded_;
 };
 
 bool has_resource(const FrameResult& f, const std::string& name) {
