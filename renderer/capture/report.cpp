@@ -136,19 +136,12 @@ double plain(float v) {
 // lie on, and whether this frame drew them in the decals pass (decal_pass=on) or like any
 // surface.
 nlohmann::json decals_json(const scene::Scene& s, const FrameResult& f) {
-    auto name = [&](uint32_t instance) {
-        const scene::Mesh& mesh = s.meshes[s.instances[instance].mesh];
-        return surface_json(
-            {mesh.name, s.materials[mesh.material].name, s.instances[instance].node});
-    };
     nlohmann::json overlays = nlohmann::json::array();
-    for (const scene::Decal& d : s.decals) {
-        const scene::Mesh& mesh = s.meshes[s.instances[d.instance].mesh];
+    for (const scene::Decal& d : s.decals)
         overlays.push_back(
-            {{"overlay", name(d.instance)},
-             {"base", name(d.base)},
-             {"alpha_mode", scene::to_string(s.materials[mesh.material].alpha_mode)}});
-    }
+            {{"overlay", surface_json(s.instance_name(d.instance))},
+             {"base", surface_json(s.instance_name(d.base))},
+             {"alpha_mode", scene::to_string(s.instance_material(d.instance).alpha_mode)}});
     const bool pass = std::any_of(f.passes.begin(), f.passes.end(),
                                   [](const PassResult& p) { return p.name == "decals"; });
     return {{"overlays", overlays}, {"decals_pass", pass}};

@@ -30,6 +30,15 @@ uint64_t Scene::triangle_count() const {
     return triangles;
 }
 
+const Material& Scene::instance_material(uint32_t instance) const {
+    return materials.at(meshes.at(instances.at(instance).mesh).material);
+}
+
+SurfaceName Scene::instance_name(uint32_t instance) const {
+    const Instance& i = instances.at(instance);
+    return {meshes.at(i.mesh).name, instance_material(instance).name, i.node};
+}
+
 Camera frame_bounds(const Bounds& bounds, float yfov) {
     Camera camera;
     camera.yfov = yfov;

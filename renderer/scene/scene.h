@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/common/surface_name.h"
+
 namespace ds::scene {
 
 enum class AlphaMode : uint8_t { Opaque, Mask, Blend };
@@ -167,6 +169,9 @@ struct Scene {
     std::vector<std::string> warnings;  // import notes, one line each (skipped primitives ...)
 
     uint64_t triangle_count() const;  // over all instances
+    // An instance's material, and how reports name it: its mesh, material and node.
+    const Material& instance_material(uint32_t instance) const;
+    SurfaceName instance_name(uint32_t instance) const;
 };
 
 // Camera that looks at `bounds` from a pleasant direction with the whole box in view.

@@ -54,12 +54,10 @@ void masked_cutoffs(PanelIo& io, const SceneSummary& s) {
 void decal_list(const scene::Scene& s) {
     if (s.decals.empty()) return;
     if (!ImGui::TreeNode("decals", "%zu coplanar overlays (decals)", s.decals.size())) return;
-    for (const scene::Decal& d : s.decals) {
-        const scene::Mesh& mesh = s.meshes[s.instances[d.instance].mesh];
+    for (const scene::Decal& d : s.decals)
         ImGui::BulletText("%s (%s) on %s", s.instances[d.instance].node.c_str(),
-                          scene::to_string(s.materials[mesh.material].alpha_mode),
+                          scene::to_string(s.instance_material(d.instance).alpha_mode),
                           s.instances[d.base].node.c_str());
-    }
     ImGui::TreePop();
 }
 
