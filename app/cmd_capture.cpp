@@ -107,7 +107,7 @@ capture::Advice advise(const Options& o, Renderer& renderer, const Settings& set
         return renderer.render(scene.camera, s, o.size.width, o.size.height, ReadBack::No);
     };
     const capture::Advice advice =
-        capture::advise(capture::measure_advice(settings, render, {.frames = 5, .warmup = 1}));
+        capture::advise(capture::measure_advice(settings, render, capture::AdviceRun{}));
     std::printf("depthscope: advice: %s\n", capture::verdict_line(advice).c_str());
     return advice;
 }

@@ -14,8 +14,6 @@ namespace ds::ui {
 namespace {
 
 constexpr const char* kZfightImage = "zfight";  // shown as a heat map over the frame
-// MeasureAdvice: timed frames per configuration after one warm-up (it blocks the UI meanwhile).
-constexpr capture::AdviceRun kAdviceRun{.frames = 5, .warmup = 1};
 
 template <class... Ts>
 struct Overloaded : Ts... {
@@ -263,8 +261,8 @@ void Inspector::measure_advice() {
     const capture::RenderFrame render = [&](const Settings& s) {
         return renderer_.render(camera, s, size.width, size.height, ReadBack::No);
     };
-    try {
-        advice_ = capture::advise(capture::measure_advice(settings_, render, kAdviceRun));
+    try {  // the default run's frames block the UI meanwhile
+        advice_ = capture::advise(capture::measure_advice(settings_, render, capture::AdviceRun{}));
         advice_label_ =
             scene_.name + " at " + std::to_string(size.width) + "x" + std::to_string(size.height);
         advice_error_.clear();
