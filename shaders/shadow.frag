@@ -1,13 +1,31 @@
 #version 460
-// Shadow map, MASK materials: the cut-out parts of leaves cast no shadow. Opaque geometry
-// uses a pipeline without a fragment shader.
+// Shadow map fragment shader. Opaque geometry normally uses a pipeline without one; this
+// runs for MASK materials (ALPHA_MASK=1, the default: the cut-out parts of leaves cast no
+// shadow) and, with COUNT_FRAGMENTS=1 (common/count.glsl), for opaque ones too
+// (ALPHA_MASK=0), which then only count, with early fragment tests as the depth-only
+// pipeline has.
 #extension GL_GOOGLE_include_directive : require
 
+#ifndef ALPHA_MASK
+#define ALPHA_MASK 1
+#endif
+
 #include "common/bindings.glsl"
+#include "common/count.glsl"
+
+#if !ALPHA_MASK
+layout(early_fragment_tests) in;
+#endif
 
 layout(location = 0) in vec2 in_uv0;
 
 void main() {
+    count_fragment();
+#if ALPHA_MASK
     float alpha = texture(base_color_texture, in_uv0).a * material.base_color_factor.a;
-    if (alpha < alpha_cutoff()) discard;
+    if (alpha < alpha_cutoff()) {
+        count_discarded_fragment();
+        discard;
+    }
+#endif
 }

@@ -44,6 +44,14 @@ nlohmann::json counters_note(const DeviceInfo& device) {
          "test, for a pipeline with discard (late depth test) every fragment it rasterized"},
         {"discarded_fragments",
          "exact: of those, the fragments the alpha test discarded (count_fragments=on)"},
+        {"rasterized_fragments",
+         "exact: fragments the pass's draws rasterized, whatever the depth test or a discard "
+         "made of them (depth complexity), from a measurement draw with the depth test off "
+         "(count_fragments=on)"},
+        {"quad_overdraw",
+         "exact: 2x2 quads that ran the fragment shader with at least one live lane, their "
+         "lanes (4 each, helpers included) and lanes per shaded fragment (count_fragments=on, "
+         "devices with quad subgroup operations in fragment shaders)"},
     };
 }
 
@@ -110,8 +118,19 @@ nlohmann::json frame_pass_measurements(const PassResult& p) {
           {"fragment_shader_invocations", p.fragment_shader_invocations},
           {"clipping_primitives", p.clipping_primitives}}},
     };
+    if (p.rasterized_fragments) json["rasterized_fragments"] = *p.rasterized_fragments;
     if (p.shaded_fragments) json["shaded_fragments"] = *p.shaded_fragments;
     if (p.discarded_fragments) json["discarded_fragments"] = *p.discarded_fragments;
+    if (p.quads) {
+        const uint64_t lanes = 4 * *p.quads;
+        const uint64_t shaded = p.shaded_fragments.value_or(0);
+        json["quad_overdraw"] = {
+            {"quads", *p.quads},
+            {"lanes", lanes},
+            {"lanes_per_shaded", shaded ? double(lanes) / double(shaded) : 0.0}};
+    } else if (p.shaded_fragments) {  // counted, but the device cannot count quads
+        json["quad_overdraw"] = "unsupported on this device";
+    }
     return json;
 }
 

@@ -7,12 +7,6 @@
 namespace ds {
 namespace {
 
-constexpr VkFormat kCountFormat = VK_FORMAT_R32_UINT;
-// Per counting pass: its shaded counts, then its discarded ones.
-constexpr const char* kCountNames[] = {
-    "prepass_counts", "prepass_discarded", "forward_counts",     "forward_discarded",
-    "decal_counts",   "decal_discarded",   "transparent_counts", "transparent_discarded"};
-
 // The graph leaves these imports in TRANSFER_SRC after the frame (what readback_* copies
 // from), and the previous frame's copy (or that final barrier) was the last to touch them;
 // the contents are not needed.
@@ -70,7 +64,6 @@ void FrameTargets::ensure_msaa(VkSampleCountFlagBits samples, vk::DestroyList& r
 
 void FrameTargets::retire_all(vk::DestroyList& retired) {
     std::vector<vk::Image*> images = {&msaa_depth_, &msaa_hdr_, &final_, &depth_};
-    for (vk::Image& count : counts_) images.push_back(&count);
     for (vk::Image* image : images) {
         if (*image) retired.defer(std::move(*image));
         *image = vk::Image{};
@@ -85,12 +78,6 @@ void FrameTargets::ensure(VkExtent2D size, const passes::FrameOptions& options,
     }
     if (!final_) final_ = make_image(final_format_, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "final");
     ensure_depth(options.depth_format, retired);
-    if (options.count_fragments && !counts_[0]) {
-        for (size_t i = 0; i < counts_.size(); ++i)
-            counts_[i] = make_image(kCountFormat,
-                                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                    kCountNames[i]);
-    }
     ensure_msaa(options.samples, retired);
 }
 
@@ -123,19 +110,6 @@ void FrameTargets::import(graph::RenderGraph& graph, const passes::FrameOptions&
         res.msaa_hdr =
             import_image("msaa_hdr", msaa_hdr_, graph::Semantic::HdrColor, unused, probed());
     }
-    if (!options.count_fragments) return;
-    // Only passes that run count: the prepass is left out with prepass=off.
-    const bool counted[] = {options.prepass, true, options.decal_pass, true};
-    passes::CountImages* counting[] = {&res.prepass_counts, &res.forward_counts, &res.decal_counts,
-                                       &res.transparent_counts};
-    for (size_t i = 0; i < std::size(counting); ++i) {
-        if (!counted[i]) continue;
-        auto import_count = [&](size_t k) {
-            return import_image(kCountNames[k], counts_[k], graph::Semantic::Count, after_copy(),
-                                copied);
-        };
-        *counting[i] = {import_count(2 * i), import_count(2 * i + 1)};
-    }
 }
 
 void FrameTargets::reset() {
@@ -145,7 +119,6 @@ void FrameTargets::reset() {
     final_ = vk::Image{};
     depth_ = vk::Image{};
     depth_format_ = VK_FORMAT_UNDEFINED;
-    counts_ = {};
     size_ = {0, 0};
 }
 

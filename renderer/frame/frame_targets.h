@@ -1,11 +1,10 @@
 #pragma once
 // The images a frame hands to the graph from outside, because they outlive one frame's
-// transients at a fixed size: the final image (tonemap writes it), the scene depth, with
-// count_fragments=on the three count images, and with msaa > 1 the multisampled depth and
-// HDR colour. Both depth images have the frame's depth_format: a new one recreates them. The
-// read-back passes copy or probe them inside the graph (HostReadback); each import's final
-// state is what those passes leave, so a frame that reads nothing back ends in the same states.
-#include <array>
+// transients at a fixed size: the final image (tonemap writes it), the scene depth, and with
+// msaa > 1 the multisampled depth and HDR colour (count images are clear_counts' transients). Both
+// depth images have the frame's depth_format: a new one recreates them. The read-back passes copy
+// or probe them inside the graph (HostReadback); each import's final state is what those passes
+// leave, so a frame that reads nothing back ends in the same states.
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
@@ -25,13 +24,12 @@ class FrameTargets {
   public:
     FrameTargets(vk::Context& context, VkFormat final_format, VkFormat hdr_format);
 
-    // (Re)creates what this frame needs at `size` with the options' count images, sample
-    // count and depth format; replaced images go to `retired` (an earlier frame may still use
+    // (Re)creates what this frame needs at `size` with the options' sample count and depth
+    // format; replaced images go to `retired` (an earlier frame may still use
     // them).
     void ensure(VkExtent2D size, const passes::FrameOptions& options, vk::DestroyList& retired);
-    // Imports the final image, the depth, the multisampled images (msaa > 1) and, with
-    // counting on, a count image for each counting pass that runs. Fills res.final_image,
-    // res.depth, res.msaa_* and res.*_counts.
+    // Imports the final image, the depth and the multisampled images (msaa > 1). Fills
+    // res.final_image, res.depth and res.msaa_*.
     void import(graph::RenderGraph& graph, const passes::FrameOptions& options,
                 passes::FrameResources& res);
 
@@ -52,8 +50,6 @@ class FrameTargets {
     VkExtent2D size_{0, 0};
     vk::Image final_;
     vk::Image depth_;
-    // prepass, forward, decals, transparent: shaded and discarded each; once counting
-    std::array<vk::Image, 8> counts_;
     vk::Image msaa_depth_;  // msaa > 1 only
     vk::Image msaa_hdr_;
 };

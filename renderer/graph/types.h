@@ -98,9 +98,11 @@ enum class PassKind : uint8_t { Graphics, Compute, Transfer };
 
 // What a pass is for, so a report or a panel can group and fold: the frame's own work,
 // clearing what a later pass accumulates into, or reading results back to the host.
-enum class PassRole : uint8_t { Frame, Clear, ReadBack };
+// Measure: work a diagnostic adds beside a frame pass (count_fragments' rasterized counts)
+// that is not the frame's own.
+enum class PassRole : uint8_t { Frame, Clear, ReadBack, Measure };
 
 const char* pass_kind_name(PassKind kind);  // "graphics" | "compute" | "transfer"
-const char* pass_role_name(PassRole role);  // "frame" | "clear" | "readback"
+const char* pass_role_name(PassRole role);  // "frame" | "clear" | "readback" | "measure"
 
 }  // namespace ds::graph

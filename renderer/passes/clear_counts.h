@@ -1,20 +1,23 @@
 #pragma once
-// clear_counts (clear role; count_fragments=on or zfight=on): zeroes the u32 count images
-// the counting passes (depth_prepass, forward, transparent; zfight, whose res.zfight image
-// it creates) add into, first in the frame, so the graph plans the transfer-to-shader
-// dependency like any other instead of a barrier inside each counting pass.
+// clear_counts (clear role; count_fragments=on or zfight=on): creates and zeroes the u32 count
+// images the counting passes (shadow, depth_prepass, forward, decals, transparent: their
+// CountImages; zfight: res.zfight) add into, first in the frame, so the graph plans the
+// transfer-to-shader dependency like any other instead of a barrier inside each counting pass.
 #include "renderer/passes/frame_pass.h"
 
 namespace ds::passes {
 
 class ClearCountsPass final : public FramePass {
   public:
-    explicit ClearCountsPass(const PassServices&) {}
+    explicit ClearCountsPass(const PassServices& services);
 
     const char* name() const override { return "clear_counts"; }
     graph::PassRole role() const override { return graph::PassRole::Clear; }
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
     void rebuild_pipelines(vk::DestroyList&) override {}
+
+  private:
+    bool quads_;  // the device counts quads (vk::DeviceReport::fragment_quad_operations)
 };
 
 }  // namespace ds::passes

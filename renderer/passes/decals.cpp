@@ -25,6 +25,7 @@ constexpr float kBiasSlope = 1.0f;
 DecalsPass::DecalsPass(const PassServices& services)
     : services_(services),
       drawing_(services, kName),
+      rasterized_(services, kName),
       pipelines_([this](const Variant& v) { return compile(v); },
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
                  [](const Variant& v, const ShaderStages& s) {
@@ -33,7 +34,7 @@ DecalsPass::DecalsPass(const PassServices& services)
 
 ShaderStages DecalsPass::compile(const Variant& v) const {
     std::vector<shader::Define> defines = {{"ALPHA_MODE", std::to_string(int(v.mode))}};
-    if (v.counting) defines.push_back({"COUNT_FRAGMENTS", "1"});
+    if (v.counting) add_count_defines(defines, services_.context);
     return {services_.compiler.compile("transparent.vert", shader::Stage::Vertex).spirv,
             services_.compiler.compile("transparent.frag", shader::Stage::Fragment, defines).spirv};
 }
@@ -86,6 +87,10 @@ void DecalsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
                              draw_groups(cmd, *in.scene, layout, {&s.mode, 1}, Decals::Only).draws);
                      }
                  });
+    rasterized_.add(graph, in, res, res.decal_counts,
+                    {.samples = in.options.samples,
+                     .modes = {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend},
+                     .decals = Decals::Only});
 }
 
 void DecalsPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {

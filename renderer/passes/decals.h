@@ -21,6 +21,7 @@
 #include "renderer/passes/overlay_drawing.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/passes/pipeline_use.h"
+#include "renderer/passes/rasterized_count.h"
 #include "renderer/scene/scene.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
@@ -34,7 +35,10 @@ class DecalsPass final : public FramePass {
     explicit DecalsPass(const PassServices& services);
 
     const char* name() const override { return kName; }
-    void rebuild_pipelines(vk::DestroyList& retired) override { pipelines_.rebuild(retired); }
+    void rebuild_pipelines(vk::DestroyList& retired) override {
+        pipelines_.rebuild(retired);
+        rasterized_.rebuild_pipelines(retired);
+    }
     // Reads res.depth (read-only attachment), res.shadow_map, res.ao, res.contact_shadows
     // where valid; draws into res.hdr. Counts into res.decal_counts when valid.
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
@@ -59,6 +63,7 @@ class DecalsPass final : public FramePass {
 
     PassServices services_;
     OverlayDrawing drawing_;
+    RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
     PipelineUses uses_;  // this frame's
 };

@@ -33,6 +33,7 @@ DepthPrepass::DepthPrepass(const PassServices& services)
       count_layout_(create_count_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "prepass count sets"),
       discard_sets_(services.context, 1, kDiscardPoolSizes, "prepass discard count sets"),
+      rasterized_(services, kName),
       pipelines_([this](const Variant& v) { return compile(v); },
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
                  [](const Variant& v, const ShaderStages& s) {
@@ -48,6 +49,7 @@ DepthPrepass::DepthPrepass(const PassServices& services)
 
 void DepthPrepass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
+    rasterized_.rebuild_pipelines(retired);
 }
 
 std::optional<std::string> DepthPrepass::skipped(const FrameInputs& in) const {
@@ -59,7 +61,7 @@ ShaderStages DepthPrepass::compile(const Variant& v) const {
     std::vector<shader::Define> defines;
     if (v.alpha != AlphaTest::Opaque)
         defines.push_back({"ALPHA_MASK", std::to_string(int(v.alpha))});
-    if (v.counting) defines.push_back({"COUNT_FRAGMENTS", "1"});
+    if (v.counting) add_count_defines(defines, services_.context);
     if (v.alpha_to_coverage) defines.push_back({"ALPHA_TO_COVERAGE", "1"});
     if (v.count_discards) defines.push_back({"COUNT_DISCARDS", "1"});
     std::vector<shader::Define> vert_defines;
@@ -146,6 +148,10 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
         [this](graph::PassContext& ctx, const Data& d) {
             record(ctx, d.in, d.res, d.msaa, d.draw, d.discards);
         });
+    rasterized_.add(graph, in, res, res.prepass_counts,
+                    {.samples = in.options.samples,
+                     .modes = {AlphaMode::Opaque, AlphaMode::Mask},
+                     .decals = scene_groups(in.options.decal_pass)});
 }
 
 VkDescriptorSet DepthPrepass::discard_set(graph::PassContext& ctx, const FrameInputs& in,

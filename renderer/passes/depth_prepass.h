@@ -32,6 +32,7 @@
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/passes/pipeline_use.h"
+#include "renderer/passes/rasterized_count.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
@@ -108,6 +109,7 @@ class DepthPrepass final : public FramePass {
     vk::PipelineLayout layout_;
     FrameDescriptorPool count_sets_;
     FrameDescriptorPool discard_sets_;
+    RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
     graph::BufferHandle discards_;  // this frame's discard counters (count_discards=on)
     PipelineUses uses_;             // this frame's

@@ -21,6 +21,7 @@ ForwardPass::ForwardPass(const PassServices& services)
       lighting_(services.context, services.preferred_depth_format),
       count_layout_(create_count_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "forward count sets"),
+      rasterized_(services, kName),
       pipelines_([this](const Variant& v) { return compile(v); },
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
                  [](const Variant& v, const ShaderStages& s) {
@@ -34,6 +35,7 @@ ForwardPass::ForwardPass(const PassServices& services)
 
 void ForwardPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
+    rasterized_.rebuild_pipelines(retired);
 }
 
 void ForwardPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
@@ -47,7 +49,7 @@ ShaderStages ForwardPass::compile(const Variant& v) const {
     if (v.non_invariant) vert_defines.push_back({"NON_INVARIANT", "1"});
     if (v.prepass_inputs) frag_defines.push_back({"PREPASS", "1"});
     if (v.alpha_mask) frag_defines.push_back({"ALPHA_MASK", "1"});
-    if (v.counting) frag_defines.push_back({"COUNT_FRAGMENTS", "1"});
+    if (v.counting) add_count_defines(frag_defines, services_.context);
     if (v.alpha_to_coverage) frag_defines.push_back({"ALPHA_TO_COVERAGE", "1"});
     ShaderStages s;
     s.vert = services_.compiler.compile("forward.vert", shader::Stage::Vertex, vert_defines).spirv;
@@ -117,6 +119,12 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
             d = {in, res, draw};
         },
         [this](graph::PassContext& ctx, const Data& d) { record(ctx, d.in, d.res, d.draw); });
+    using Vertex = RasterizedCount::Vertex;
+    rasterized_.add(graph, in, res, res.forward_counts,
+                    {.vertex = o.invariant ? Vertex::Scene : Vertex::SceneNonInvariant,
+                     .samples = o.samples,
+                     .modes = {AlphaMode::Opaque, AlphaMode::Mask},
+                     .decals = scene_groups(o.decal_pass)});
 }
 
 void ForwardPass::declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res,

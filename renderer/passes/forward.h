@@ -33,6 +33,7 @@
 #include "renderer/passes/lighting_set.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/passes/pipeline_use.h"
+#include "renderer/passes/rasterized_count.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
@@ -96,6 +97,7 @@ class ForwardPass final : public FramePass {
     vk::DescriptorSetLayout count_layout_;
     vk::PipelineLayout layout_;
     FrameDescriptorPool count_sets_;
+    RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
     PipelineUses uses_;  // this frame's
 };

@@ -3,6 +3,7 @@
 // frame (read once per frame from the registry), the graph handles passes meet through, and
 // the services a pass is built with. Passes never include each other (DESIGN.md); they meet
 // only here and in graph resources.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -118,10 +119,17 @@ VkFormat resolve_depth_format(DepthChoice choice, std::span<const VkFormat> supp
 // scene camera's other plane).
 scene::Camera effective_camera(const scene::Camera& camera, const FrameOptions& options);
 
-// count_fragments=on: one pass's per-pixel u32 counts of the fragments that ran its fragment
-// shader (shaded; counted on entry) and of those its alpha test then discarded.
+// The shadow map's size (square); its count images have it too.
+inline constexpr uint32_t kShadowMapSize = 2048;
+
+// count_fragments=on: one pass's per-pixel u32 counts (clear_counts creates and zeroes them,
+// readback_counts copies them): the fragments that ran its fragment shader (shaded; counted
+// on entry), those its alpha test then discarded, and those its draws rasterized (a
+// measurement draw with the depth test off: depth complexity). `quads` (half size, one texel
+// per 2x2 quad) counts the quads that ran with at least one live lane, where the device has
+// quad subgroup operations in fragment shaders; invalid elsewhere.
 struct CountImages {
-    graph::ImageHandle shaded, discarded;
+    graph::ImageHandle shaded, discarded, rasterized, quads;
     bool valid() const { return shaded.valid(); }
 };
 
@@ -143,11 +151,17 @@ struct FrameResources {
     graph::ImageHandle msaa_depth;
     graph::ImageHandle msaa_hdr;
     graph::ImageHandle final_image;  // R8G8B8A8_SRGB (imported; tonemap writes it)
-    // With count_fragments=on: each counting pass's CountImages.
+    // With count_fragments=on: each counting pass's CountImages (those that run).
+    CountImages shadow_counts;  // kShadowMapSize square
     CountImages prepass_counts;
     CountImages forward_counts;
     CountImages decal_counts;  // decal_pass (effective) only
     CountImages transparent_counts;
+    // Every counting pass's images, in pass order (invalid ones included).
+    std::array<const CountImages*, 5> all_counts() const {
+        return {&shadow_counts, &prepass_counts, &forward_counts, &decal_counts,
+                &transparent_counts};
+    }
     // Diagnostics (off: invalid). surface_id: R32_UINT, the prepass's winning surface per
     // pixel (gpu_scene.h SurfaceTable; 0 = none); zfight: R32_UINT competitors per pixel.
     graph::ImageHandle surface_id;

@@ -37,14 +37,22 @@ struct PassResult {
     uint64_t vertex_shader_invocations = 0;
     uint64_t fragment_shader_invocations = 0;
     uint64_t clipping_primitives = 0;
-    // count_fragments=on (depth_prepass, forward, decals, transparent): fragments that ran the
-    // fragment shader, counted on entry, summed from a per-pixel u32 image. With early
-    // fragment tests (every pipeline without discard) they passed the depth test; a pipeline
-    // with discard runs before its late depth test, so it counts what it rasterized.
+    // count_fragments=on (shadow, depth_prepass, forward, decals, transparent): fragments that ran
+    // the fragment shader, counted on entry, summed from a per-pixel u32 image. With early fragment
+    // tests (every pipeline without discard) they passed the depth test; a pipeline with discard
+    // runs before its late depth test, so it counts what it rasterized.
     std::optional<uint64_t> shaded_fragments;
     // count_fragments=on, the same passes: fragments their alpha test discarded (counted
     // just before the discard; shaded_fragments includes them).
     std::optional<uint64_t> discarded_fragments;
+    // count_fragments=on, the same passes and shadow: fragments their draws rasterized, what
+    // reached (or, with discard, would have reached) the depth test: depth complexity.
+    // Counted by a measurement draw of the same selection with the depth test off.
+    std::optional<uint64_t> rasterized_fragments;
+    // count_fragments=on where the device has quad subgroup operations in fragment shaders:
+    // 2x2 quads that ran the fragment shader with at least one live lane (4 lanes each, the
+    // rest helpers); 4 * quads / shaded_fragments is the quad overdraw.
+    std::optional<uint64_t> quads;
     // The graph resources the pass declared, by name, in declaration order.
     std::vector<std::string> reads, writes;
     // Geometry passes: the pipelines it bound, in first-bind order (empty for the others).

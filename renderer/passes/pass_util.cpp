@@ -156,35 +156,57 @@ void begin_hdr_over_depth(graph::PassContext& ctx, const FrameResources& res, bo
 vk::DescriptorSetLayout create_count_set_layout(vk::Context& context) {
     const VkDescriptorSetLayoutBinding bindings[] = {
         vk::layout_binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT),
-        vk::layout_binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT)};
+        vk::layout_binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT),
+        vk::layout_binding(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT)};
     return vk::DescriptorSetLayout(context, bindings, "count set layout");
+}
+
+void add_count_defines(std::vector<shader::Define>& defines, const vk::Context& context) {
+    defines.push_back({"COUNT_FRAGMENTS", "1"});
+    if (context.report().fragment_quad_operations) defines.push_back({"COUNT_QUADS", "1"});
+}
+
+std::vector<graph::ImageHandle> count_images(const FrameResources& res) {
+    std::vector<graph::ImageHandle> out;
+    for (const CountImages* c : res.all_counts())
+        for (graph::ImageHandle h : {c->shaded, c->discarded, c->rasterized, c->quads})
+            if (h.valid()) out.push_back(h);
+    return out;
 }
 
 void declare_counts(graph::PassBuilder& builder, const CountImages& counts) {
     builder.write(counts.shaded, graph::Access::StorageReadWrite, graph::Shader::Fragment);
     builder.write(counts.discarded, graph::Access::StorageReadWrite, graph::Shader::Fragment);
+    if (counts.quads.valid())
+        builder.write(counts.quads, graph::Access::StorageReadWrite, graph::Shader::Fragment);
 }
 
 void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescriptorSet set,
                      const CountImages& counts) {
-    const VkDescriptorImageInfo infos[] = {
-        {VK_NULL_HANDLE, ctx.view(counts.shaded), VK_IMAGE_LAYOUT_GENERAL},
-        {VK_NULL_HANDLE, ctx.view(counts.discarded), VK_IMAGE_LAYOUT_GENERAL}};
-    VkWriteDescriptorSet writes[2];
-    for (uint32_t i = 0; i < 2; ++i) {
-        writes[i] = vk::make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-        writes[i].dstSet = set;
-        writes[i].dstBinding = i;
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-        writes[i].pImageInfo = &infos[i];
+    const std::pair<uint32_t, graph::ImageHandle> images[] = {
+        {0, counts.shaded}, {1, counts.discarded}, {3, counts.quads}};
+    VkDescriptorImageInfo infos[3];
+    VkWriteDescriptorSet writes[3];
+    uint32_t n = 0;
+    for (const auto& [binding, image] : images) {
+        if (!image.valid()) continue;  // no quads: the shader does not use binding 3
+        infos[n] = {VK_NULL_HANDLE, ctx.view(image), VK_IMAGE_LAYOUT_GENERAL};
+        writes[n] = vk::make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[n].dstSet = set;
+        writes[n].dstBinding = binding;
+        writes[n].descriptorCount = 1;
+        writes[n].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        writes[n].pImageInfo = &infos[n];
+        ++n;
     }
-    vkUpdateDescriptorSets(device, 2, writes, 0, nullptr);
+    vkUpdateDescriptorSets(device, n, writes, 0, nullptr);
 }
 
 void collect_counts(const HostReadback& readback, const CountImages& counts, PassResult& out) {
     out.shaded_fragments = readback.u32_sum(counts.shaded);
     out.discarded_fragments = readback.u32_sum(counts.discarded);
+    out.rasterized_fragments = readback.u32_sum(counts.rasterized);
+    if (counts.quads.valid()) out.quads = readback.u32_sum(counts.quads);
 }
 
 std::string off_or_without_prepass(const FrameInputs& in, const char* knob) {

@@ -26,7 +26,8 @@ struct DeviceReport;
 }  // namespace ds::vk
 namespace ds::shader {
 class Compiler;
-}
+struct Define;
+}  // namespace ds::shader
 
 namespace ds {
 class HostReadback;
@@ -109,14 +110,20 @@ const char* depth_resolve_name(const vk::DeviceReport& report, bool reverse_z);
 inline constexpr VkFormat kCountFormat = VK_FORMAT_R32_UINT;
 inline constexpr uint32_t kCountSet = 3;
 // A pool for one count set per frame.
-inline constexpr VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2}};
+inline constexpr VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 3}};
 vk::DescriptorSetLayout create_count_set_layout(vk::Context& context);
+// A counting fragment shader's defines on this device: COUNT_FRAGMENTS=1, and COUNT_QUADS=1
+// where it has quad subgroup operations in fragment shaders.
+void add_count_defines(std::vector<shader::Define>& defines, const vk::Context& context);
+// Every valid count image of the frame's counting passes (clear_counts, readback_counts).
+std::vector<graph::ImageHandle> count_images(const FrameResources& res);
 // Declares what the counting fragment shader does to `counts` (clear_counts zeroed them).
 void declare_counts(graph::PassBuilder& builder, const CountImages& counts);
-// Set 3: binding 0 the shaded counts, binding 1 the discarded ones.
+// Set 3: binding 0 the shaded counts, binding 1 the discarded ones, binding 3 the quads.
 void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescriptorSet set,
                      const CountImages& counts);
-// The pass's shaded and discarded totals from its read-back count images (none uncounted).
+// The pass's shaded, discarded, rasterized and quad totals from its read-back count images
+// (none uncounted).
 void collect_counts(const HostReadback& readback, const CountImages& counts, PassResult& out);
 
 }  // namespace ds::passes

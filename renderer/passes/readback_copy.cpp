@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "renderer/format/format.h"
+#include "renderer/passes/pass_util.h"
 #include "renderer/readback/host_readback.h"
 
 namespace ds::passes {
@@ -66,10 +67,7 @@ std::vector<graph::ImageHandle> ReadbackCopyPass::images(const FrameInputs& in,
             if (!wants_depth(in)) return {};
             return {res.depth};
         case What::Counts: {
-            std::vector<graph::ImageHandle> out;
-            for (const CountImages& c :
-                 {res.prepass_counts, res.forward_counts, res.decal_counts, res.transparent_counts})
-                if (c.valid()) out.insert(out.end(), {c.shaded, c.discarded});
+            std::vector<graph::ImageHandle> out = count_images(res);
             if (res.zfight.valid()) out.push_back(res.zfight);
             return out;
         }

@@ -19,39 +19,52 @@ using scene::AlphaMode;
 
 ShadowPass::ShadowPass(const PassServices& services)
     : services_(services),
+      no_set_(services.context, {}, "shadow empty set"),
+      count_layout_(create_count_set_layout(services.context)),
+      count_sets_(services.context, 1, kCountPoolSizes, "shadow count sets"),
+      rasterized_(services, kName),
       pipelines_([this](const Variant& v) { return compile(v); },
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
                  [](const Variant& v, const ShaderStages& s) {
                      return describe_pipeline(pipeline_name(v), s, /*alpha_to_coverage=*/false);
                  }) {
-    const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout};
+    const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
+                                          no_set_.handle(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "shadow layout");
     pipelines_.get({.mask = false});  // shader errors surface at start-up, not in the first frame
 }
 
 void ShadowPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
+    rasterized_.rebuild_pipelines(retired);
 }
 
 ShaderStages ShadowPass::compile(const Variant& v) const {
     ShaderStages s;
     s.vert = services_.compiler.compile("shadow.vert", shader::Stage::Vertex).spirv;
-    if (v.mask) s.frag = services_.compiler.compile("shadow.frag", shader::Stage::Fragment).spirv;
+    if (!v.mask && !v.counting) return s;  // depth only
+    std::vector<shader::Define> defines = {{"ALPHA_MASK", v.mask ? "1" : "0"}};
+    if (v.counting) add_count_defines(defines, services_.context);
+    s.frag = services_.compiler.compile("shadow.frag", shader::Stage::Fragment, defines).spirv;
     return s;
 }
 
-const char* ShadowPass::pipeline_name(const Variant& v) {
-    return v.mask ? "shadow mask" : "shadow opaque";
+std::string ShadowPass::pipeline_name(const Variant& v) {
+    std::string name = v.mask ? "shadow mask" : "shadow opaque";
+    if (v.counting) name += " counting";
+    return name;
 }
 
-void ShadowPass::collect(const FrameCollect&, std::span<PassResult> own, FrameResult&) {
-    if (!own.empty()) own[0].pipelines = uses_.list();
+void ShadowPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
+    if (own.empty()) return;
+    collect_counts(c.readback, c.res.shadow_counts, own[0]);
+    own[0].pipelines = uses_.list();
 }
 
 vk::Pipeline ShadowPass::create(const Variant& v, const ShaderStages& s) const {
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag, VertexInputs::PositionUv)
         .depth_attachment(services_.preferred_depth_format)
-        .build(services_.context, pipeline_name(v));
+        .build(services_.context, pipeline_name(v).c_str());
 }
 
 std::optional<std::string> ShadowPass::skipped(const FrameInputs& in) const {
@@ -62,11 +75,15 @@ std::optional<std::string> ShadowPass::skipped(const FrameInputs& in) const {
 void ShadowPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     uses_.clear();
     if (!in.options.shadows) return;
-    const VkPipeline opaque = pipelines_.get({.mask = false});
-    const VkPipeline mask = pipelines_.get({.mask = true});
+    const bool counting = res.shadow_counts.valid();
+    const Variant opaque{.mask = false, .counting = counting};
+    const Variant mask{.mask = true, .counting = counting};
+    const Draw draw{pipelines_.get(opaque), pipelines_.get(mask), pipelines_.info(opaque),
+                    pipelines_.info(mask)};
     struct Data {
         FrameInputs in;
         graph::ImageHandle map;
+        CountImages counts;
     };
     graph.add_pass<Data>(
         kName,
@@ -78,36 +95,48 @@ void ShadowPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
             b.write(res.shadow_map, Access::DepthAttachment);
             b.read(res.frame_uniforms, Access::UniformRead,
                    graph::Shader::Vertex | graph::Shader::Fragment);
-            d = {in, res.shadow_map};
+            if (counting) declare_counts(b, res.shadow_counts);
+            d = {in, res.shadow_map, res.shadow_counts};
         },
-        [this, opaque, mask](graph::PassContext& ctx, const Data& d) {
-            record(ctx.cmd(), ctx.view(d.map), d.in, opaque, mask);
+        [this, draw](graph::PassContext& ctx, const Data& d) {
+            record(ctx, d.map, d.in, d.counts, draw);
         });
+    rasterized_.add(graph, in, res, res.shadow_counts,
+                    {.vertex = RasterizedCount::Vertex::Shadow,
+                     .modes = {AlphaMode::Opaque, AlphaMode::Mask},
+                     .decals = scene_groups(in.options.decal_pass),
+                     .cull = VK_CULL_MODE_NONE});
 }
 
-void ShadowPass::record(VkCommandBuffer cmd, VkImageView map, const FrameInputs& in,
-                        VkPipeline opaque, VkPipeline mask) {
+void ShadowPass::record(graph::PassContext& ctx, graph::ImageHandle map, const FrameInputs& in,
+                        const CountImages& counts, const Draw& draw) {
+    VkCommandBuffer cmd = ctx.cmd();
+    const VkPipelineLayout layout = layout_.handle();
+    if (counts.valid()) {
+        const VkDescriptorSet set = count_sets_.allocate(in.frame_number, count_layout_.handle());
+        write_count_set(ctx, services_.context.device(), set, counts);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kCountSet, 1, &set, 0,
+                                nullptr);
+    }
     // Stored: forward and transparent sample it after this pass.
     const VkRenderingAttachmentInfo depth =
-        depth_attachment(map, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+        depth_attachment(ctx.view(map), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                          VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE,
                          /*clear_depth=*/1.0f);
     begin_rendering(cmd, {kSize, kSize}, {}, &depth);
     set_depth_state(cmd, /*test=*/true, /*write=*/true, VK_COMPARE_OP_LESS);
     bind_geometry(cmd, *in.scene);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.handle(), 0, 1,
-                            &in.frame_set, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
+                            nullptr);
+    const Decals decals = scene_groups(in.options.decal_pass);
     const AlphaMode opaque_modes[] = {AlphaMode::Opaque};
     const AlphaMode mask_modes[] = {AlphaMode::Mask};
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, opaque);
-    const Decals decals = scene_groups(in.options.decal_pass);
-    uses_.add(pipelines_.info({.mask = false}),
-              draw_groups(cmd, *in.scene, layout_.handle(), opaque_modes, decals, VK_CULL_MODE_NONE)
-                  .draws);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mask);
-    uses_.add(
-        pipelines_.info({.mask = true}),
-        draw_groups(cmd, *in.scene, layout_.handle(), mask_modes, decals, VK_CULL_MODE_NONE).draws);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
+    uses_.add(draw.opaque_info,
+              draw_groups(cmd, *in.scene, layout, opaque_modes, decals, VK_CULL_MODE_NONE).draws);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
+    uses_.add(draw.mask_info,
+              draw_groups(cmd, *in.scene, layout, mask_modes, decals, VK_CULL_MODE_NONE).draws);
     vk::fn().cmd_end_rendering(cmd);
 }
 

@@ -15,6 +15,7 @@
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/passes/pipeline_use.h"
+#include "renderer/passes/rasterized_count.h"
 #include "renderer/scene/scene.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
@@ -25,7 +26,7 @@ class ShadowPass final : public FramePass {
   public:
     static constexpr const char* kName = "shadow";
     // 2048^2 costs lavapipe a few ms at most (the atrium: ~40 m across, 2 cm texels).
-    static constexpr uint32_t kSize = 2048;
+    static constexpr uint32_t kSize = kShadowMapSize;
 
     explicit ShadowPass(const PassServices& services);
 
@@ -45,17 +46,26 @@ class ShadowPass final : public FramePass {
   private:
     struct Variant {
         bool mask = false;  // MASK materials: the alpha test (a fragment shader); else depth only
+        bool counting = false;  // COUNT_FRAGMENTS=1 (opaque too then has a fragment shader)
         bool operator==(const Variant&) const = default;
-        size_t hash() const { return hash_fields(mask); }
+        size_t hash() const { return hash_fields(mask, counting); }
+    };
+    struct Draw {
+        VkPipeline opaque = VK_NULL_HANDLE, mask = VK_NULL_HANDLE;
+        PipelineInfo opaque_info, mask_info;
     };
     ShaderStages compile(const Variant& variant) const;
     vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
-    static const char* pipeline_name(const Variant& variant);
-    void record(VkCommandBuffer cmd, VkImageView map, const FrameInputs& in, VkPipeline opaque,
-                VkPipeline mask);
+    static std::string pipeline_name(const Variant& variant);
+    void record(graph::PassContext& ctx, graph::ImageHandle map, const FrameInputs& in,
+                const CountImages& counts, const Draw& draw);
 
     PassServices services_;
+    vk::DescriptorSetLayout no_set_;  // set 2: the count set is set 3 in every counting shader
+    vk::DescriptorSetLayout count_layout_;
     vk::PipelineLayout layout_;
+    FrameDescriptorPool count_sets_;
+    RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
     PipelineUses uses_;  // this frame's
 };

@@ -16,6 +16,7 @@ using graph::Access;
 TransparentPass::TransparentPass(const PassServices& services)
     : services_(services),
       drawing_(services, kName),
+      rasterized_(services, kName),
       pipelines_([this](const Variant& v) { return compile(v); },
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
                  [](const Variant& v, const ShaderStages& s) {
@@ -26,11 +27,12 @@ TransparentPass::TransparentPass(const PassServices& services)
 
 void TransparentPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
+    rasterized_.rebuild_pipelines(retired);
 }
 
 ShaderStages TransparentPass::compile(const Variant& v) const {
     std::vector<shader::Define> defines;
-    if (v.counting) defines.push_back({"COUNT_FRAGMENTS", "1"});
+    if (v.counting) add_count_defines(defines, services_.context);
     return {services_.compiler.compile("transparent.vert", shader::Stage::Vertex).spirv,
             services_.compiler.compile("transparent.frag", shader::Stage::Fragment, defines).spirv};
 }
@@ -66,6 +68,10 @@ void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
                      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
                      uses_.add(info, draw_sorted(cmd, *in.scene, layout, draws).draws);
                  });
+    rasterized_.add(graph, in, res, res.transparent_counts,
+                    {.samples = in.options.samples,
+                     .modes = {scene::AlphaMode::Blend},
+                     .decals = scene_groups(in.options.decal_pass)});
 }
 
 void TransparentPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {

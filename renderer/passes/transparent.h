@@ -19,6 +19,7 @@
 #include "renderer/passes/overlay_drawing.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/passes/pipeline_use.h"
+#include "renderer/passes/rasterized_count.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
 
@@ -53,6 +54,7 @@ class TransparentPass final : public FramePass {
 
     PassServices services_;
     OverlayDrawing drawing_;
+    RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
     PipelineUses uses_;  // this frame's
 };

@@ -142,8 +142,10 @@ void probe_properties(VkPhysicalDevice device, DeviceReport& r) {
     r.timestamps = base.limits.timestampComputeAndGraphics;
     r.timestamp_period_ns = base.limits.timestampPeriod;
     if (base.apiVersion < VK_API_VERSION_1_2) return;
+    auto v11 = make<VkPhysicalDeviceVulkan11Properties>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES);
     auto resolve = make<VkPhysicalDeviceDepthStencilResolveProperties>(
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_STENCIL_RESOLVE_PROPERTIES);
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_STENCIL_RESOLVE_PROPERTIES, &v11);
     auto driver = make<VkPhysicalDeviceDriverProperties>(
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES, &resolve);
     auto p2 =
@@ -154,6 +156,8 @@ void probe_properties(VkPhysicalDevice device, DeviceReport& r) {
     r.driver_id = driver.driverID;
     r.depth_resolve_modes = resolve.supportedDepthResolveModes;
     r.stencil_resolve_modes = resolve.supportedStencilResolveModes;
+    r.fragment_quad_operations = (v11.subgroupSupportedStages & VK_SHADER_STAGE_FRAGMENT_BIT) &&
+                                 (v11.subgroupSupportedOperations & VK_SUBGROUP_FEATURE_QUAD_BIT);
 }
 
 // DEPTHSCOPE_HIDE_DEPTH_FORMATS="D24_UNORM_S8_UINT X8_D24_UNORM_PACK32" (names as `info`
@@ -251,6 +255,7 @@ std::string format_report(const DeviceReport& r) {
     out << "  pipeline statistics:  " << yes(r.pipeline_statistics) << "\n";
     out << "  precise occlusion:    " << yes(r.occlusion_query_precise) << "\n";
     out << "  descriptor indexing:  " << yes(r.descriptor_indexing) << "\n";
+    out << "  fragment quad ops:    " << yes(r.fragment_quad_operations) << "\n";
     out << "  device-local memory:  " << (r.device_local_bytes >> 20) << " MiB\n";
     return out.str();
 }

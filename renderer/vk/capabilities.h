@@ -48,7 +48,7 @@ struct DeviceReport {
     uint32_t device_id = 0;
     std::string driver_name;
     std::string driver_info;
-    VkDriverId driver_id = VkDriverId(0);  // 0: not reported (Vulkan 1.1 devices)
+    VkDriverId driver_id = VkDriverId(0);         // 0: not reported (Vulkan 1.1 devices)
     std::vector<VkFormat> depth_formats;          // supported candidates, preference order
     VkFormat depth_format = VK_FORMAT_UNDEFINED;  // the one the renderer uses
     VkSampleCountFlags color_sample_counts = 0;
@@ -64,6 +64,8 @@ struct DeviceReport {
     bool sample_rate_shading = false;          // sample_shading=on (per-sample forward)
     bool geometry_shader = false;      // gl_PrimitiveID in fragment shaders (surface_id, zfight)
     bool descriptor_indexing = false;  // runtimeDescriptorArray (lavapipe 22.3: no)
+    // Quad subgroup operations in fragment shaders (count_fragments' quad counts).
+    bool fragment_quad_operations = false;
     uint64_t device_local_bytes = 0;
     uint32_t queue_family = UINT32_MAX;  // first graphics+compute family
 };

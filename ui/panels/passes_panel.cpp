@@ -1,10 +1,11 @@
 // Passes: the frame's passes in execution order with their GPU cost (this frame and the
-// median of the last 120), shader invocations and a bar each, clear and read-back passes
-// folded into one row; the selected pass's reads and writes (click one to view it) and its
-// pipelines with their early-Z verdicts (also a tooltip on the row; lost ones in a warning
-// colour); the frame-time history.
+// median of the last 120), shader invocations, exact counts (count_fragments=on) and a bar
+// each, clear, measurement and read-back passes folded into one row; the selected pass's reads and
+// writes (click one to view it) and its pipelines with their early-Z verdicts (also a tooltip on
+// the row; lost ones in a warning colour); the frame-time history.
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,7 +52,25 @@ void pipelines(const PassResult& pass) {
     }
 }
 
-void pass_row(PanelIo& io, const PassResult& p, double worst, bool counted) {
+// count_fragments=on: one counting pass's rasterized, shaded and discarded fragments and quad
+// lanes per shaded fragment ("-" where the device cannot count quads).
+void count_row(const PassResult& p) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(p.name.c_str());
+    for (const std::optional<uint64_t>& n :
+         {p.rasterized_fragments, p.shaded_fragments, p.discarded_fragments}) {
+        ImGui::TableNextColumn();
+        if (n) ImGui::Text("%llu", static_cast<unsigned long long>(*n));
+    }
+    ImGui::TableNextColumn();
+    if (p.quads && p.shaded_fragments && *p.shaded_fragments)
+        ImGui::Text("%.2f", 4.0 * double(*p.quads) / double(*p.shaded_fragments));
+    else if (p.shaded_fragments)
+        ImGui::TextDisabled("-");
+}
+
+void pass_row(PanelIo& io, const PassResult& p, double worst) {
     const Inspector& in = io.inspector;
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
@@ -81,33 +100,18 @@ void pass_row(PanelIo& io, const PassResult& p, double worst, bool counted) {
     ImGui::Text("%llu", static_cast<unsigned long long>(p.vertex_shader_invocations));
     ImGui::TableNextColumn();
     ImGui::Text("%llu", static_cast<unsigned long long>(p.fragment_shader_invocations));
-    if (counted) {
-        ImGui::TableNextColumn();
-        if (p.shaded_fragments)
-            ImGui::Text("%llu", static_cast<unsigned long long>(*p.shaded_fragments));
-    }
     ImGui::TableNextColumn();
     const float fraction = worst > 0 ? float(p.gpu_ms / worst) : 0.0f;
     ImGui::ProgressBar(fraction, ImVec2(-1, ImGui::GetTextLineHeight()), "");
 }
 
+struct Column {
+    const char* name;
+    std::string meaning;
+};
+
 // The column headers, each with what its number means on this device as a tooltip.
-void header_row(const DeviceInfo& device, bool counted) {
-    struct Column {
-        const char* name;
-        std::string meaning;
-    };
-    std::vector<Column> columns = {
-        {"pass", "graph pass, in execution order; orange: a pipeline without early-Z"},
-        {"ms", "GPU time this frame, from timestamps around the pass"},
-        {"median", "GPU time, median of the last 120 frames"},
-        {"VS inv", "vertex-shader invocations (the device's pipeline statistic)"},
-        {"FS inv", "fragment-shader invocations (the device's pipeline statistic): " +
-                       device.fragment_statistic}};
-    if (counted)
-        columns.push_back({"shaded",
-                           "exact: fragments that ran the fragment shader after the "
-                           "depth and alpha tests (count_fragments=on)"});
+void header_row(const std::vector<Column>& columns) {
     for (const Column& c : columns) ImGui::TableSetupColumn(c.name);
     ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
     ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
@@ -124,36 +128,62 @@ void header_row(const DeviceInfo& device, bool counted) {
     }
 }
 
+std::vector<Column> pass_columns(const DeviceInfo& device) {
+    return {{"pass", "graph pass, in execution order; orange: a pipeline without early-Z"},
+            {"ms", "GPU time this frame, from timestamps around the pass"},
+            {"median", "GPU time, median of the last 120 frames"},
+            {"VS inv", "vertex-shader invocations (the device's pipeline statistic)"},
+            {"FS inv", "fragment-shader invocations (the device's pipeline statistic): " +
+                           device.fragment_statistic}};
+}
+
+const std::vector<Column>& count_columns() {
+    static const std::vector<Column> columns = {
+        {"counted pass", "the passes that count (count_fragments=on)"},
+        {"rasterized",
+         "exact: fragments the pass's draws rasterized, whatever the depth test made of them: "
+         "depth complexity (a measurement draw with the depth test off)"},
+        {"shaded",
+         "exact: fragments that ran the fragment shader, counted on entry: with early-Z those "
+         "that passed the depth test, without it every rasterized one"},
+        {"discarded", "exact: of the shaded, those the alpha test discarded"},
+        {"quad",
+         "quad overdraw: lanes of the 2x2 quads that ran (helpers included) per shaded "
+         "fragment, 1.00 at best; '-': the device has no quad subgroup operations in fragment "
+         "shaders"}};
+    return columns;
+}
+
 // The folded group of clear and read-back passes; true when it is open (then TreePop()).
 bool support_row(int count, double ms) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     char label[64];
-    std::snprintf(label, sizeof label, "clear + read-back (%d)###support", count);
+    std::snprintf(label, sizeof label, "clear, measure, read-back (%d)###support", count);
     const bool open = ImGui::TreeNodeEx(label, ImGuiTreeNodeFlags_SpanFullWidth);
     ImGui::TableNextColumn();
     ImGui::TextDisabled("%.2f", ms);
     return open;
 }
 
-// The table of passes: the frame's own passes, then clears and read-backs folded into one
-// row (they are timed and barriered like any pass, but are not the frame a user tunes).
+// The table of passes: the frame's own passes, then clears, measurements and read-backs folded
+// into one row (they are timed and barriered like any pass, but are not the frame a user tunes).
 void pass_table(PanelIo& io, const FrameResult& frame) {
     double worst = 0.0;
     for (const PassResult& p : frame.passes) worst = std::max(worst, p.gpu_ms);
 
-    // count_fragments=on: the exact count beside the device's statistic.
+    // count_fragments=on: the exact counts in a table of their own below.
     const bool counted = std::any_of(frame.passes.begin(), frame.passes.end(),
                                      [](const PassResult& p) { return p.shaded_fragments; });
     const ImGuiTableFlags flags =
         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("passes", counted ? 7 : 6, flags)) return;
-    header_row(io.inspector.device(), counted);
+    if (!ImGui::BeginTable("passes", 6, flags)) return;
+    header_row(pass_columns(io.inspector.device()));
     double support_ms = 0.0;
     int support = 0;
     for (const PassResult& p : frame.passes) {
         if (p.role == graph::PassRole::Frame) {
-            pass_row(io, p, worst, counted);
+            pass_row(io, p, worst);
         } else {
             support_ms += p.gpu_ms;
             ++support;
@@ -161,9 +191,14 @@ void pass_table(PanelIo& io, const FrameResult& frame) {
     }
     if (support > 0 && support_row(support, support_ms)) {
         for (const PassResult& p : frame.passes)
-            if (p.role != graph::PassRole::Frame) pass_row(io, p, worst, counted);
+            if (p.role != graph::PassRole::Frame) pass_row(io, p, worst);
         ImGui::TreePop();
     }
+    ImGui::EndTable();
+    if (!counted || !ImGui::BeginTable("counts", 6, flags)) return;
+    header_row(count_columns());
+    for (const PassResult& p : frame.passes)
+        if (p.shaded_fragments) count_row(p);
     ImGui::EndTable();
 }
 
@@ -175,8 +210,10 @@ void selected_pass(PanelIo& io, const FrameResult& frame) {
         ImGui::Text("%s", p.name.c_str());
         declarations(io, p);
         if (p.shaded_fragments)
-            ImGui::Text("shaded fragments %llu",
-                        static_cast<unsigned long long>(*p.shaded_fragments));
+            ImGui::Text("fragments: %llu rasterized, %llu shaded, %llu discarded",
+                        static_cast<unsigned long long>(p.rasterized_fragments.value_or(0)),
+                        static_cast<unsigned long long>(*p.shaded_fragments),
+                        static_cast<unsigned long long>(p.discarded_fragments.value_or(0)));
         pipelines(p);
     }
 }

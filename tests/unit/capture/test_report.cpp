@@ -100,9 +100,26 @@ TEST(Report, PassesKeepOrderStatsAndTheExactCountOnlyWhereCounted) {
     EXPECT_EQ(keys(passes[0]), (std::set<std::string>{"name", "kind", "gpu_ms", "stats"}));
     EXPECT_EQ(passes[0]["kind"], "frame");
     EXPECT_EQ(passes[0]["stats"]["vertex_shader_invocations"], 30);
-    EXPECT_EQ(keys(passes[1]),
-              (std::set<std::string>{"name", "kind", "gpu_ms", "stats", "shaded_fragments"}));
+    // Counted without quads: the device has no quad subgroup operations, and the report says so.
+    EXPECT_EQ(keys(passes[1]), (std::set<std::string>{"name", "kind", "gpu_ms", "stats",
+                                                      "shaded_fragments", "quad_overdraw"}));
     EXPECT_EQ(passes[1]["shaded_fragments"], 512);
+    EXPECT_EQ(passes[1]["quad_overdraw"], "unsupported on this device");
+}
+
+// The three exact counts per pass, and quads as quads, lanes and lanes per shaded fragment.
+TEST(Report, CountedPassesGiveRasterizedShadedDiscardedAndQuads) {
+    FrameResult frame = two_pass_frame();
+    PassResult& forward = frame.passes[1];
+    forward.rasterized_fragments = 2048;
+    forward.discarded_fragments = 12;
+    forward.quads = 160;
+    const nlohmann::json pass = report_of(frame)["passes"][1];
+    EXPECT_EQ(pass["rasterized_fragments"], 2048);
+    EXPECT_EQ(pass["shaded_fragments"], 512);
+    EXPECT_EQ(pass["discarded_fragments"], 12);
+    EXPECT_EQ(pass["quad_overdraw"],
+              (nlohmann::json{{"quads", 160}, {"lanes", 640}, {"lanes_per_shaded", 1.25}}));
 }
 
 // A geometry pass lists its pipelines (name, early-Z verdict, draws) in bind order; a pass
