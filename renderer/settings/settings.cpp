@@ -324,8 +324,10 @@ SettingsRegistry::SettingsRegistry() {
                   I::Nothing),
         // Measurement.
         bool_knob("count_fragments", "measurement", false,
-                  "count, per pixel, fragments that really ran the shader in prepass, forward "
-                  "and transparent (shaded_fragments in the report)",
+                  "count, per pixel, the fragments each geometry pass (shadow, prepass, "
+                  "forward, decals, transparent) rasterized, shaded and discarded, and its "
+                  "quads (report: rasterized_fragments, shaded_fragments, "
+                  "discarded_fragments, quad_overdraw)",
                   I::Pipelines),
         bool_knob("count_discards", "measurement", false,
                   "count fragments the masked prepass pipeline ran and discarded "
