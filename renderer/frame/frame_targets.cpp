@@ -134,7 +134,8 @@ void FrameTargets::import(graph::RenderGraph& graph, const passes::FrameOptions&
             return import_image(kCountNames[k], counts_[k], graph::Semantic::Count, after_copy(),
                                 copied);
         };
-        *counting[i] = {import_count(2 * i), import_count(2 * i + 1)};
+        counting[i]->shaded = import_count(2 * i);
+        counting[i]->discarded = import_count(2 * i + 1);
     }
 }
 

@@ -1,10 +1,29 @@
 #include "renderer/passes/clear_counts.h"
 
+#include <algorithm>
+#include <utility>
 #include <vector>
+
+#include "renderer/gpu_scene/gpu_scene.h"
+#include "renderer/readback/host_readback.h"
 
 namespace ds::passes {
 
+void ClearCountsPass::add_draw_counters(graph::RenderGraph& graph, const FrameInputs& in,
+                                        FrameResources& res) const {
+    const VkDeviceSize bytes = std::max<size_t>(in.scene->draw_groups().size(), 1) * 4;
+    const std::pair<CountImages*, const char*> passes[] = {
+        {&res.prepass_counts, "prepass_draw_counts"},
+        {&res.forward_counts, "forward_draw_counts"},
+        {&res.decal_counts, "decal_draw_counts"},
+        {&res.transparent_counts, "transparent_draw_counts"}};
+    for (const auto& [counts, name] : passes)
+        if (counts->valid())
+            counts->draws = services_.readback.import_storage(graph, name, bytes, bytes);
+}
+
 void ClearCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
+    if (in.options.count_draws) add_draw_counters(graph, in, res);
     std::vector<graph::ImageHandle> counts;
     for (const CountImages& c :
          {res.prepass_counts, res.forward_counts, res.decal_counts, res.transparent_counts})

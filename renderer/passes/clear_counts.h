@@ -2,19 +2,27 @@
 // clear_counts (clear role; count_fragments=on or zfight=on): zeroes the u32 count images
 // the counting passes (depth_prepass, forward, transparent; zfight, whose res.zfight image
 // it creates) add into, first in the frame, so the graph plans the transfer-to-shader
-// dependency like any other instead of a barrier inside each counting pass.
+// dependency like any other instead of a barrier inside each counting pass. With
+// count_draws it also gives each counting pass its per-draw counters (CountImages::draws):
+// host buffers the host zeroes before the submit, so they need no clear.
 #include "renderer/passes/frame_pass.h"
 
 namespace ds::passes {
 
 class ClearCountsPass final : public FramePass {
   public:
-    explicit ClearCountsPass(const PassServices&) {}
+    explicit ClearCountsPass(const PassServices& services) : services_(services) {}
 
     const char* name() const override { return "clear_counts"; }
     graph::PassRole role() const override { return graph::PassRole::Clear; }
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
     void rebuild_pipelines(vk::DestroyList&) override {}
+
+  private:
+    void add_draw_counters(graph::RenderGraph& graph, const FrameInputs& in,
+                           FrameResources& res) const;
+
+    PassServices services_;
 };
 
 }  // namespace ds::passes

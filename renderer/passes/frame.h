@@ -81,6 +81,7 @@ struct FrameOptions {
     bool reverse_z = true;
     bool count_fragments = false;
     bool count_discards = false;     // masked prepass: fragments run and discarded
+    bool count_draws = false;        // per draw group counts (implies count_fragments)
     bool sample_shading = false;     // effective: also needs msaa > 1
     bool alpha_to_coverage = false;  // effective: also needs msaa > 1
     bool surface_id = false;         // effective: surface_id or zfight, and the prepass
@@ -120,8 +121,13 @@ scene::Camera effective_camera(const scene::Camera& camera, const FrameOptions& 
 
 // count_fragments=on: one pass's per-pixel u32 counts of the fragments that ran its fragment
 // shader (shaded; counted on entry) and of those its alpha test then discarded.
+// count_draws=on adds `draws`: a host buffer of one u32 per scene draw group (GpuScene
+// draw_groups order), the shaded fragments of each, binding 2 of the count set. in_view:
+// the pass draws the camera's view (not the shadow map's), so shaded - visible is waste.
 struct CountImages {
     graph::ImageHandle shaded, discarded;
+    graph::BufferHandle draws;
+    bool in_view = true;
     bool valid() const { return shaded.valid(); }
 };
 

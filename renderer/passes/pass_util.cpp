@@ -1,5 +1,7 @@
 #include "renderer/passes/pass_util.h"
 
+#include <cstring>
+
 #include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/capabilities.h"
@@ -156,13 +158,16 @@ void begin_hdr_over_depth(graph::PassContext& ctx, const FrameResources& res, bo
 vk::DescriptorSetLayout create_count_set_layout(vk::Context& context) {
     const VkDescriptorSetLayoutBinding bindings[] = {
         vk::layout_binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT),
-        vk::layout_binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT)};
+        vk::layout_binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT),
+        vk::layout_binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)};
     return vk::DescriptorSetLayout(context, bindings, "count set layout");
 }
 
 void declare_counts(graph::PassBuilder& builder, const CountImages& counts) {
     builder.write(counts.shaded, graph::Access::StorageReadWrite, graph::Shader::Fragment);
     builder.write(counts.discarded, graph::Access::StorageReadWrite, graph::Shader::Fragment);
+    if (counts.draws.valid())
+        builder.write(counts.draws, graph::Access::StorageReadWrite, graph::Shader::Fragment);
 }
 
 void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescriptorSet set,
@@ -170,21 +175,35 @@ void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescripto
     const VkDescriptorImageInfo infos[] = {
         {VK_NULL_HANDLE, ctx.view(counts.shaded), VK_IMAGE_LAYOUT_GENERAL},
         {VK_NULL_HANDLE, ctx.view(counts.discarded), VK_IMAGE_LAYOUT_GENERAL}};
-    VkWriteDescriptorSet writes[2];
-    for (uint32_t i = 0; i < 2; ++i) {
+    VkWriteDescriptorSet writes[3];
+    for (uint32_t i = 0; i < 3; ++i) {
         writes[i] = vk::make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
         writes[i].dstSet = set;
         writes[i].dstBinding = i;
         writes[i].descriptorCount = 1;
         writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-        writes[i].pImageInfo = &infos[i];
+        writes[i].pImageInfo = &infos[i % 2];
     }
-    vkUpdateDescriptorSets(device, 2, writes, 0, nullptr);
+    const VkDescriptorBufferInfo draws{
+        counts.draws.valid() ? ctx.buffer(counts.draws) : VK_NULL_HANDLE, 0, VK_WHOLE_SIZE};
+    writes[2].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[2].pImageInfo = nullptr;
+    writes[2].pBufferInfo = &draws;
+    vkUpdateDescriptorSets(device, counts.draws.valid() ? 3 : 2, writes, 0, nullptr);
 }
 
 void collect_counts(const HostReadback& readback, const CountImages& counts, PassResult& out) {
     out.shaded_fragments = readback.u32_sum(counts.shaded);
     out.discarded_fragments = readback.u32_sum(counts.discarded);
+    if (!counts.draws.valid()) return;
+    const std::span<const std::byte> bytes = readback.buffer_bytes(counts.draws);
+    out.draw_shaded.resize(bytes.size() / sizeof(uint32_t));
+    for (size_t i = 0; i < out.draw_shaded.size(); ++i) {
+        uint32_t v;
+        std::memcpy(&v, bytes.data() + i * sizeof v, sizeof v);
+        out.draw_shaded[i] = v;
+    }
+    out.draw_shaded_in_view = counts.in_view;
 }
 
 std::string off_or_without_prepass(const FrameInputs& in, const char* knob) {

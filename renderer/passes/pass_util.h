@@ -108,15 +108,19 @@ const char* depth_resolve_name(const vk::DeviceReport& report, bool reverse_z);
 // Count images (shaders/common/count.glsl, set 3): R32_UINT, one per counting pass.
 inline constexpr VkFormat kCountFormat = VK_FORMAT_R32_UINT;
 inline constexpr uint32_t kCountSet = 3;
-// A pool for one count set per frame.
-inline constexpr VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2}};
+// A pool for one count set per frame (the buffer: count_draws' per-draw counters).
+inline constexpr VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2},
+                                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
 vk::DescriptorSetLayout create_count_set_layout(vk::Context& context);
 // Declares what the counting fragment shader does to `counts` (clear_counts zeroed them).
 void declare_counts(graph::PassBuilder& builder, const CountImages& counts);
-// Set 3: binding 0 the shaded counts, binding 1 the discarded ones.
+// Set 3: binding 0 the shaded counts, binding 1 the discarded ones, binding 2 (count_draws
+// only; left unwritten otherwise, and no shader without COUNT_DRAWS declares it) the shaded
+// fragments per draw group.
 void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescriptorSet set,
                      const CountImages& counts);
-// The pass's shaded and discarded totals from its read-back count images (none uncounted).
+// The pass's shaded and discarded totals from its read-back count images (none uncounted),
+// and with count_draws its shaded fragments per draw group.
 void collect_counts(const HostReadback& readback, const CountImages& counts, PassResult& out);
 
 }  // namespace ds::passes
