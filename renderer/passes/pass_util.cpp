@@ -172,24 +172,11 @@ void declare_counts(graph::PassBuilder& builder, const CountImages& counts) {
 
 void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescriptorSet set,
                      const CountImages& counts) {
-    const VkDescriptorImageInfo infos[] = {
-        {VK_NULL_HANDLE, ctx.view(counts.shaded), VK_IMAGE_LAYOUT_GENERAL},
-        {VK_NULL_HANDLE, ctx.view(counts.discarded), VK_IMAGE_LAYOUT_GENERAL}};
-    VkWriteDescriptorSet writes[3];
-    for (uint32_t i = 0; i < 3; ++i) {
-        writes[i] = vk::make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-        writes[i].dstSet = set;
-        writes[i].dstBinding = i;
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-        writes[i].pImageInfo = &infos[i % 2];
-    }
-    const VkDescriptorBufferInfo draws{
-        counts.draws.valid() ? ctx.buffer(counts.draws) : VK_NULL_HANDLE, 0, VK_WHOLE_SIZE};
-    writes[2].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    writes[2].pImageInfo = nullptr;
-    writes[2].pBufferInfo = &draws;
-    vkUpdateDescriptorSets(device, counts.draws.valid() ? 3 : 2, writes, 0, nullptr);
+    vk::DescriptorWriter writer;
+    writer.storage_image(0, ctx.view(counts.shaded)).storage_image(1, ctx.view(counts.discarded));
+    if (counts.draws.valid())
+        writer.buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ctx.buffer(counts.draws));
+    writer.update(device, set);
 }
 
 void collect_counts(const HostReadback& readback, const CountImages& counts, PassResult& out) {

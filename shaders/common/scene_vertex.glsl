@@ -53,5 +53,5 @@ void main() {
 #if SURFACE_ID
     out_surface_base = instance.surface_base;
 #endif
-    pass_draw_group(instance);
+    PASS_DRAW_GROUP(instance);
 }
