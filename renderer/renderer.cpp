@@ -40,6 +40,9 @@ void check_device(const vk::DeviceReport& report, passes::FrameOptions& options)
     if (options.count_fragments && !report.fragment_stores_and_atomics)
         throw Error("count_fragments=on needs fragmentStoresAndAtomics, which " +
                     report.candidate.name + " does not offer");
+    if (options.count_draws && !report.occlusion_query_precise)
+        throw Error("count_draws=on needs occlusionQueryPrecise, which " + report.candidate.name +
+                    " does not offer");
     if (options.sample_shading && !report.sample_rate_shading)
         throw Error("sample_shading=on needs sampleRateShading, which " + report.candidate.name +
                     " does not offer");

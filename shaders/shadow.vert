@@ -4,6 +4,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/bindings.glsl"
+#include "common/count_draws.glsl"
 
 layout(location = 0) in vec3 in_position;
 layout(location = 2) in vec2 in_uv0;
@@ -14,4 +15,5 @@ void main() {
     gl_Position = frame.sun_view_projection *
                   (instances[gl_InstanceIndex].model * vec4(in_position, 1.0));
     out_uv0 = in_uv0;
+    PASS_DRAW_GROUP(instances[gl_InstanceIndex]);
 }

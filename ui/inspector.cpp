@@ -85,6 +85,7 @@ void Inspector::set_scene(scene::Scene scene) {
     scene_ = std::move(scene);
     summary_ = summarize(scene_);
     camera_.reset(scene_.camera, scene_.bounds);
+    viewer_.draw = -1;  // a draw group of the previous scene
     // Per-material cutoffs name the previous scene's materials: keep those this one has.
     auto cutoffs = settings_.get_map("material_alpha_cutoff");
     std::erase_if(cutoffs, [&](const auto& entry) {
@@ -136,6 +137,7 @@ void Inspector::draw() {
     resources_panel(panel, layout);
     depth_panel(panel, layout);
     advisor_panel(panel, layout);
+    draws_panel(panel, layout);
     viewer_panel(panel, layout);  // last: it takes the camera input the others left
 }
 
@@ -249,6 +251,7 @@ void Inspector::render() {
         if (frame_.inspected->name == kZfightImage)
             view::overlay_counts(view_, *frame_.inspected, frame_.rgba8, 0.3f,
                                  selected_pair_pixels());
+        view::highlight(view_, selected_draw_pixels(), 0.25f);
     } else
         view_ = view::DecodedView{};
 }
@@ -279,6 +282,15 @@ std::vector<uint8_t> Inspector::selected_pair_pixels() const {
     keep.assign(size_t(frame_.width) * frame_.height, 0);
     for (const ZfightHit& h : frame_.zfight->hits)
         if (h.pair == uint32_t(pair) && h.pixel < keep.size()) keep[h.pixel] = 1;
+    return keep;
+}
+
+std::vector<uint8_t> Inspector::selected_draw_pixels() const {
+    std::vector<uint8_t> keep;
+    const int draw = viewer_.draw;
+    if (draw < 0 || frame_.draw_pixels.empty()) return keep;
+    keep.resize(frame_.draw_pixels.size());
+    for (size_t i = 0; i < keep.size(); ++i) keep[i] = frame_.draw_pixels[i] == uint32_t(draw) + 1;
     return keep;
 }
 

@@ -70,6 +70,7 @@ struct ViewerState {
     glm::vec2 centre{0.5f, 0.5f};  // the image point at the viewport's centre (0..1)
     MouseTarget mouse = MouseTarget::Camera;
     int zfight_pair = -1;  // the Depth panel's selected pair: the zfight view shows only it
+    int draw = -1;         // the Draws panel's selected draw group: its pixels stay, the rest dims
     // Filled by the viewer panel.
     float x = 0, y = 0, w = 0, h = 0;  // the image area, in framebuffer pixels
     std::optional<view::Readout> hover;
@@ -143,11 +144,16 @@ class Inspector {
     // Hover readout of the shown resource at image texel (x, y).
     std::optional<view::Readout> readout_at(uint32_t x, uint32_t y) const;
     std::vector<uint8_t> selected_pair_pixels() const;
+    // The selected draw's pixels (surface_id's winner in its group) as a keep mask; empty
+    // when no draw is selected or the frame did not count draws.
+    std::vector<uint8_t> selected_draw_pixels() const;
     std::string zfight_text(uint32_t x, uint32_t y) const;
 
     // Panel state that outlives a frame (text fields).
     struct PanelState {
         std::array<char, 512> scene_path{};
+        std::array<char, 128> draw_filter{};  // the Draws panel's filter (mesh/material/node)
+        std::vector<size_t> draw_rows;        // the Draws panel's rows as last drawn
     };
     PanelState& panel_state() const { return panel_state_; }
 

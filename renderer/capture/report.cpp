@@ -103,6 +103,28 @@ nlohmann::json equal_check_json(const EqualCheckResult& e) {
     return {{"holes", e.holes}, {"multiple", e.multiple}, {"surfaces", surfaces}};
 }
 
+// One entry per scene draw group; a count that was not measured is null, never 0.
+nlohmann::json draws_json(const std::vector<DrawReport>& draws) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const DrawReport& d : draws) {
+        nlohmann::json entry = surface_json(d.name);  // node: the group's first instance's
+        entry["group"] = d.group;
+        entry["instances"] = {d.first_instance, d.instances};
+        entry["alpha_mode"] = d.alpha_mode;
+        if (d.decal) entry["decal"] = true;
+        entry["visible_pixels"] = d.visible_pixels ? nlohmann::json(*d.visible_pixels) : nullptr;
+        entry["samples_passed"] = d.samples_passed ? nlohmann::json(*d.samples_passed) : nullptr;
+        nlohmann::json shaded = nlohmann::json::object(), wasted = nlohmann::json::object();
+        for (const auto& [pass, n] : d.shaded_fragments) shaded[pass] = n;
+        for (const auto& [pass, n] : d.wasted_fragments) wasted[pass] = n;
+        entry["shaded_fragments"] = std::move(shaded);
+        entry["wasted_fragments"] = std::move(wasted);
+        entry["occluded"] = d.occluded;
+        out.push_back(std::move(entry));
+    }
+    return out;
+}
+
 nlohmann::json settings_json(const Settings& settings) {
     nlohmann::json json = nlohmann::json::object();  // {} even when there are none
     for (const auto& [name, value] : settings.values()) json[name] = value;
@@ -201,6 +223,13 @@ nlohmann::json frame_report(const ReportInput& in) {
                                    {"discarded", f.masked_discards->discarded}};
     if (f.zfight) json["zfight"] = zfight_json(*f.zfight);
     if (f.equal_check) json["equal_check"] = equal_check_json(*f.equal_check);
+    if (!f.draws.empty()) {
+        json["draws"] = draws_json(f.draws);
+        json["draws_info"] = {
+            {"samples_passed_from", f.draws_samples_pass},
+            {"visible_pixels", f.draws_visible_note.empty() ? "surface_id (the prepass's winner)"
+                                                            : f.draws_visible_note}};
+    }
     if (in.advice) json["advice"] = advice_json(*in.advice);
     return json;
 }

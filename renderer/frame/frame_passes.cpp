@@ -8,6 +8,7 @@
 #include "renderer/passes/depth_precision.h"
 #include "renderer/passes/depth_prepass.h"
 #include "renderer/passes/depth_resolve.h"
+#include "renderer/passes/draw_counts.h"
 #include "renderer/passes/equal_check.h"
 #include "renderer/passes/forward.h"
 #include "renderer/passes/gtao.h"
@@ -51,6 +52,7 @@ std::vector<std::unique_ptr<passes::FramePass>> make_frame_passes(const passes::
     add(std::make_unique<ReadbackCopyPass>(s, Copy::Final));
     add(std::make_unique<ReadbackCopyPass>(s, Copy::Depth));
     add(std::make_unique<ReadbackCopyPass>(s, Copy::Counts));
+    add(std::make_unique<DrawCountsPass>(s));  // count_draws: after every pass it reads
     add(std::make_unique<MsaaProbePass>(s));
     add(std::make_unique<InspectPass>(s));
     return list;

@@ -145,6 +145,10 @@ void GpuScene::upload_instances(const scene::Scene& scene, vk::UploadBatch& batc
     gpu.reserve(scene.instances.size());
     for (const scene::Mesh& mesh : scene.meshes) surfaces_.mesh_names.push_back(mesh.name);
     for (const scene::Material& m : scene.materials) surfaces_.material_names.push_back(m.name);
+    instance_groups_.assign(scene.instances.size(), 0);
+    for (size_t g = 0; g < draw_groups_.size(); ++g)
+        for (uint32_t i = 0; i < draw_groups_[g].instance_count; ++i)
+            instance_groups_[draw_groups_[g].first_instance + i] = uint32_t(g);
     uint64_t base = 0;
     for (const scene::Instance& inst : scene.instances) {
         if (inst.mesh >= scene.meshes.size()) throw Error("scene: instance of a missing mesh");
@@ -154,7 +158,11 @@ void GpuScene::upload_instances(const scene::Scene& scene, vk::UploadBatch& batc
             throw Error("scene: more than 2^32 - 2 triangles in all instances (surface ids)");
         surfaces_.instances.push_back(
             {uint32_t(base), triangles, inst.mesh, mesh.material, inst.node});
-        gpu.push_back({inst.world, normal_matrix(inst.world), uint32_t(base), {}});
+        gpu.push_back({inst.world,
+                       normal_matrix(inst.world),
+                       uint32_t(base),
+                       instance_groups_[gpu.size()],
+                       {}});
         base += triangles;
         const glm::vec3 center = scene.meshes[inst.mesh].bounds.center();
         instance_centers_.push_back(glm::vec3(inst.world * glm::vec4(center, 1.0f)));

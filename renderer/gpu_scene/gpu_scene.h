@@ -51,7 +51,8 @@ struct GpuInstance {
     glm::mat4 model{1.0f};
     glm::mat4 normal_matrix{1.0f};
     uint32_t surface_base = 0;  // surface id of the instance's triangle 0 (SurfaceTable)
-    uint32_t pad[3] = {};
+    uint32_t draw_group = 0;    // its scene::DrawGroup (count_draws' per-draw counters)
+    uint32_t pad[2] = {};
 };
 static_assert(sizeof(GpuInstance) == 144);
 
@@ -109,6 +110,8 @@ class GpuScene {
     const std::vector<GpuMesh>& meshes() const { return meshes_; }
     const SurfaceTable& surfaces() const { return surfaces_; }
     const std::vector<scene::DrawGroup>& draw_groups() const { return draw_groups_; }
+    // Per scene instance, the index of its draw group (groups partition the instances).
+    const std::vector<uint32_t>& instance_groups() const { return instance_groups_; }
     // Groups of coplanar overlays (scene::DrawGroup::decal): the decals pass's.
     size_t decal_groups() const {
         return size_t(std::count_if(draw_groups_.begin(), draw_groups_.end(),
@@ -160,6 +163,7 @@ class GpuScene {
     std::vector<VkDescriptorSet> material_sets_;
     std::vector<GpuMesh> meshes_;
     std::vector<scene::DrawGroup> draw_groups_;
+    std::vector<uint32_t> instance_groups_;
     std::vector<glm::vec3> instance_centers_;
     SurfaceTable surfaces_;
     std::vector<vk::MipFill> mip_fills_;

@@ -1,8 +1,12 @@
 #include "renderer/passes/clear_counts.h"
 
+#include <algorithm>
+#include <utility>
 #include <vector>
 
+#include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/passes/pass_util.h"
+#include "renderer/readback/host_readback.h"
 #include "renderer/vk/capabilities.h"
 #include "renderer/vk/context.h"
 
@@ -29,7 +33,21 @@ CountImages create_counts(graph::PassBuilder& b, const char* prefix, VkExtent2D 
 }  // namespace
 
 ClearCountsPass::ClearCountsPass(const PassServices& services)
-    : quads_(services.context.report().fragment_quad_operations) {}
+    : services_(services), quads_(services.context.report().fragment_quad_operations) {}
+
+void ClearCountsPass::add_draw_counters(graph::RenderGraph& graph, const FrameInputs& in,
+                                        FrameResources& res) const {
+    const VkDeviceSize bytes = std::max<size_t>(in.scene->draw_groups().size(), 1) * 4;
+    const std::pair<CountImages*, const char*> passes[] = {
+        {&res.shadow_counts, "shadow_draw_counts"},
+        {&res.prepass_counts, "prepass_draw_counts"},
+        {&res.forward_counts, "forward_draw_counts"},
+        {&res.decal_counts, "decal_draw_counts"},
+        {&res.transparent_counts, "transparent_draw_counts"}};
+    for (const auto& [counts, name] : passes)
+        if (counts->valid())
+            counts->draws = services_.readback.import_storage(graph, name, bytes, bytes);
+}
 
 void ClearCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const FrameOptions& o = in.options;
@@ -40,7 +58,10 @@ void ClearCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
         [&](graph::PassBuilder& b) {
             if (o.count_fragments) {  // the passes that run this frame
                 const VkExtent2D shadow{kShadowMapSize, kShadowMapSize};
-                if (o.shadows) res.shadow_counts = create_counts(b, "shadow", shadow, quads_);
+                if (o.shadows) {
+                    res.shadow_counts = create_counts(b, "shadow", shadow, quads_);
+                    res.shadow_counts.in_view = false;  // the sun's view: no waste to speak of
+                }
                 if (o.prepass) res.prepass_counts = create_counts(b, "prepass", frame, quads_);
                 res.forward_counts = create_counts(b, "forward", frame, quads_);
                 if (o.decal_pass) res.decal_counts = create_counts(b, "decal", frame, quads_);
@@ -62,6 +83,8 @@ void ClearCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
             };
         },
         graph::PassKind::Transfer);
+    // After the images exist: each counting pass gets its per-draw buffer.
+    if (o.count_draws) add_draw_counters(graph, in, res);
 }
 
 }  // namespace ds::passes

@@ -3,6 +3,8 @@
 // images the counting passes (shadow, depth_prepass, forward, decals, transparent: their
 // CountImages; zfight: res.zfight) add into, first in the frame, so the graph plans the
 // transfer-to-shader dependency like any other instead of a barrier inside each counting pass.
+// With count_draws it also gives each counting pass its per-draw counters (CountImages::draws):
+// host buffers the host zeroes before the submit, so they need no clear.
 #include "renderer/passes/frame_pass.h"
 
 namespace ds::passes {
@@ -17,6 +19,10 @@ class ClearCountsPass final : public FramePass {
     void rebuild_pipelines(vk::DestroyList&) override {}
 
   private:
+    void add_draw_counters(graph::RenderGraph& graph, const FrameInputs& in,
+                           FrameResources& res) const;
+
+    PassServices services_;
     bool quads_;  // the device counts quads (vk::DeviceReport::fragment_quad_operations)
 };
 

@@ -35,8 +35,14 @@ DecalsPass::DecalsPass(const PassServices& services)
 ShaderStages DecalsPass::compile(const Variant& v) const {
     std::vector<shader::Define> defines = {{"ALPHA_MODE", std::to_string(int(v.mode))}};
     if (v.counting) add_count_defines(defines, services_.context);
-    return {services_.compiler.compile("transparent.vert", shader::Stage::Vertex).spirv,
-            services_.compiler.compile("transparent.frag", shader::Stage::Fragment, defines).spirv};
+    std::vector<shader::Define> vert_defines;
+    if (v.count_draws) {
+        vert_defines.push_back({"COUNT_DRAWS", "1"});
+        defines.push_back({"COUNT_DRAWS", "1"});
+    }
+    return {
+        services_.compiler.compile("transparent.vert", shader::Stage::Vertex, vert_defines).spirv,
+        services_.compiler.compile("transparent.frag", shader::Stage::Fragment, defines).spirv};
 }
 
 // Distinct for every variant one frame can use (counting changes the fragment shader).
@@ -72,7 +78,8 @@ void DecalsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
                         .counting = res.decal_counts.valid(),
                         .reverse_z = in.options.reverse_z,
                         .samples = in.options.samples,
-                        .depth = in.options.depth_format};
+                        .depth = in.options.depth_format,
+                        .count_draws = res.decal_counts.draws.valid()};
         return Step{mode, pipelines_.get(v), pipelines_.info(v)};
     };
     const std::array<Step, 3> order = {step(AlphaMode::Opaque), step(AlphaMode::Mask),

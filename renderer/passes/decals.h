@@ -52,9 +52,11 @@ class DecalsPass final : public FramePass {
         bool reverse_z = true;  // the bias's direction
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
+        bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
         bool operator==(const Variant&) const = default;
         size_t hash() const {
-            return hash_fields(int(mode), counting, reverse_z, int(samples), int(depth));
+            return hash_fields(int(mode), counting, reverse_z, int(samples), int(depth),
+                               count_draws);
         }
     };
     ShaderStages compile(const Variant& variant) const;

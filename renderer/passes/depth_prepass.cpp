@@ -38,7 +38,8 @@ DepthPrepass::DepthPrepass(const PassServices& services)
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
                  [](const Variant& v, const ShaderStages& s) {
                      return describe_pipeline(pipeline_name(v), s, v.alpha_to_coverage);
-                 }) {
+                 }),
+      queries_(services.context) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           discard_layout_.handle(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "depth prepass layout");
@@ -65,6 +66,10 @@ ShaderStages DepthPrepass::compile(const Variant& v) const {
     if (v.alpha_to_coverage) defines.push_back({"ALPHA_TO_COVERAGE", "1"});
     if (v.count_discards) defines.push_back({"COUNT_DISCARDS", "1"});
     std::vector<shader::Define> vert_defines;
+    if (v.count_draws) {
+        defines.push_back({"COUNT_DRAWS", "1"});
+        vert_defines.push_back({"COUNT_DRAWS", "1"});
+    }
     if (v.surface_id) {
         defines.push_back({"SURFACE_ID", "1"});
         vert_defines.push_back({"SURFACE_ID", "1"});
@@ -102,11 +107,15 @@ vk::Pipeline DepthPrepass::create(const Variant& v, const ShaderStages& s) const
 void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     discards_ = {};
     uses_.clear();
+    // Sorted, one draw per instance; else one per group.
+    queries_.begin_frame(in.options.count_draws && in.options.prepass,
+                         uint32_t(in.scene->instance_groups().size()));
     if (!in.options.prepass) return;
     const Variant opaque{.counting = res.prepass_counts.valid(),
                          .surface_id = in.options.surface_id,
                          .samples = in.options.samples,
-                         .depth = in.options.depth_format};
+                         .depth = in.options.depth_format,
+                         .count_draws = res.prepass_counts.draws.valid()};
     // Only the pipeline with the alpha test changes: the opaque one keeps early-Z and its
     // variant, so normal frames share it.
     Variant tested = opaque;
@@ -167,6 +176,7 @@ void DepthPrepass::collect(const FrameCollect& c, std::span<PassResult> own, Fra
     if (own.empty()) return;
     collect_counts(c.readback, c.res.prepass_counts, own[0]);
     own[0].pipelines = uses_.list();
+    own[0].draw_samples_passed = queries_.per_group(c.in.scene->draw_groups().size());
     const std::span<const std::byte> bytes = c.readback.buffer_bytes(discards_);
     if (bytes.size() < kDiscardBytes) return;
     uint32_t counts[2] = {};
@@ -280,6 +290,7 @@ void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const 
         draw.counts = count_sets_.allocate(in.frame_number, count_layout_.handle());
         write_count_set(ctx, services_.context.device(), draw.counts, res.prepass_counts);
     }
+    queries_.reset(cmd);
     begin(ctx, in, res, msaa);
     draw_scene(cmd, in, draw);
     vk::fn().cmd_end_rendering(cmd);
@@ -301,10 +312,11 @@ void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const 
     // their (normal-mapped) fragment shader runs; off: instanced groups in authored order.
     auto draw_modes = [&](std::span<const AlphaMode> modes) {
         const Decals decals = scene_groups(in.options.decal_pass);
-        if (!in.options.prepass_sort) return draw_groups(cmd, *in.scene, layout, modes, decals);
+        if (!in.options.prepass_sort)
+            return draw_groups(cmd, *in.scene, layout, modes, decals, std::nullopt, &queries_);
         const auto sorted =
             sort_by_distance(*in.scene, in.camera_position, modes, DrawOrder::FrontToBack, decals);
-        return draw_sorted(cmd, *in.scene, layout, sorted);
+        return draw_sorted(cmd, *in.scene, layout, sorted, &queries_);
     };
     if (draw.mask) {
         const AlphaMode opaque[] = {AlphaMode::Opaque};

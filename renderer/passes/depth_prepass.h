@@ -19,6 +19,9 @@
 // surface_id (knob surface_id, or zfight): a third attachment, R32_UINT res.surface_id, the
 // winning surface per pixel (at msaa > 1 resolved SAMPLE_ZERO, as integers must be).
 //
+// count_draws=on: the prepass decides visibility, so each of its draws is inside a precise
+// occlusion query (DrawQueries; samples_passed per draw group).
+//
 // count_discards=on: that pipeline counts the fragments it ran and those it discarded into a
 // small host storage buffer (set 2, HostReadback), read after the frame's fence.
 #include <array>
@@ -28,6 +31,7 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/graph/graph.h"
+#include "renderer/passes/draw_queries.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
@@ -70,10 +74,11 @@ class DepthPrepass final : public FramePass {
         bool surface_id = false;         // SURFACE_ID=1: a third, u32 attachment
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
+        bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(int(alpha), counting, alpha_to_coverage, count_discards, surface_id,
-                               int(samples), int(depth));
+                               int(samples), int(depth), count_draws);
         }
     };
     static constexpr uint32_t kDiscardSet = 2;
@@ -113,6 +118,7 @@ class DepthPrepass final : public FramePass {
     PipelineVariants<Variant> pipelines_;
     graph::BufferHandle discards_;  // this frame's discard counters (count_discards=on)
     PipelineUses uses_;             // this frame's
+    DrawQueries queries_;           // count_draws: samples passed per draw
 };
 
 }  // namespace ds::passes

@@ -26,7 +26,8 @@ ForwardPass::ForwardPass(const PassServices& services)
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
                  [](const Variant& v, const ShaderStages& s) {
                      return describe_pipeline(pipeline_name(v), s, v.alpha_to_coverage);
-                 }) {
+                 }),
+      queries_(services.context) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           lighting_.layout(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "forward layout");
@@ -42,6 +43,7 @@ void ForwardPass::collect(const FrameCollect& c, std::span<PassResult> own, Fram
     if (own.empty()) return;
     collect_counts(c.readback, c.res.forward_counts, own[0]);
     own[0].pipelines = uses_.list();
+    own[0].draw_samples_passed = queries_.per_group(c.in.scene->draw_groups().size());
 }
 
 ShaderStages ForwardPass::compile(const Variant& v) const {
@@ -51,6 +53,10 @@ ShaderStages ForwardPass::compile(const Variant& v) const {
     if (v.alpha_mask) frag_defines.push_back({"ALPHA_MASK", "1"});
     if (v.counting) add_count_defines(frag_defines, services_.context);
     if (v.alpha_to_coverage) frag_defines.push_back({"ALPHA_TO_COVERAGE", "1"});
+    if (v.count_draws) {
+        vert_defines.push_back({"COUNT_DRAWS", "1"});
+        frag_defines.push_back({"COUNT_DRAWS", "1"});
+    }
     ShaderStages s;
     s.vert = services_.compiler.compile("forward.vert", shader::Stage::Vertex, vert_defines).spirv;
     s.frag =
@@ -86,7 +92,8 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
                          .counting = res.forward_counts.valid(),
                          .sample_shading = o.sample_shading,
                          .samples = o.samples,
-                         .depth = o.depth_format};
+                         .depth = o.depth_format,
+                         .count_draws = res.forward_counts.draws.valid()};
     // The pipelines with the alpha test: alpha-to-coverage replaces their discard.
     Variant mask = opaque;
     mask.alpha_mask = true;
@@ -101,6 +108,7 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
         draw.mask_info = pipelines_.info(mask);
     }
     uses_.clear();
+    queries_.begin_frame(o.count_draws && !o.prepass, uint32_t(in.scene->draw_groups().size()));
     draw.lighting = {.shadow_map = res.shadow_map,
                      .normals = o.prepass ? res.normals : graph::ImageHandle{},
                      .roughness = o.prepass ? res.roughness : graph::ImageHandle{},
@@ -167,6 +175,7 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     }
     const VkDescriptorSet lighting = lighting_.write(ctx, in.frame_number, draw.lighting);
 
+    queries_.reset(cmd);
     begin(ctx, o, res);
     const VkCompareOp test = !o.prepass      ? o.closer()
                              : o.depth_equal ? VK_COMPARE_OP_EQUAL
@@ -186,12 +195,13 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     const AlphaMode mask[] = {AlphaMode::Mask};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
     const Decals decals = scene_groups(o.decal_pass);
-    uses_.add(draw.opaque_info, draw_groups(cmd, *in.scene, layout, opaque, decals).draws);
+    uses_.add(draw.opaque_info,
+              draw_groups(cmd, *in.scene, layout, opaque, decals, std::nullopt, &queries_).draws);
     // MASK after opaque either way: with the prepass and EQUAL the same pipeline (EQUAL does
     // the alpha test's work), otherwise the discard pipeline, testing against opaque depth.
     if (draw.mask) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
     uses_.add(draw.mask ? draw.mask_info : draw.opaque_info,
-              draw_groups(cmd, *in.scene, layout, mask, decals).draws);
+              draw_groups(cmd, *in.scene, layout, mask, decals, std::nullopt, &queries_).draws);
     vk::fn().cmd_end_rendering(cmd);
 }
 

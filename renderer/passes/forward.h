@@ -28,6 +28,7 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/graph/graph.h"
+#include "renderer/passes/draw_queries.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/lighting_set.h"
@@ -68,10 +69,11 @@ class ForwardPass final : public FramePass {
         bool alpha_to_coverage = false;  // MASK pipelines, alpha_to_coverage=on
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
+        bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(prepass_inputs, alpha_mask, non_invariant, counting, sample_shading,
-                               alpha_to_coverage, int(samples), int(depth));
+                               alpha_to_coverage, int(samples), int(depth), count_draws);
         }
     };
 
@@ -100,6 +102,8 @@ class ForwardPass final : public FramePass {
     RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
     PipelineUses uses_;  // this frame's
+    // count_draws with prepass=off: forward decides visibility, so its draws are queried.
+    DrawQueries queries_;
 };
 
 }  // namespace ds::passes

@@ -117,7 +117,9 @@ FrameOptions FrameOptions::from(const Settings& s) {
     // equal_check reads forward's per-pixel counts and names the surfaces that won.
     o.equal_check =
         s.get_bool("equal_check") && o.prepass && o.depth_equal && s.get_int("msaa") == 1;
-    o.count_fragments = s.get_bool("count_fragments") || o.equal_check;
+    // count_draws counts per draw in the counting shaders and names pixels by surface_id.
+    o.count_draws = s.get_bool("count_draws");
+    o.count_fragments = s.get_bool("count_fragments") || o.equal_check || o.count_draws;
     // The registry allows 1..8; VkSampleCountFlagBits are the powers of two themselves.
     const int msaa = s.get_int("msaa");
     if (!std::has_single_bit(unsigned(msaa)))
@@ -133,7 +135,8 @@ FrameOptions FrameOptions::from(const Settings& s) {
     o.zfight = s.get_bool("zfight") && o.prepass && !o.msaa();
     o.zfight_steps = uint32_t(s.get_int("zfight_steps"));
     o.depth_precision = (s.get_bool("depth_precision") || o.zfight) && o.prepass;
-    o.surface_id = (s.get_bool("surface_id") || o.zfight || o.equal_check) && o.prepass;
+    o.surface_id =
+        (s.get_bool("surface_id") || o.zfight || o.equal_check || o.count_draws) && o.prepass;
     o.depth_choice = depth_choice_of(s.get("depth_format"));
     o.znear = plane(s, "znear");
     o.zfar = plane(s, "zfar");

@@ -82,6 +82,7 @@ struct FrameOptions {
     bool reverse_z = true;
     bool count_fragments = false;
     bool count_discards = false;     // masked prepass: fragments run and discarded
+    bool count_draws = false;        // per draw group counts (implies count_fragments)
     bool sample_shading = false;     // effective: also needs msaa > 1
     bool alpha_to_coverage = false;  // effective: also needs msaa > 1
     bool surface_id = false;         // effective: surface_id or zfight, and the prepass
@@ -128,8 +129,13 @@ inline constexpr uint32_t kShadowMapSize = 2048;
 // measurement draw with the depth test off: depth complexity). `quads` (half size, one texel
 // per 2x2 quad) counts the quads that ran with at least one live lane, where the device has
 // quad subgroup operations in fragment shaders; invalid elsewhere.
+// count_draws=on adds `draws`: a host buffer of one u32 per scene draw group (GpuScene
+// draw_groups order), the shaded fragments of each, binding 2 of the count set. in_view:
+// the pass draws the camera's view (not the shadow map's), so shaded - visible is waste.
 struct CountImages {
     graph::ImageHandle shaded, discarded, rasterized, quads;
+    graph::BufferHandle draws;
+    bool in_view = true;
     bool valid() const { return shaded.valid(); }
 };
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -57,6 +58,15 @@ struct PassResult {
     std::vector<std::string> reads, writes;
     // Geometry passes: the pipelines it bound, in first-bind order (empty for the others).
     std::vector<PipelineReport> pipelines;
+    // count_draws=on, every pass that binds the count set: its shaded fragments per scene
+    // draw group (GpuScene::draw_groups order); in_view: drawn from the camera (not the
+    // light), so shaded minus visible pixels is waste (DrawReport::wasted_fragments).
+    std::vector<uint64_t> draw_shaded;
+    bool draw_shaded_in_view = true;
+    // count_draws=on, the pass that decides visibility (the prepass, else forward): per draw
+    // group, the samples that passed its depth test (precise occlusion queries, summed over
+    // the group's draws); none for a group the pass does not draw.
+    std::vector<std::optional<uint64_t>> draw_samples_passed;
 };
 
 // One resource of the frame's graph (the inspector's Resources panel).
@@ -139,6 +149,30 @@ struct EqualCheckResult {
     std::vector<EqualCheckSurface> surfaces;  // most pixels first, at most ten
 };
 
+// count_draws=on: one scene draw group (mesh + instance range, what forward draws in one
+// call; the sorted prepass draws its instances one by one) and what each pass did with it.
+struct DrawReport {
+    uint32_t group = 0;  // index in the scene's draw groups
+    SurfaceName name;    // mesh, material, and the node of its first instance
+    uint32_t first_instance = 0, instances = 0;
+    std::string alpha_mode;  // "opaque" | "mask" | "blend"
+    bool decal = false;      // a coplanar overlay (drawn by the decals pass when it runs)
+    // Pixels whose surface_id (the prepass's winner) is one of its instances' triangles: they
+    // sum to covered_pixels (msaa > 1: sample 0's winner). None without the prepass, and for
+    // a group the prepass does not draw (BLEND, decals).
+    std::optional<uint64_t> visible_pixels;
+    // Samples that passed the visibility pass's depth test; none where it does not draw it.
+    std::optional<uint64_t> samples_passed;
+    // Per counting pass (by pass name): fragments that ran its fragment shader.
+    std::vector<std::pair<std::string, uint64_t>> shaded_fragments;
+    // Per in-view counting pass that shaded it (> 0), where visible_pixels is known: shaded
+    // minus visible, the fragments that ran its shader and do not show.
+    std::vector<std::pair<std::string, int64_t>> wasted_fragments;
+    // Drawn by the visibility pass and nothing of it visible (visible_pixels, or without the
+    // prepass samples_passed, is 0).
+    bool occluded = false;
+};
+
 struct FrameResult {
     uint32_t width = 0, height = 0;
     std::vector<uint8_t> rgba8;      // final image, sRGB-encoded, tightly packed, top row first;
@@ -155,6 +189,14 @@ struct FrameResult {
     std::optional<DiscardCounts> masked_discards;  // count_discards=on with the prepass
     std::optional<ZfightResult> zfight;            // zfight=on with the prepass
     std::optional<EqualCheckResult> equal_check;   // equal_check=on (prepass, EQUAL, 1x)
+    // count_draws=on: every scene draw group, in scene order; the pass whose occlusion
+    // queries gave samples_passed; why visible pixels are missing ("" when they are not);
+    // per pixel (row 0 = top), the draw group whose surface won + 1 (0: none; empty without
+    // the prepass): what the viewer highlights for a selected draw.
+    std::vector<DrawReport> draws;
+    std::string draws_samples_pass;
+    std::string draws_visible_note;
+    std::vector<uint32_t> draw_pixels;
     // Every resource of the frame's graph, in creation order (the inspect pass's own target
     // left out).
     std::vector<ResourceSummary> resources;

@@ -1,5 +1,7 @@
 #include "renderer/passes/pass_util.h"
 
+#include <cstring>
+
 #include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/capabilities.h"
@@ -157,6 +159,7 @@ vk::DescriptorSetLayout create_count_set_layout(vk::Context& context) {
     const VkDescriptorSetLayoutBinding bindings[] = {
         vk::layout_binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT),
         vk::layout_binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT),
+        vk::layout_binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT),
         vk::layout_binding(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT)};
     return vk::DescriptorSetLayout(context, bindings, "count set layout");
 }
@@ -179,27 +182,18 @@ void declare_counts(graph::PassBuilder& builder, const CountImages& counts) {
     builder.write(counts.discarded, graph::Access::StorageReadWrite, graph::Shader::Fragment);
     if (counts.quads.valid())
         builder.write(counts.quads, graph::Access::StorageReadWrite, graph::Shader::Fragment);
+    if (counts.draws.valid())
+        builder.write(counts.draws, graph::Access::StorageReadWrite, graph::Shader::Fragment);
 }
 
 void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescriptorSet set,
                      const CountImages& counts) {
-    const std::pair<uint32_t, graph::ImageHandle> images[] = {
-        {0, counts.shaded}, {1, counts.discarded}, {3, counts.quads}};
-    VkDescriptorImageInfo infos[3];
-    VkWriteDescriptorSet writes[3];
-    uint32_t n = 0;
-    for (const auto& [binding, image] : images) {
-        if (!image.valid()) continue;  // no quads: the shader does not use binding 3
-        infos[n] = {VK_NULL_HANDLE, ctx.view(image), VK_IMAGE_LAYOUT_GENERAL};
-        writes[n] = vk::make<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-        writes[n].dstSet = set;
-        writes[n].dstBinding = binding;
-        writes[n].descriptorCount = 1;
-        writes[n].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-        writes[n].pImageInfo = &infos[n];
-        ++n;
-    }
-    vkUpdateDescriptorSets(device, n, writes, 0, nullptr);
+    vk::DescriptorWriter writer;
+    writer.storage_image(0, ctx.view(counts.shaded)).storage_image(1, ctx.view(counts.discarded));
+    if (counts.draws.valid())
+        writer.buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ctx.buffer(counts.draws));
+    if (counts.quads.valid()) writer.storage_image(3, ctx.view(counts.quads));
+    writer.update(device, set);
 }
 
 void collect_counts(const HostReadback& readback, const CountImages& counts, PassResult& out) {
@@ -207,6 +201,15 @@ void collect_counts(const HostReadback& readback, const CountImages& counts, Pas
     out.discarded_fragments = readback.u32_sum(counts.discarded);
     out.rasterized_fragments = readback.u32_sum(counts.rasterized);
     if (counts.quads.valid()) out.quads = readback.u32_sum(counts.quads);
+    if (!counts.draws.valid()) return;
+    const std::span<const std::byte> bytes = readback.buffer_bytes(counts.draws);
+    out.draw_shaded.resize(bytes.size() / sizeof(uint32_t));
+    for (size_t i = 0; i < out.draw_shaded.size(); ++i) {
+        uint32_t v;
+        std::memcpy(&v, bytes.data() + i * sizeof v, sizeof v);
+        out.draw_shaded[i] = v;
+    }
+    out.draw_shaded_in_view = counts.in_view;
 }
 
 std::string off_or_without_prepass(const FrameInputs& in, const char* knob) {

@@ -109,8 +109,9 @@ const char* depth_resolve_name(const vk::DeviceReport& report, bool reverse_z);
 // Count images (shaders/common/count.glsl, set 3): R32_UINT, one per counting pass.
 inline constexpr VkFormat kCountFormat = VK_FORMAT_R32_UINT;
 inline constexpr uint32_t kCountSet = 3;
-// A pool for one count set per frame.
-inline constexpr VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 3}};
+// A pool for one count set per frame (the buffer: count_draws' per-draw counters).
+inline constexpr VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 3},
+                                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
 vk::DescriptorSetLayout create_count_set_layout(vk::Context& context);
 // A counting fragment shader's defines on this device: COUNT_FRAGMENTS=1, and COUNT_QUADS=1
 // where it has quad subgroup operations in fragment shaders.
@@ -119,11 +120,13 @@ void add_count_defines(std::vector<shader::Define>& defines, const vk::Context& 
 std::vector<graph::ImageHandle> count_images(const FrameResources& res);
 // Declares what the counting fragment shader does to `counts` (clear_counts zeroed them).
 void declare_counts(graph::PassBuilder& builder, const CountImages& counts);
-// Set 3: binding 0 the shaded counts, binding 1 the discarded ones, binding 3 the quads.
+// Set 3: binding 0 the shaded counts, binding 1 the discarded ones, binding 2 (count_draws
+// only; left unwritten otherwise, and no shader without COUNT_DRAWS declares it) the shaded
+// fragments per draw group, binding 3 the quads (devices that count them).
 void write_count_set(const graph::PassContext& ctx, VkDevice device, VkDescriptorSet set,
                      const CountImages& counts);
 // The pass's shaded, discarded, rasterized and quad totals from its read-back count images
-// (none uncounted).
+// (none uncounted), and with count_draws its shaded fragments per draw group.
 void collect_counts(const HostReadback& readback, const CountImages& counts, PassResult& out);
 
 }  // namespace ds::passes

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "renderer/gpu_scene/gpu_scene.h"
+#include "renderer/passes/draw_queries.h"
 #include "renderer/vk/functions.h"
 
 namespace ds::passes {
@@ -66,7 +67,8 @@ bool selected(const scene::DrawGroup& group, std::span<const scene::AlphaMode> m
 
 DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
                        std::span<const scene::AlphaMode> modes, Decals decals,
-                       std::optional<VkCullModeFlags> cull) {
+                       std::optional<VkCullModeFlags> cull, DrawQueries* queries) {
+    if (queries && !queries->on()) queries = nullptr;
     DrawCounts counts;
     uint32_t material = UINT32_MAX;
     for (const scene::DrawGroup& g : scene.draw_groups()) {
@@ -76,8 +78,10 @@ DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
         bind_material(cmd, scene, layout, mesh.material, material);
         vk::fn().cmd_set_cull_mode(cmd, cull.value_or(cull_mode(g.double_sided)));
         // gl_InstanceIndex = first_instance + i indexes the instance buffer directly.
+        if (queries) queries->begin(cmd, uint32_t(&g - scene.draw_groups().data()));
         vkCmdDrawIndexed(cmd, mesh.index_count, g.instance_count, mesh.first_index,
                          mesh.vertex_offset, g.first_instance);
+        if (queries) queries->end(cmd);
         ++counts.draws;
         counts.instances += g.instance_count;
     }
@@ -119,15 +123,18 @@ std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 ca
 }
 
 DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
-                       std::span<const InstanceDraw> draws) {
+                       std::span<const InstanceDraw> draws, DrawQueries* queries) {
+    if (queries && !queries->on()) queries = nullptr;
     DrawCounts counts;
     uint32_t material = UINT32_MAX;
     for (const InstanceDraw& d : draws) {
         const GpuMesh& mesh = scene.meshes()[d.group->mesh];
         bind_material(cmd, scene, layout, mesh.material, material);
         vk::fn().cmd_set_cull_mode(cmd, cull_mode(d.group->double_sided));
+        if (queries) queries->begin(cmd, uint32_t(d.group - scene.draw_groups().data()));
         vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, mesh.vertex_offset,
                          d.instance);
+        if (queries) queries->end(cmd);
         ++counts.draws;
         ++counts.instances;
     }

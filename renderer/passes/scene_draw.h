@@ -51,12 +51,16 @@ struct DrawCounts {
     uint32_t instances = 0;
 };
 
+class DrawQueries;
+
 // One instanced draw per group whose alpha mode is in `modes`, in the scene's authored
 // order. Set 1 is bound when the material changes; the cull mode follows each group's
 // double_sided flag unless `cull` overrides it. The caller has bound the pipeline and set 0.
+// With `queries` (on) each draw is inside an occlusion query of its group.
 DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
                        std::span<const scene::AlphaMode> modes, Decals decals,
-                       std::optional<VkCullModeFlags> cull = std::nullopt);
+                       std::optional<VkCullModeFlags> cull = std::nullopt,
+                       DrawQueries* queries = nullptr);
 
 // One instance, in the order it must be drawn.
 struct InstanceDraw {
@@ -74,6 +78,6 @@ std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 ca
                                              Decals decals);
 // Draws them one instance at a time (the order is per instance, not per group).
 DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
-                       std::span<const InstanceDraw> draws);
+                       std::span<const InstanceDraw> draws, DrawQueries* queries = nullptr);
 
 }  // namespace ds::passes

@@ -40,11 +40,15 @@ void ShadowPass::rebuild_pipelines(vk::DestroyList& retired) {
 }
 
 ShaderStages ShadowPass::compile(const Variant& v) const {
-    ShaderStages s;
-    s.vert = services_.compiler.compile("shadow.vert", shader::Stage::Vertex).spirv;
-    if (!v.mask && !v.counting) return s;  // depth only
-    std::vector<shader::Define> defines = {{"ALPHA_MASK", v.mask ? "1" : "0"}};
+    std::vector<shader::Define> vert_defines, defines = {{"ALPHA_MASK", v.mask ? "1" : "0"}};
     if (v.counting) add_count_defines(defines, services_.context);
+    if (v.count_draws) {
+        vert_defines.push_back({"COUNT_DRAWS", "1"});
+        defines.push_back({"COUNT_DRAWS", "1"});
+    }
+    ShaderStages s;
+    s.vert = services_.compiler.compile("shadow.vert", shader::Stage::Vertex, vert_defines).spirv;
+    if (!v.mask && !v.counting) return s;  // depth only
     s.frag = services_.compiler.compile("shadow.frag", shader::Stage::Fragment, defines).spirv;
     return s;
 }
@@ -76,8 +80,9 @@ void ShadowPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
     uses_.clear();
     if (!in.options.shadows) return;
     const bool counting = res.shadow_counts.valid();
-    const Variant opaque{.mask = false, .counting = counting};
-    const Variant mask{.mask = true, .counting = counting};
+    const bool count_draws = res.shadow_counts.draws.valid();
+    const Variant opaque{.mask = false, .counting = counting, .count_draws = count_draws};
+    const Variant mask{.mask = true, .counting = counting, .count_draws = count_draws};
     const Draw draw{pipelines_.get(opaque), pipelines_.get(mask), pipelines_.info(opaque),
                     pipelines_.info(mask)};
     struct Data {

@@ -46,9 +46,10 @@ class ShadowPass final : public FramePass {
   private:
     struct Variant {
         bool mask = false;  // MASK materials: the alpha test (a fragment shader); else depth only
-        bool counting = false;  // COUNT_FRAGMENTS=1 (opaque too then has a fragment shader)
+        bool counting = false;     // COUNT_FRAGMENTS=1 (opaque too then has a fragment shader)
+        bool count_draws = false;  // COUNT_DRAWS=1 (with counting)
         bool operator==(const Variant&) const = default;
-        size_t hash() const { return hash_fields(mask, counting); }
+        size_t hash() const { return hash_fields(mask, counting, count_draws); }
     };
     struct Draw {
         VkPipeline opaque = VK_NULL_HANDLE, mask = VK_NULL_HANDLE;

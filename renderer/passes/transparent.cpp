@@ -33,8 +33,14 @@ void TransparentPass::rebuild_pipelines(vk::DestroyList& retired) {
 ShaderStages TransparentPass::compile(const Variant& v) const {
     std::vector<shader::Define> defines;
     if (v.counting) add_count_defines(defines, services_.context);
-    return {services_.compiler.compile("transparent.vert", shader::Stage::Vertex).spirv,
-            services_.compiler.compile("transparent.frag", shader::Stage::Fragment, defines).spirv};
+    std::vector<shader::Define> vert_defines;
+    if (v.count_draws) {
+        vert_defines.push_back({"COUNT_DRAWS", "1"});
+        defines.push_back({"COUNT_DRAWS", "1"});
+    }
+    return {
+        services_.compiler.compile("transparent.vert", shader::Stage::Vertex, vert_defines).spirv,
+        services_.compiler.compile("transparent.frag", shader::Stage::Fragment, defines).spirv};
 }
 
 // Distinct for every variant one frame can use (counting changes the fragment shader).
@@ -55,7 +61,8 @@ vk::Pipeline TransparentPass::create(const Variant& v, const ShaderStages& s) co
 void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const Variant v{.counting = res.transparent_counts.valid(),
                     .samples = in.options.samples,
-                    .depth = in.options.depth_format};
+                    .depth = in.options.depth_format,
+                    .count_draws = res.transparent_counts.draws.valid()};
     const VkPipeline pipeline = pipelines_.get(v);
     const PipelineInfo info = pipelines_.info(v);
     const VkPipelineLayout layout = drawing_.layout();

@@ -44,8 +44,9 @@ class TransparentPass final : public FramePass {
         bool counting = false;  // COUNT_FRAGMENTS=1
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
+        bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
         bool operator==(const Variant&) const = default;
-        size_t hash() const { return hash_fields(counting, int(samples), int(depth)); }
+        size_t hash() const { return hash_fields(counting, int(samples), int(depth), count_draws); }
     };
 
     ShaderStages compile(const Variant& variant) const;

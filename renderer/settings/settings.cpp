@@ -333,6 +333,12 @@ SettingsRegistry::SettingsRegistry() {
                   "count fragments the masked prepass pipeline ran and discarded "
                   "(masked_discards in the report)",
                   I::Pipelines),
+        bool_knob("count_draws", "measurement", false,
+                  "per draw group: visible pixels (from surface_id), samples passed (a precise "
+                  "occlusion query per draw in the prepass, or forward without it) and shaded "
+                  "fragments per counting pass (report draws, Draws panel; turns on "
+                  "count_fragments and surface_id)",
+                  I::Pipelines),
         // Diagnostics: each adds its passes and images only when on.
         bool_knob("surface_id", "diagnostics", false,
                   "the prepass also writes surface_id: per pixel, the surface (triangle of an "

@@ -375,6 +375,16 @@ void overlay_counts(DecodedView& view, const InspectedImage& counts,
     }
 }
 
+void highlight(DecodedView& view, std::span<const uint8_t> keep, float dim) {
+    const size_t texels = size_t(view.width) * view.height;
+    if (keep.size() != texels || view.rgba8.size() != texels * 4) return;
+    for (size_t i = 0; i < texels; ++i) {
+        if (keep[i]) continue;
+        for (size_t c = 0; c < 3; ++c)
+            view.rgba8[i * 4 + c] = uint8_t(float(view.rgba8[i * 4 + c]) * dim + 0.5f);
+    }
+}
+
 std::array<uint8_t, 3> surface_color(uint32_t id) {
     uint32_t h = id * 0x9e3779b9u;  // a multiplicative hash, then one xorshift round
     h ^= h >> 15;

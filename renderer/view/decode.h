@@ -73,6 +73,10 @@ void decode_into(const InspectedImage& image, const ViewParams& params, DecodedV
 // A count image (zfight) over the frame: texels whose count is 0 (or, with `keep`, whose keep
 // byte is 0) show the final image (`final_rgba8`, same size, tightly packed) scaled by `dim`;
 // the others keep the heat colour `view` decoded. Nothing happens when the sizes differ.
+// A selection over whatever the view shows: texels whose `keep` byte is 0 are scaled by `dim`,
+// the others stay as decoded (the Draws panel's selected draw). Nothing happens when `keep`
+// is not one byte per texel.
+void highlight(DecodedView& view, std::span<const uint8_t> keep, float dim);
 void overlay_counts(DecodedView& view, const InspectedImage& counts,
                     std::span<const uint8_t> final_rgba8, float dim = 0.3f,
                     std::span<const uint8_t> keep = {});

@@ -67,4 +67,57 @@ double TimestampPool::ticks_to_ms(uint64_t begin, uint64_t end) const {
     return double(delta) * period_ns_ * 1e-6;
 }
 
+OcclusionPool::OcclusionPool(Context& context, uint32_t count)
+    : device_(context.device()), count_(count) {
+    if (!context.report().occlusion_query_precise)
+        throw Error("precise occlusion queries are not supported on " +
+                    context.report().candidate.name);
+    auto info = make<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
+    info.queryType = VK_QUERY_TYPE_OCCLUSION;
+    info.queryCount = count;
+    check(vkCreateQueryPool(device_, &info, nullptr, &pool_), "vkCreateQueryPool");
+}
+
+OcclusionPool& OcclusionPool::operator=(OcclusionPool&& other) noexcept {
+    if (this == &other) return *this;
+    reset_handle();
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    pool_ = std::exchange(other.pool_, VK_NULL_HANDLE);
+    count_ = std::exchange(other.count_, 0);
+    return *this;
+}
+
+void OcclusionPool::reset_handle() {
+    if (pool_) vkDestroyQueryPool(device_, pool_, nullptr);
+    pool_ = VK_NULL_HANDLE;
+}
+
+void OcclusionPool::reset(VkCommandBuffer cmd, uint32_t count) {
+    if (count) vkCmdResetQueryPool(cmd, pool_, 0, count);
+}
+
+void OcclusionPool::begin(VkCommandBuffer cmd, uint32_t slot) {
+    vkCmdBeginQuery(cmd, pool_, slot, VK_QUERY_CONTROL_PRECISE_BIT);
+}
+
+void OcclusionPool::end(VkCommandBuffer cmd, uint32_t slot) {
+    vkCmdEndQuery(cmd, pool_, slot);
+}
+
+std::optional<std::vector<uint64_t>> OcclusionPool::results(uint32_t count) const {
+    if (count == 0) return std::vector<uint64_t>{};
+    std::vector<uint64_t> raw(size_t(count) * 2);
+    const VkResult result = vkGetQueryPoolResults(
+        device_, pool_, 0, count, raw.size() * sizeof(uint64_t), raw.data(), 2 * sizeof(uint64_t),
+        VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
+    if (result == VK_NOT_READY) return std::nullopt;
+    check(result, "vkGetQueryPoolResults");
+    std::vector<uint64_t> samples(count);
+    for (uint32_t i = 0; i < count; ++i) {
+        if (raw[2 * i + 1] == 0) return std::nullopt;
+        samples[i] = raw[2 * i];
+    }
+    return samples;
+}
+
 }  // namespace ds::vk

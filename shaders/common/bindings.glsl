@@ -12,7 +12,8 @@ struct InstanceData {
     mat4 model;
     mat4 normal_matrix;
     uint surface_base;  // surface id of triangle 0, minus 1 (renderer/gpu_scene SurfaceTable)
-    uint pad0, pad1, pad2;
+    uint draw_group;    // its scene draw group (count_draws: common/count.glsl)
+    uint pad1, pad2;
 };
 layout(set = 0, binding = 1, std430) readonly buffer Instances {
     InstanceData instances[];

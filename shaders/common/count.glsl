@@ -7,6 +7,9 @@
 // shader without discard declares layout(early_fragment_tests), so only fragments that passed
 // the depth test run; one with discard tests depth late, so every fragment it rasterized runs,
 // and counts.
+// COUNT_DRAWS=1 (count_draws=on, with COUNT_FRAGMENTS): binding 2 holds one counter per scene
+// draw group, and count_fragment() also adds one to its draw's (the vertex shader passes the
+// group on: common/count_draws.glsl). Without it the shaders are exactly as before.
 #ifndef DS_COUNT_GLSL
 #define DS_COUNT_GLSL
 
@@ -17,9 +20,19 @@
 #define COUNT_QUADS 0
 #endif
 
+#ifndef COUNT_DRAWS
+#define COUNT_DRAWS 0
+#endif
+
 #if COUNT_FRAGMENTS
 layout(set = 3, binding = 0, r32ui) uniform uimage2D fragment_counts;
 layout(set = 3, binding = 1, r32ui) uniform uimage2D discarded_counts;
+#if COUNT_DRAWS
+layout(set = 3, binding = 2, std430) buffer DrawCounts {
+    uint draw_counts[];
+};
+layout(location = 5) flat in uint in_draw_group;
+#endif
 
 #if COUNT_QUADS
 #extension GL_KHR_shader_subgroup_quad : require
@@ -42,6 +55,9 @@ void count_quad() {}
 void count_fragment() {
     count_quad();
     imageAtomicAdd(fragment_counts, ivec2(gl_FragCoord.xy), 1u);
+#if COUNT_DRAWS
+    atomicAdd(draw_counts[in_draw_group], 1u);
+#endif
 }
 void count_discarded_fragment() {
     imageAtomicAdd(discarded_counts, ivec2(gl_FragCoord.xy), 1u);

@@ -19,6 +19,7 @@
 #endif
 
 #include "bindings.glsl"
+#include "count_draws.glsl"
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
@@ -52,4 +53,5 @@ void main() {
 #if SURFACE_ID
     out_surface_base = instance.surface_base;
 #endif
+    PASS_DRAW_GROUP(instance);
 }

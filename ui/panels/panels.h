@@ -3,6 +3,7 @@
 // the user asked for as actions (Inspector::apply carries them out); view-only state (the
 // viewer's zoom and decode range, the camera input) it writes directly. No Vulkan calls.
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include "ui/inspector.h"
@@ -32,6 +33,25 @@ void scene_panel(PanelIo& io, const PanelLayout& layout);
 void shaders_panel(PanelIo& io, const PanelLayout& layout);
 void depth_panel(PanelIo& io, const PanelLayout& layout);
 void advisor_panel(PanelIo& io, const PanelLayout& layout);
+void draws_panel(PanelIo& io, const PanelLayout& layout);
+
+// The Draws panel's table: column ids (kDrawShaded + k: shaded fragments of the k-th counting
+// pass of the draws' shaded_fragments), and the rows to show — indices into `draws` whose
+// mesh, material or node contains `filter` (case-insensitive), sorted by `column`; ties and
+// unmeasured (null) values keep the scene's order, nulls last.
+enum DrawColumn : int {
+    kDrawGroup,
+    kDrawMesh,
+    kDrawMaterial,
+    kDrawNode,
+    kDrawInstances,
+    kDrawVisible,
+    kDrawSamples,
+    kDrawWasted,  // over the in-view passes
+    kDrawShaded
+};
+std::vector<size_t> draw_rows(const std::vector<DrawReport>& draws, const std::string& filter,
+                              int column, bool ascending);
 
 // Shared widgets.
 void help_marker(const char* text);  // "(?)" with a tooltip

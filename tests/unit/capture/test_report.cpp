@@ -192,5 +192,50 @@ TEST(Report, PassesJsonMergesWhatTheCallerMeasured) {
                                       {{"name", "forward"}, {"kind", "readback"}, {"run", 1}}}));
 }
 
+// count_draws: one entry per draw group with its names, instance range, counts per pass and the
+// occluded flag; a count that was not measured is null, never 0; draws_info says where
+// samples_passed came from and why visible pixels are missing.
+TEST(Report, DrawsListEveryGroupWithNullsWhereNotMeasured) {
+    FrameResult frame = two_pass_frame();
+    frame.draws_samples_pass = "forward";
+    frame.draws_visible_note = "prepass=off: no surface_id";
+    DrawReport wall;
+    wall.name = {"wall_mesh", "plaster", "wall"};
+    wall.instances = 3;
+    wall.alpha_mode = "opaque";
+    wall.samples_passed = 0;
+    wall.shaded_fragments = {{"forward", 7}, {"transparent", 0}};
+    wall.occluded = true;
+    DrawReport glass;
+    glass.group = 1;
+    glass.name = {"glass_mesh", "glass", "pane"};
+    glass.first_instance = 3;
+    glass.instances = 1;
+    glass.alpha_mode = "blend";
+    glass.shaded_fragments = {{"forward", 0}, {"transparent", 40}};
+    frame.draws = {wall, glass};
+    const nlohmann::json report = report_of(frame);
+    ASSERT_TRUE(report.contains("draws"));
+    const nlohmann::json& draws = report["draws"];
+    ASSERT_EQ(draws.size(), 2u);
+    EXPECT_EQ(draws[0], (nlohmann::json{{"mesh", "wall_mesh"},
+                                        {"material", "plaster"},
+                                        {"node", "wall"},
+                                        {"group", 0},
+                                        {"instances", {0, 3}},
+                                        {"alpha_mode", "opaque"},
+                                        {"visible_pixels", nullptr},
+                                        {"samples_passed", 0},
+                                        {"shaded_fragments", {{"forward", 7}, {"transparent", 0}}},
+                                        {"wasted_fragments", nlohmann::json::object()},
+                                        {"occluded", true}}));
+    EXPECT_TRUE(draws[1]["samples_passed"].is_null());
+    EXPECT_EQ(draws[1]["shaded_fragments"]["transparent"], 40);
+    EXPECT_EQ(draws[1]["occluded"], false);
+    EXPECT_EQ(report["draws_info"]["samples_passed_from"], "forward");
+    EXPECT_EQ(report["draws_info"]["visible_pixels"], "prepass=off: no surface_id");
+    EXPECT_FALSE(report_of(two_pass_frame()).contains("draws"));
+}
+
 }  // namespace
 }  // namespace ds::capture

@@ -1,0 +1,190 @@
+// Draws: count_draws' table, one row per scene draw group — mesh, material, node (its first
+// instance's), instances, visible pixels, samples passed, wasted fragments and the shaded
+// fragments of each counting pass. Every column sorts (a click on its header), the filter
+// keeps rows whose mesh, material or node contains the text, fully occluded draws are marked,
+// and selecting a row keeps only its pixels bright in the viewer (ViewerState::draw). Off:
+// one button turns count_draws on.
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include <imgui.h>
+
+#include "ui/panels/panels.h"
+
+namespace ds::ui {
+namespace {
+
+std::string lower(std::string s) {
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+int64_t total_wasted(const DrawReport& d) {
+    int64_t sum = 0;
+    for (const auto& [pass, n] : d.wasted_fragments) sum += n;
+    return sum;
+}
+
+// A numeric column's value; none where it was not measured (sorted last).
+std::optional<int64_t> number(const DrawReport& d, int column) {
+    switch (column) {
+        case kDrawGroup:
+            return d.group;
+        case kDrawInstances:
+            return d.instances;
+        case kDrawVisible:
+            return d.visible_pixels ? std::optional<int64_t>(*d.visible_pixels) : std::nullopt;
+        case kDrawSamples:
+            return d.samples_passed ? std::optional<int64_t>(*d.samples_passed) : std::nullopt;
+        case kDrawWasted:
+            if (d.wasted_fragments.empty()) return std::nullopt;
+            return total_wasted(d);
+        default:
+            break;
+    }
+    const size_t k = size_t(column - kDrawShaded);
+    if (column < kDrawShaded || k >= d.shaded_fragments.size()) return std::nullopt;
+    return int64_t(d.shaded_fragments[k].second);
+}
+
+const std::string& text(const DrawReport& d, int column) {
+    return column == kDrawMesh       ? d.name.mesh
+           : column == kDrawMaterial ? d.name.material
+                                     : d.name.node;
+}
+
+}  // namespace
+
+std::vector<size_t> draw_rows(const std::vector<DrawReport>& draws, const std::string& filter,
+                              int column, bool ascending) {
+    const std::string needle = lower(filter);
+    std::vector<size_t> rows;
+    for (size_t i = 0; i < draws.size(); ++i) {
+        const SurfaceName& n = draws[i].name;
+        if (needle.empty() || lower(n.mesh).find(needle) != std::string::npos ||
+            lower(n.material).find(needle) != std::string::npos ||
+            lower(n.node).find(needle) != std::string::npos)
+            rows.push_back(i);
+    }
+    const bool textual = column == kDrawMesh || column == kDrawMaterial || column == kDrawNode;
+    std::stable_sort(rows.begin(), rows.end(), [&](size_t a, size_t b) {
+        if (textual) {
+            const int c = text(draws[a], column).compare(text(draws[b], column));
+            return ascending ? c < 0 : c > 0;
+        }
+        const std::optional<int64_t> x = number(draws[a], column), y = number(draws[b], column);
+        if (!x || !y) return x.has_value() && !y.has_value();  // nulls last either way
+        return ascending ? *x < *y : *x > *y;
+    });
+    return rows;
+}
+
+namespace {
+
+void cell(const std::optional<int64_t>& v) {
+    ImGui::TableNextColumn();
+    if (v)
+        ImGui::Text("%lld", static_cast<long long>(*v));
+    else
+        ImGui::TextDisabled("-");
+}
+
+void row(PanelIo& io, const DrawReport& d, size_t passes) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    const bool selected = io.viewer.draw == int(d.group);
+    char label[32];
+    std::snprintf(label, sizeof label, "%u%s", d.group, d.occluded ? " occluded" : "");
+    if (d.occluded) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.2f, 1.0f));
+    // Selecting a draw keeps its pixels bright in whatever the viewer shows; again: none.
+    if (ImGui::Selectable(label, selected, ImGuiSelectableFlags_SpanAllColumns))
+        io.viewer.draw = selected ? -1 : int(d.group);
+    if (d.occluded) ImGui::PopStyleColor();
+    for (int c : {kDrawMesh, kDrawMaterial, kDrawNode}) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(text(d, c).c_str());
+    }
+    for (int c = kDrawInstances; c < kDrawShaded + int(passes); ++c) cell(number(d, c));
+}
+
+void table(PanelIo& io, const std::vector<DrawReport>& draws) {
+    const std::vector<std::pair<std::string, uint64_t>>& passes = draws.front().shaded_fragments;
+    const int columns = kDrawShaded + int(passes.size());
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                  ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollY |
+                                  ImGuiTableFlags_Sortable | ImGuiTableFlags_Resizable;
+    if (!ImGui::BeginTable("draws", columns, flags)) return;
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_DefaultSort, 0, kDrawGroup);
+    ImGui::TableSetupColumn("mesh", 0, 0, kDrawMesh);
+    ImGui::TableSetupColumn("material", 0, 0, kDrawMaterial);
+    ImGui::TableSetupColumn("node", 0, 0, kDrawNode);
+    ImGui::TableSetupColumn("inst", 0, 0, kDrawInstances);
+    ImGui::TableSetupColumn("visible", 0, 0, kDrawVisible);
+    ImGui::TableSetupColumn("samples", 0, 0, kDrawSamples);
+    ImGui::TableSetupColumn("wasted", 0, 0, kDrawWasted);
+    for (size_t k = 0; k < passes.size(); ++k)
+        ImGui::TableSetupColumn(passes[k].first.c_str(), 0, 0, ImGuiID(kDrawShaded + k));
+    ImGui::TableHeadersRow();
+    int column = kDrawGroup;
+    bool ascending = true;
+    if (const ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs(); specs && specs->SpecsCount) {
+        column = int(specs->Specs[0].ColumnUserID);
+        ascending = specs->Specs[0].SortDirection != ImGuiSortDirection_Descending;
+    }
+    Inspector::PanelState& state = io.inspector.panel_state();
+    state.draw_rows = draw_rows(draws, state.draw_filter.data(), column, ascending);
+    for (size_t i : state.draw_rows) row(io, draws[i], passes.size());
+    ImGui::EndTable();
+}
+
+void summary(const FrameResult& f) {
+    size_t occluded = 0;
+    for (const DrawReport& d : f.draws) occluded += d.occluded;
+    ImGui::Text("%zu draws, %zu fully occluded; samples passed: %s", f.draws.size(), occluded,
+                f.draws_samples_pass.c_str());
+    if (!f.draws_visible_note.empty()) ImGui::TextDisabled("%s", f.draws_visible_note.c_str());
+}
+
+}  // namespace
+
+void draws_panel(PanelIo& io, const PanelLayout& layout) {
+    ImGui::SetNextWindowPos(ImVec2(layout.left(), layout.height * 0.55f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(
+        ImVec2(layout.width - layout.left() - layout.right(), layout.height * 0.45f),
+        ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Draws")) {
+        ImGui::End();
+        return;
+    }
+    const FrameResult& f = io.inspector.frame();
+    if (f.draws.empty()) {
+        if (io.inspector.settings().get("count_draws") != "on") {
+            ImGui::TextDisabled("count_draws is off");
+            ImGui::SameLine();
+            if (ImGui::SmallButton("turn on"))
+                io.actions.push_back(SetSetting{"count_draws", "on"});
+        } else {
+            ImGui::TextDisabled("no draws counted yet");
+        }
+        ImGui::End();
+        return;
+    }
+    summary(f);
+    Inspector::PanelState& state = io.inspector.panel_state();
+    ImGui::SetNextItemWidth(220);
+    ImGui::InputTextWithHint("##filter", "filter mesh / material / node", state.draw_filter.data(),
+                             state.draw_filter.size());
+    if (io.viewer.draw >= 0) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("clear selection")) io.viewer.draw = -1;
+    }
+    table(io, f.draws);
+    ImGui::End();
+}
+
+}  // namespace ds::ui
