@@ -176,7 +176,7 @@ void ViewComposer::stack_overlays(const FrameResult& frame, const ViewerState& v
             params = count_params(frame, viewer, c->pass);
         view::decode_into(*image, params, scratch_);
         if (!view::blend_overlay(out, scratch_, *image, o.opacity)) {
-            status_[i] = "size differs";
+            status_[i] = out.width ? "size differs" : "nothing shown under it";
             continue;
         }
         add_legend(*image, viewer, scratch_);

@@ -52,7 +52,7 @@ class ViewComposer {
     const InspectedImage* find(const FrameResult& frame, std::string_view name) const;
     const std::vector<ViewLegend>& legends() const { return legends_; }
     // Per overlay of the viewer's list: "" when drawn, else why not ("not in this frame",
-    // "hidden", "size differs").
+    // "hidden", "size differs", "nothing shown under it").
     const std::vector<std::string>& overlay_status() const { return status_; }
     // The hover text of image `name` at (x, y): its decoded readout, and for a wasted view
     // the shaded and covered counts it came from. "" outside it.

@@ -279,6 +279,21 @@ TEST_F(Overlays, ThePanelEditsTheList) {
     EXPECT_FALSE(in.viewer().overlays[1].visible) << "the second row's checkbox";
     ui->frame();
     EXPECT_EQ(in.composer().overlay_status()[1], "hidden");
+    // An image of another size (the shadow map) is listed and not drawn.
+    in.queue(ui::AddOverlay{"shadow_map"});
+    ui->frame();
+    EXPECT_EQ(in.composer().overlay_status()[2], "size differs");
+    // Hovering the image reads the drawn overlays there too (the panel folded away first, and
+    // above the Depth and Advisor title bars).
+    ImGui::SetWindowCollapsed("Overlays", true);
+    ui->frame();
+    const ui::ViewerState& v = in.viewer();
+    HeadlessInput hover;
+    hover.mouse = glm::vec2(v.x + v.w * 0.5f, v.y + v.h * 0.4f);
+    ui->frame(hover);
+    ASSERT_TRUE(v.hover);
+    EXPECT_EQ(v.hover_overlays.rfind("depth: linear depth 2.0", 0), 0u) << v.hover_overlays;
+    EXPECT_EQ(v.hover_overlays.find("forward_counts"), std::string::npos) << "hidden";
 }
 
 }  // namespace
