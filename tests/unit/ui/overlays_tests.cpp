@@ -179,6 +179,12 @@ TEST_F(Overlays, WastedOnTheOverdrawSceneIsTheHiddenLayers) {
     EXPECT_EQ(text, want);
     ASSERT_EQ(in.composer().legends().size(), 1u);
     EXPECT_EQ(in.composer().legends()[0].label, "forward: wasted");
+    if (const char* png = std::getenv("DS_WASTED_PNG")) {  // a look, hovering the image
+        HeadlessInput hover;
+        hover.mouse = glm::vec2(in.viewer().x + 40.0f, in.viewer().y + 40.0f);
+        ui->frame(hover);
+        capture::write_png_rgba8(png, ui->size().width, ui->size().height, ui->frame(hover));
+    }
 
     in.queue(ui::SetSetting{"prepass", "on"});
     ui->frame();
