@@ -391,6 +391,12 @@ uint64_t Renderer::Impl::record(Slot& slot, VkCommandBuffer cmd) {
 FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& settings,
                              uint32_t width, uint32_t height, ReadBack read_back,
                              const InspectRequest& inspect) {
+    return render(scene_camera, settings, width, height, read_back, std::span(&inspect, 1));
+}
+
+FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& settings,
+                             uint32_t width, uint32_t height, ReadBack read_back,
+                             std::span<const InspectRequest> inspect) {
     Impl& r = *impl_;
     if (!r.scene) throw Error("render: no scene (call set_scene first)");
     if (width == 0 || height == 0)
@@ -401,7 +407,7 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
     // frame uses only this one.
     const scene::Camera camera = passes::effective_camera(scene_camera, options);
     // "final" is read back as it is (sRGB-encoded); any other image through the inspect pass.
-    const bool inspect_final = inspect.resource == kFinalImageName;
+    const bool inspect_final = !inspect.empty() && inspect[0].resource == kFinalImageName;
     if (inspect_final && read_back == ReadBack::No) read_back = ReadBack::Color;
 
     const auto start = std::chrono::steady_clock::now();
@@ -415,7 +421,7 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
                                  .frame_number = frame.number,
                                  .settings = &settings,
                                  .read_back = read_back,
-                                 .inspect = inspect};
+                                 .inspect = {inspect.begin(), inspect.end()}};
     const passes::FrameResources res = r.build_graph(in, slot);
     r.write_uniforms(slot, camera, in, res);
     r.graph->compile();
@@ -432,11 +438,13 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
     r.collect(slot, graph_frame, in, res, result);
     result.resources = r.resources;
     if (inspect_final) result.inspected = final_as_inspected(result);
-    if (result.inspected) {
-        result.inspected->znear = camera.znear;
-        result.inspected->zfar = camera.zfar;
-        result.inspected->reverse_z = options.reverse_z;
-    }
+    auto with_planes = [&](InspectedImage& image) {
+        image.znear = camera.znear;
+        image.zfar = camera.zfar;
+        image.reverse_z = options.reverse_z;
+    };
+    if (result.inspected) with_planes(*result.inspected);
+    for (InspectedImage& image : result.overlays) with_planes(image);
     // The scene depth as this frame used it (report.json's "depth").
     result.depth = DepthResult{.format = options.depth_format,
                                .znear = camera.znear,

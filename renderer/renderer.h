@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,11 @@ class Renderer {
     FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
                        uint32_t height, ReadBack read_back = ReadBack::Yes,
                        const InspectRequest& inspect = {});
+    // The same with several images read back: the first is FrameResult::inspected, the others
+    // FrameResult::overlays (the viewer's overlays and what it derives views from).
+    FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
+                       uint32_t height, ReadBack read_back,
+                       std::span<const InspectRequest> inspect);
     // A camera cut: the next frame's temporal passes start over (no history, and its
     // previous_view_projection is its own). set_scene() and a new size imply one.
     void camera_cut();

@@ -138,6 +138,7 @@ void Inspector::draw() {
     depth_panel(panel, layout);
     advisor_panel(panel, layout);
     draws_panel(panel, layout);
+    overlays_panel(panel, layout);
     viewer_panel(panel, layout);  // last: it takes the camera input the others left
 }
 
@@ -188,6 +189,17 @@ void Inspector::apply(const Action& action) {
                        }
                    },
                    [&](const MeasureAdvice&) { measure_advice(); },
+                   [&](const AddOverlay& a) { viewer_.overlays.push_back({a.resource}); },
+                   [&](const RemoveOverlay& a) {
+                       if (a.index < viewer_.overlays.size())
+                           viewer_.overlays.erase(viewer_.overlays.begin() + long(a.index));
+                   },
+                   [&](const MoveOverlay& a) {
+                       const long to = long(a.index) + a.by;
+                       if (a.index < viewer_.overlays.size() && to >= 0 &&
+                           size_t(to) < viewer_.overlays.size())
+                           std::swap(viewer_.overlays[a.index], viewer_.overlays[size_t(to)]);
+                   },
                },
                action);
 }
@@ -225,7 +237,9 @@ void Inspector::update() {
 
 void Inspector::render() {
     const VkExtent2D size = render_size();
-    const InspectRequest request{viewer_.resource, viewer_.sample};
+    // The shown image, the overlays and what they are derived from and scaled by, by the
+    // names the last frame had.
+    const std::vector<InspectRequest> request = ViewComposer::request(viewer_, frame_.resources);
     // The Z-fight heat map is drawn over the dimmed final image: read that back too.
     const ReadBack read_back = viewer_.resource == kZfightImage ? ReadBack::Color : ReadBack::No;
     try {
@@ -246,14 +260,11 @@ void Inspector::render() {
     }
     ++frames_rendered_;
     history_.add(frame_);
-    if (frame_.inspected) {
-        view::decode_into(*frame_.inspected, viewer_.params, view_);
-        if (frame_.inspected->name == kZfightImage)
-            view::overlay_counts(view_, *frame_.inspected, frame_.rgba8, 0.3f,
-                                 selected_pair_pixels());
-        view::highlight(view_, selected_draw_pixels(), 0.25f);
-    } else
-        view_ = view::DecodedView{};
+    shown_ = composer_.decode_shown(frame_, viewer_, view_);
+    if (shown_ && shown_->name == kZfightImage)
+        view::overlay_counts(view_, *shown_, frame_.rgba8, 0.3f, selected_pair_pixels());
+    composer_.stack_overlays(frame_, viewer_, view_);
+    if (shown_) view::highlight(view_, selected_draw_pixels(), 0.25f);  // over every overlay
 }
 
 // Both configurations through the inspector's renderer, camera, size and settings; the next
@@ -313,16 +324,29 @@ std::string Inspector::zfight_text(uint32_t x, uint32_t y) const {
 }
 
 std::optional<view::Readout> Inspector::readout_at(uint32_t x, uint32_t y) const {
-    if (!frame_.inspected) return std::nullopt;
-    std::optional<view::Readout> r = view::readout(*frame_.inspected, x, y);
+    if (!shown_) return std::nullopt;
+    std::optional<view::Readout> r = view::readout(*shown_, x, y);
+    if (r && ViewComposer::derived(shown_->name))
+        r->decoded_text = composer_.text_at(frame_, shown_->name, x, y);
     // A surface id names its surface: the view library knows ids, the renderer the scene.
-    if (r && frame_.inspected->semantic == graph::Semantic::SurfaceId)
+    if (r && shown_->semantic == graph::Semantic::SurfaceId)
         if (const auto s = renderer_.describe_surface(uint32_t(r->raw[0])))
             r->decoded_text += ": mesh " + s->name.mesh + ", material " + s->name.material +
                                ", node " + s->name.node + ", triangle " +
                                std::to_string(s->triangle);
-    if (r && frame_.inspected->name == kZfightImage) r->decoded_text += zfight_text(x, y);
+    if (r && shown_->name == kZfightImage) r->decoded_text += zfight_text(x, y);
     return r;
+}
+
+std::string Inspector::overlay_text(uint32_t x, uint32_t y) const {
+    std::string out;
+    const std::vector<std::string>& status = composer_.overlay_status();
+    for (size_t i = 0; i < viewer_.overlays.size() && i < status.size(); ++i) {
+        if (!status[i].empty()) continue;  // not drawn
+        const std::string& name = viewer_.overlays[i].resource;
+        out += (out.empty() ? "" : "  |  ") + name + ": " + composer_.text_at(frame_, name, x, y);
+    }
+    return out;
 }
 
 ViewerBlit Inspector::viewer_blit() const {

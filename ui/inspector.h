@@ -27,6 +27,7 @@
 #include "renderer/view/readout.h"
 #include "ui/camera_controller.h"
 #include "ui/shader_watch.h"
+#include "ui/view_composer.h"
 #include "ui/viewer_blit.h"
 
 struct ImDrawData;
@@ -56,10 +57,30 @@ struct SetAutoReload {
 struct ResetSettings {};
 // The Advisor panel's "measure": the prepass advisor over the current camera and settings.
 struct MeasureAdvice {};
-using Action = std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders,
-                            SetAutoReload, ResetSettings, MeasureAdvice>;
+// The Overlays panel's list edits (opacity and visibility it writes directly: view state).
+struct AddOverlay {
+    std::string resource;  // an image of the frame or a derived view ("forward_wasted")
+};
+struct RemoveOverlay {
+    size_t index = 0;
+};
+struct MoveOverlay {
+    size_t index = 0;
+    int by = 0;  // -1: drawn earlier (under), +1: later (over)
+};
+using Action =
+    std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders, SetAutoReload,
+                 ResetSettings, MeasureAdvice, AddOverlay, RemoveOverlay, MoveOverlay>;
 
 enum class MouseTarget : uint8_t { Camera, Image };
+
+// An image drawn over the shown one, decoded (counts as a heat map) and blended with
+// `opacity` where its value is not 0.
+struct Overlay {
+    std::string resource;
+    float opacity = 0.5f;
+    bool visible = true;
+};
 
 // The viewer's state: what is shown and how (panels change it directly: it is view state).
 struct ViewerState {
@@ -71,9 +92,12 @@ struct ViewerState {
     MouseTarget mouse = MouseTarget::Camera;
     int zfight_pair = -1;  // the Depth panel's selected pair: the zfight view shows only it
     int draw = -1;         // the Draws panel's selected draw group: its pixels stay, the rest dims
+    std::vector<Overlay> overlays;   // blended in order: the last on top
+    bool shared_count_scale = true;  // a pass's count images share one heat scale and legend
     // Filled by the viewer panel.
     float x = 0, y = 0, w = 0, h = 0;  // the image area, in framebuffer pixels
     std::optional<view::Readout> hover;
+    std::string hover_overlays;  // the visible overlays' values there ("" without)
 };
 
 // Per-pass GPU ms of the last kHistory frames.
@@ -123,6 +147,11 @@ class Inspector {
     const SceneSummary& scene_summary() const { return summary_; }
     const FrameResult& frame() const { return frame_; }
     const view::DecodedView& view() const { return view_; }
+    // The image the viewer shows (read back or derived); none when the frame lacks it.
+    const InspectedImage* shown() const { return shown_; }
+    // What can be shown or overlaid (image resources and derived views), in list order.
+    std::vector<std::string> viewable() const { return ViewComposer::viewable(frame_.resources); }
+    const ViewComposer& composer() const { return composer_; }
     const PassHistory& history() const { return history_; }
     ViewerState& viewer() { return viewer_; }
     const ViewerState& viewer() const { return viewer_; }
@@ -148,6 +177,8 @@ class Inspector {
     // when no draw is selected or the frame did not count draws.
     std::vector<uint8_t> selected_draw_pixels() const;
     std::string zfight_text(uint32_t x, uint32_t y) const;
+    // The visible overlays' values at texel (x, y): "forward_counts: 3 fragments | ...".
+    std::string overlay_text(uint32_t x, uint32_t y) const;
 
     // Panel state that outlives a frame (text fields).
     struct PanelState {
@@ -179,6 +210,8 @@ class Inspector {
     std::vector<Action> pending_;
     FrameResult frame_;
     view::DecodedView view_;
+    ViewComposer composer_;
+    const InspectedImage* shown_ = nullptr;  // in frame_ or composer_
     PassHistory history_;
     std::string message_;
     std::string shader_status_ = "shaders compiled";

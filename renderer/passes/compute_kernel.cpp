@@ -1,5 +1,6 @@
 #include "renderer/passes/compute_kernel.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "renderer/common/error.h"
@@ -17,12 +18,14 @@ VkDescriptorType descriptor_type(KernelBinding binding) {
 }  // namespace
 
 ComputeKernel::ComputeKernel(const PassServices& services, std::string shader,
-                             std::vector<KernelBinding> bindings, uint32_t push_constant_size)
+                             std::vector<KernelBinding> bindings, uint32_t push_constant_size,
+                             uint32_t dispatches)
     : context_(services.context),
       compiler_(services.compiler),
       shader_(std::move(shader)),
       bindings_(std::move(bindings)),
-      push_constant_size_(push_constant_size) {
+      push_constant_size_(push_constant_size),
+      dispatches_(std::max(dispatches, 1u)) {
     if (services.frame_layout == VK_NULL_HANDLE)
         throw Error("compute pass " + shader_ + ": no frame set layout");
     // The shaders read with texelFetch; a combined image sampler still needs a sampler.
@@ -37,11 +40,13 @@ ComputeKernel::ComputeKernel(const PassServices& services, std::string shader,
     }
     set_layout_ = vk::DescriptorSetLayout(context_, layout_bindings, shader_.c_str());
 
-    constexpr uint32_t kSets = vk::FrameRing::kFramesInFlight;
+    const uint32_t set_count = vk::FrameRing::kFramesInFlight * dispatches_;
     std::vector<VkDescriptorPoolSize> sizes;
-    if (samplers) sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, samplers * kSets});
-    if (storage) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, storage * kSets});
-    pool_ = vk::DescriptorPool(context_, kSets, sizes, shader_.c_str());
+    if (samplers)
+        sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, samplers * set_count});
+    if (storage) sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, storage * set_count});
+    pool_ = vk::DescriptorPool(context_, set_count, sizes, shader_.c_str());
+    sets_.resize(set_count);
     for (VkDescriptorSet& set : sets_) set = pool_.allocate(set_layout_.handle());
 
     const VkDescriptorSetLayout sets[] = {services.frame_layout, set_layout_.handle()};
@@ -87,10 +92,14 @@ void ComputeKernel::write_set(VkDescriptorSet set, std::span<const BoundImage> i
 
 void ComputeKernel::dispatch(VkCommandBuffer cmd, VkDescriptorSet frame_set, uint64_t frame_number,
                              std::span<const BoundImage> images, const void* push_constants,
-                             VkExtent2D extent) {
+                             VkExtent2D extent, uint32_t slot) {
     if (!pipeline_) throw Error("compute pass " + shader_ + ": no pipeline (rebuild() first)");
-    // The set of frame N is reused by frame N + kFramesInFlight, after N's fence.
-    const VkDescriptorSet set = sets_[frame_number % sets_.size()];
+    if (slot >= dispatches_)
+        throw Error("compute pass " + shader_ + ": dispatch " + std::to_string(slot) +
+                    " of at most " + std::to_string(dispatches_) + " a frame");
+    // The sets of frame N are reused by frame N + kFramesInFlight, after N's fence.
+    const uint64_t ring = frame_number % vk::FrameRing::kFramesInFlight;
+    const VkDescriptorSet set = sets_[size_t(ring) * dispatches_ + slot];
     write_set(set, images);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.handle());
     const VkDescriptorSet sets[] = {frame_set, set};

@@ -1,8 +1,9 @@
 #pragma once
 // What the screen-space compute passes (gtao, ao_spatial, ao_temporal, contact_shadows) share:
 // one compute pipeline over [set 0 = the frame set, set 1 = the pass's images] plus push
-// constants; a ring of set-1 descriptor sets, one per frame in flight, rewritten every frame
-// (the graph's image views change on resize); a sampler; an 8x8-group 2D dispatch.
+// constants; a ring of set-1 descriptor sets, one per frame in flight (or several, for a pass
+// that dispatches more than once a frame), rewritten every frame (the graph's image views
+// change on resize); a sampler; an 8x8-group 2D dispatch.
 // Plumbing, not a pass: passes include it, never each other.
 #include <array>
 #include <cstdint>
@@ -39,9 +40,11 @@ class ComputeKernel {
   public:
     static constexpr uint32_t kGroupSize = 8;  // local_size_x/y of every screen-space shader
 
-    // `shader` relative to the shader root. No pipeline until rebuild().
+    // `shader` relative to the shader root. No pipeline until rebuild(). `dispatches`: how
+    // many times a frame may dispatch it (each needs a set of its own).
     ComputeKernel(const PassServices& services, std::string shader,
-                  std::vector<KernelBinding> bindings, uint32_t push_constant_size);
+                  std::vector<KernelBinding> bindings, uint32_t push_constant_size,
+                  uint32_t dispatches = 1);
 
     // Fail-safe: compiles first (throws shader::ShaderError) and creates the pipeline (throws
     // ds::Error); only then is the current one replaced, going to `retired` since a frame in
@@ -56,11 +59,12 @@ class ComputeKernel {
     Prepared prepare(const std::vector<shader::Define>& defines = {}) const;
     void install(Prepared prepared, vk::DestroyList& retired);
 
-    // Rewrites the ring's set for `frame_number` with `images` (one per binding) and records
-    // bind, push constants and a dispatch covering `extent`.
+    // Rewrites the ring's set for `frame_number` (its `slot`-th dispatch this frame, below
+    // `dispatches`) with `images` (one per binding) and records bind, push constants and a
+    // dispatch covering `extent`.
     void dispatch(VkCommandBuffer cmd, VkDescriptorSet frame_set, uint64_t frame_number,
-                  std::span<const BoundImage> images, const void* push_constants,
-                  VkExtent2D extent);
+                  std::span<const BoundImage> images, const void* push_constants, VkExtent2D extent,
+                  uint32_t slot = 0);
 
     bool ready() const { return bool(pipeline_); }
     const std::string& shader() const { return shader_; }
@@ -76,7 +80,8 @@ class ComputeKernel {
     vk::Sampler nearest_;
     vk::DescriptorSetLayout set_layout_;
     vk::DescriptorPool pool_;
-    std::array<VkDescriptorSet, vk::FrameRing::kFramesInFlight> sets_{};
+    uint32_t dispatches_;
+    std::vector<VkDescriptorSet> sets_;  // kFramesInFlight x dispatches_, by frame then slot
     vk::PipelineLayout layout_;
     vk::Pipeline pipeline_;
 };

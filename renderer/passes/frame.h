@@ -196,9 +196,9 @@ struct FrameInputs {
     FrameOptions options;
     glm::vec3 camera_position{0.0f};
     uint64_t frame_number = 0;
-    const Settings* settings = nullptr;  // the registry's values (skip reasons name knobs)
-    ReadBack read_back = ReadBack::Yes;  // what the caller reads back after the fence
-    InspectRequest inspect;              // a resource to read back through the inspect pass
+    const Settings* settings = nullptr;   // the registry's values (skip reasons name knobs)
+    ReadBack read_back = ReadBack::Yes;   // what the caller reads back after the fence
+    std::vector<InspectRequest> inspect;  // resources to read back through the inspect pass
 };
 
 }  // namespace ds::passes

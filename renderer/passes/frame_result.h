@@ -201,12 +201,17 @@ struct FrameResult {
     // left out).
     std::vector<ResourceSummary> resources;
     // InspectRequest: the image as read; none when the frame has no image of that name (its
-    // pass is off) or nothing was asked.
+    // pass is off) or nothing was asked. A list of requests: the first one's.
     std::optional<InspectedImage> inspected;
+    // A list of requests: the images of the others that the frame has, in the list's order
+    // (names it lacks are left out, so find them by name): what the viewer stacks over the
+    // first and derives views from.
+    std::vector<InspectedImage> overlays;
 };
 
 // Read back one graph image by name at the end of the frame ("final": the tonemapped image;
 // any other: a compute pass "inspect" samples it, so it appears last in FrameResult::passes).
+// Renderer::render takes one or a list (one dispatch each; "final" only as the first).
 struct InspectRequest {
     std::string resource;  // "" = none
     uint32_t sample = 0;   // multisampled images

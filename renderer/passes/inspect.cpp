@@ -16,7 +16,7 @@ constexpr const char* kFinal = "final";  // read back as it is (ReadbackCopyPass
 
 ComputeKernel make_kernel(const PassServices& services) {
     return ComputeKernel(services, kShader, {KernelBinding::Sampled, KernelBinding::Storage},
-                         sizeof(int32_t));
+                         sizeof(int32_t), InspectPass::kMaxImages);
 }
 
 size_t index_of(bool uint_source, bool multisampled) {
@@ -25,6 +25,12 @@ size_t index_of(bool uint_source, bool multisampled) {
 
 std::vector<shader::Define> defines_of(size_t index) {
     return {{"UINT_SOURCE", index & 2u ? "1" : "0"}, {"MULTISAMPLED", index & 1u ? "1" : "0"}};
+}
+
+// The i-th image's transient: names stay the same from frame to frame, so each keeps its
+// host buffer ("readback_<name>") while its size does.
+std::string texels_name(size_t i) {
+    return i == 0 ? std::string("inspect_texels") : "inspect_texels_" + std::to_string(i);
 }
 
 }  // namespace
@@ -52,54 +58,80 @@ void InspectPass::rebuild_pipelines(vk::DestroyList& retired) {
         if (prepared[i]) kernels_[i].install(std::move(*prepared[i]), retired);
 }
 
+std::vector<InspectPass::Read> InspectPass::plan(const graph::RenderGraph& graph,
+                                                 const FrameInputs& in) const {
+    const std::vector<InspectRequest>& wanted = in.inspect;
+    std::vector<Read> reads;
+    for (size_t i = 0; i < wanted.size() && reads.size() < kMaxImages; ++i) {
+        if (wanted[i].resource.empty() || wanted[i].resource == kFinal) continue;
+        const graph::ImageHandle source = graph.find_image(wanted[i].resource);
+        if (!source.valid()) continue;  // its pass is off this frame
+        const graph::ResourceInfo& info = graph.resources()[source.index];
+        Read r;
+        r.source = source;
+        r.primary = i == 0;
+        r.info.name = wanted[i].resource;
+        r.info.format = info.image.format;
+        r.info.semantic = info.image.semantic;
+        r.info.width = info.extent.width;
+        r.info.height = info.extent.height;
+        r.info.samples = uint32_t(info.image.samples);
+        r.info.sample = wanted[i].sample < r.info.samples ? wanted[i].sample : 0;
+        reads.push_back(std::move(r));
+    }
+    return reads;
+}
+
 void InspectPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources&) {
-    texels_ = {};
-    const std::string& wanted = in.inspect.resource;
-    if (wanted.empty() || wanted == kFinal) return;
-    const graph::ImageHandle source = graph.find_image(wanted);
-    if (!source.valid()) return;
-    const graph::ResourceInfo& info = graph.resources()[source.index];
-    const VkExtent2D extent = info.extent;
-    const uint32_t samples = uint32_t(info.image.samples);
-    info_ = InspectedImage{};
-    info_.name = wanted;
-    info_.format = info.image.format;
-    info_.semantic = info.image.semantic;
-    info_.width = extent.width;
-    info_.height = extent.height;
-    info_.samples = samples;
-    info_.sample = in.inspect.sample < samples ? in.inspect.sample : 0;
-    ComputeKernel& k = kernel(format::is_integer(info_.format), samples > 1);
-    const int32_t sample_index = int32_t(info_.sample);
+    reads_ = plan(graph, in);
+    if (reads_.empty()) return;
+    // Built here, not while recording: a shader error surfaces before the frame is recorded.
+    for (const Read& r : reads_) kernel(format::is_integer(r.info.format), r.info.samples > 1);
     graph.add_pass(
         name(),
         [&](graph::PassBuilder& b) {
-            const graph::ImageHandle texels = b.create_image(
-                "inspect_texels", {.format = kTexelFormat,
-                                   .size = graph::ImageSize::fixed(extent.width, extent.height),
-                                   .semantic = graph::Semantic::Other});
-            texels_ = texels;
-            b.read(source, graph::Access::Sampled);
-            b.write(texels, graph::Access::StorageWrite);
-            return [&k, source, texels, sample_index, extent, frame_set = in.frame_set,
-                    frame = in.frame_number](graph::PassContext& ctx) {
-                const BoundImage images[] = {{ctx.view(source), ctx.layout(source)},
-                                             {ctx.view(texels), ctx.layout(texels)}};
-                k.dispatch(ctx.cmd(), frame_set, frame, images, &sample_index, extent);
-            };
+            for (size_t i = 0; i < reads_.size(); ++i) {
+                Read& r = reads_[i];
+                r.texels = b.create_image(
+                    texels_name(i), {.format = kTexelFormat,
+                                     .size = graph::ImageSize::fixed(r.info.width, r.info.height),
+                                     .semantic = graph::Semantic::Other});
+                b.read(r.source, graph::Access::Sampled);  // twice is one access
+                b.write(r.texels, graph::Access::StorageWrite);
+            }
+            return
+                [this, frame_set = in.frame_set, frame = in.frame_number](graph::PassContext& ctx) {
+                    for (uint32_t i = 0; i < reads_.size(); ++i) {
+                        const Read& r = reads_[i];
+                        ComputeKernel& k =
+                            kernel(format::is_integer(r.info.format), r.info.samples > 1);
+                        const BoundImage images[] = {{ctx.view(r.source), ctx.layout(r.source)},
+                                                     {ctx.view(r.texels), ctx.layout(r.texels)}};
+                        const int32_t sample_index = int32_t(r.info.sample);
+                        k.dispatch(ctx.cmd(), frame_set, frame, images, &sample_index,
+                                   {r.info.width, r.info.height}, /*slot=*/i);
+                    }
+                };
         },
         graph::PassKind::Compute);
-    services_.readback.add_copy_pass(graph, "readback_inspect", {texels_});
+    std::vector<graph::ImageHandle> copies;
+    for (const Read& r : reads_) copies.push_back(r.texels);
+    services_.readback.add_copy_pass(graph, "readback_inspect", std::move(copies));
 }
 
 void InspectPass::collect(const FrameCollect& c, std::span<PassResult>, FrameResult& frame) {
-    const std::span<const std::byte> bytes = c.readback.image_bytes(texels_);
-    if (bytes.empty()) return;
-    InspectedImage image = info_;
-    image.texels.resize(size_t(image.width) * image.height * 4);
-    std::memcpy(image.texels.data(), bytes.data(),
-                std::min(bytes.size(), image.texels.size() * sizeof(float)));
-    frame.inspected = std::move(image);
+    for (const Read& r : reads_) {
+        const std::span<const std::byte> bytes = c.readback.image_bytes(r.texels);
+        if (bytes.empty()) continue;
+        InspectedImage image = r.info;
+        image.texels.resize(size_t(image.width) * image.height * 4);
+        std::memcpy(image.texels.data(), bytes.data(),
+                    std::min(bytes.size(), image.texels.size() * sizeof(float)));
+        if (r.primary)
+            frame.inspected = std::move(image);
+        else
+            frame.overlays.push_back(std::move(image));
+    }
 }
 
 }  // namespace ds::passes

@@ -34,6 +34,7 @@ void shaders_panel(PanelIo& io, const PanelLayout& layout);
 void depth_panel(PanelIo& io, const PanelLayout& layout);
 void advisor_panel(PanelIo& io, const PanelLayout& layout);
 void draws_panel(PanelIo& io, const PanelLayout& layout);
+void overlays_panel(PanelIo& io, const PanelLayout& layout);
 
 // The Draws panel's table: column ids (kDrawShaded + k: shaded fragments of the k-th counting
 // pass of the draws' shaded_fragments), and the rows to show — indices into `draws` whose

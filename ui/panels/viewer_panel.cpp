@@ -26,16 +26,15 @@ constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoBackground | ImGuiWindowF
                                     ImGuiWindowFlags_NoScrollWithMouse |
                                     ImGuiWindowFlags_NoCollapse;
 
-// The resource picker, with the shown image's size and semantic after it.
-void resource_picker(PanelIo& io, const FrameResult& frame, const InspectedImage* image) {
+// The resource picker (images and derived views such as forward_wasted), with the shown
+// image's size and semantic after it.
+void resource_picker(PanelIo& io, const InspectedImage* image) {
     ViewerState& v = io.viewer;
     ImGui::SetNextItemWidth(190);
     if (ImGui::BeginCombo("##resource", v.resource.c_str())) {
-        for (const ResourceSummary& r : frame.resources) {
-            if (!r.is_image) continue;
-            if (ImGui::Selectable(r.name.c_str(), r.name == v.resource))
-                io.actions.push_back(SelectResource{r.name});
-        }
+        for (const std::string& name : io.inspector.viewable())
+            if (ImGui::Selectable(name.c_str(), name == v.resource))
+                io.actions.push_back(SelectResource{name});
         ImGui::EndCombo();
     }
     if (image) {
@@ -134,11 +133,11 @@ void mouse_mode(ViewerState& v) {
 
 // The decode controls above the image, a row each: the resource, its range and channel, the
 // zoom and mouse mode.
-void controls(PanelIo& io, const FrameResult& frame) {
+void controls(PanelIo& io) {
     ViewerState& v = io.viewer;
-    const InspectedImage* image = frame.inspected ? &*frame.inspected : nullptr;
+    const InspectedImage* image = io.inspector.shown();
     const DecodedView& view = io.inspector.view();
-    resource_picker(io, frame, image);
+    resource_picker(io, image);
     image_options(v, image);
     range_controls(v, view);
     channel_controls(v, image);
@@ -147,11 +146,14 @@ void controls(PanelIo& io, const FrameResult& frame) {
     mouse_mode(v);
 }
 
-// The heat map's legend: counts, or scene units on a log scale (depth_precision).
-void legend(const DecodedView& view, bool log_scale) {
-    int id = 0;
-    const std::vector<LegendStop> stops =
-        log_scale ? view::log_legend(view.black, view.white) : count_legend(view.black, view.white);
+// A heat map's legend: counts, or scene units on a log scale (depth_precision), after what
+// shares it ("forward: counts, wasted").
+void legend(const ViewLegend& scale, int& id) {
+    const bool log_scale = scale.log;
+    const std::vector<LegendStop> stops = log_scale ? view::log_legend(scale.black, scale.white)
+                                                    : count_legend(scale.black, scale.white);
+    ImGui::TextDisabled("%s", scale.label.c_str());
+    ImGui::SameLine();
     for (const LegendStop& stop : stops) {
         const ImVec4 c(stop.rgb[0] / 255.0f, stop.rgb[1] / 255.0f, stop.rgb[2] / 255.0f, 1.0f);
         ImGui::PushID(id++);
@@ -225,18 +227,17 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
         return;
     }
     const FrameResult& frame = io.inspector.frame();
-    controls(io, frame);
+    controls(io);
     const DecodedView& view = io.inspector.view();
-    const graph::Semantic semantic =
-        frame.inspected ? frame.inspected->semantic : graph::Semantic::Other;
-    if (semantic == graph::Semantic::Count || semantic == graph::Semantic::DepthStep)
-        legend(view, semantic == graph::Semantic::DepthStep);
-    if (!frame.inspected && frame.width)
+    int legend_id = 0;
+    for (const ViewLegend& scale : io.inspector.composer().legends()) legend(scale, legend_id);
+    if (!io.inspector.shown() && frame.width)
         ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "'%s' is not in this frame (its pass is off)",
                            v.resource.c_str());
 
-    // The image area: what is left above the readout line.
-    const float readout_height = ImGui::GetFrameHeightWithSpacing() * 2;
+    // The image area: what is left above the readout lines (one more with overlays).
+    const float readout_height =
+        ImGui::GetFrameHeightWithSpacing() * (v.overlays.empty() ? 2.0f : 3.0f);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImVec2 avail = ImGui::GetContentRegionAvail();
     avail.y = std::max(avail.y - readout_height, 1.0f);
@@ -255,7 +256,8 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
 
     // Hover readout: the texel under the cursor.
     v.hover.reset();
-    if (hovered && view.width && frame.inspected) {
+    v.hover_overlays.clear();
+    if (hovered && view.width && io.inspector.shown()) {
         // Through the blit's own integer mapping: the readout names the texel drawn there.
         const ImGuiIO& imgui = ImGui::GetIO();
         const TargetSize target{uint32_t(imgui.DisplaySize.x * scale.x),
@@ -263,6 +265,7 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
         const auto texel = texel_at(io.inspector.viewer_blit(), target, imgui.MousePos.x * scale.x,
                                     imgui.MousePos.y * scale.y);
         if (texel) v.hover = io.inspector.readout_at((*texel)[0], (*texel)[1]);
+        if (texel) v.hover_overlays = io.inspector.overlay_text((*texel)[0], (*texel)[1]);
     }
     ImGui::Separator();
     if (v.hover)
@@ -270,6 +273,12 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
                     v.hover->decoded_text.c_str());
     else
         ImGui::TextDisabled("hover the image for pixel values");
+    if (!v.overlays.empty()) {
+        if (v.hover && !v.hover_overlays.empty())
+            ImGui::Text("over it: %s", v.hover_overlays.c_str());
+        else
+            ImGui::TextDisabled("over it: %zu overlays", v.overlays.size());
+    }
     if (!io.inspector.message().empty())
         ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", io.inspector.message().c_str());
     ImGui::End();
