@@ -30,6 +30,8 @@ const char* pass_role_name(PassRole role) {
             return "clear";
         case PassRole::ReadBack:
             return "readback";
+        case PassRole::History:
+            return "history";
     }
     return "?";
 }

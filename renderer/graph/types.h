@@ -97,10 +97,11 @@ enum class Lifetime : uint8_t {
 enum class PassKind : uint8_t { Graphics, Compute, Transfer };
 
 // What a pass is for, so a report or a panel can group and fold: the frame's own work,
-// clearing what a later pass accumulates into, or reading results back to the host.
-enum class PassRole : uint8_t { Frame, Clear, ReadBack };
+// clearing what a later pass accumulates into, reading results back to the host, or a pixel
+// history replay (a geometry pass's draws again, instrumented, before the pass itself).
+enum class PassRole : uint8_t { Frame, Clear, ReadBack, History };
 
 const char* pass_kind_name(PassKind kind);  // "graphics" | "compute" | "transfer"
-const char* pass_role_name(PassRole role);  // "frame" | "clear" | "readback"
+const char* pass_role_name(PassRole role);  // "frame" | "clear" | "readback" | "history"
 
 }  // namespace ds::graph

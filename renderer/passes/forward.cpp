@@ -25,7 +25,10 @@ ForwardPass::ForwardPass(const PassServices& services)
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
                  [](const Variant& v, const ShaderStages& s) {
                      return describe_pipeline(pipeline_name(v), s, v.alpha_to_coverage);
-                 }) {
+                 }),
+      history_(services, kName,
+               {services.frame_layout, services.material_layout, lighting_.layout(),
+                count_layout_.handle()}) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           lighting_.layout(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "forward layout");
@@ -36,10 +39,21 @@ void ForwardPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
 }
 
-void ForwardPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
+void ForwardPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {
     if (own.empty()) return;
     collect_counts(c.readback, c.res.forward_counts, own[0]);
     own[0].pipelines = uses_.list();
+    const FrameOptions& o = c.in.options;
+    // With the prepass: its depth, EQUAL (or closer-or-equal), no writes; else cleared, the
+    // closer test, writes on (record()).
+    history_.collect(c, history_pipelines_,
+                     {.compare = !o.prepass      ? o.closer()
+                                 : o.depth_equal ? VK_COMPARE_OP_EQUAL
+                                                 : o.closer_or_equal(),
+                      .depth_write = !o.prepass,
+                      .clear_depth = o.prepass ? std::nullopt : std::optional(o.far_depth()),
+                      .depth_format = o.depth_format},
+                     frame);
 }
 
 ShaderStages ForwardPass::compile(const Variant& v) const {
@@ -49,6 +63,12 @@ ShaderStages ForwardPass::compile(const Variant& v) const {
     if (v.alpha_mask) frag_defines.push_back({"ALPHA_MASK", "1"});
     if (v.counting) frag_defines.push_back({"COUNT_FRAGMENTS", "1"});
     if (v.alpha_to_coverage) frag_defines.push_back({"ALPHA_TO_COVERAGE", "1"});
+    if (v.history) {
+        const bool msaa = v.samples != VK_SAMPLE_COUNT_1_BIT;
+        for (shader::Define& d : PixelHistoryReplay::defines(v.prepass_inputs, false, msaa))
+            frag_defines.push_back(std::move(d));
+        vert_defines.push_back({"PIXEL_HISTORY", "1"});
+    }
     ShaderStages s;
     s.vert = services_.compiler.compile("forward.vert", shader::Stage::Vertex, vert_defines).spirv;
     s.frag =
@@ -64,10 +84,12 @@ std::string ForwardPass::pipeline_name(const Variant& v) {
                                           : "forward opaque";
     if (v.alpha_to_coverage) name += " a2c";
     if (v.counting) name += " counting";
+    if (v.history) name += " history";
     return name;
 }
 
 vk::Pipeline ForwardPass::create(const Variant& v, const ShaderStages& s) const {
+    if (v.history) return history_.create(s, v.samples, pipeline_name(v));
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
         .color_attachment(kHdrFormat)
         .depth_attachment(v.depth)
@@ -99,12 +121,14 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
         draw.mask_info = pipelines_.info(mask);
     }
     uses_.clear();
+    history_.clear();
     draw.lighting = {.shadow_map = res.shadow_map,
                      .normals = o.prepass ? res.normals : graph::ImageHandle{},
                      .roughness = o.prepass ? res.roughness : graph::ImageHandle{},
                      .ao = res.ao,
                      .contact_shadows = res.contact_shadows};
     // The record lambda needs the handles setup creates: they travel in the pass's Data.
+    if (in.pixel) add_history(graph, in, res, opaque, mask, draw);
     struct Data {
         FrameInputs in;
         FrameResources res;
@@ -164,9 +188,50 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
                              : o.depth_equal ? VK_COMPARE_OP_EQUAL
                                              : o.closer_or_equal();
     set_depth_state(cmd, /*test=*/true, /*write=*/!o.prepass, test);
+    draw_scene(cmd, in, draw, lighting, counts, uses_, nullptr);
+    vk::fn().cmd_end_rendering(cmd);
+}
 
+void ForwardPass::add_history(graph::RenderGraph& graph, const FrameInputs& in,
+                              const FrameResources& res, const Variant& opaque, const Variant& mask,
+                              const Draw& real) {
+    auto twin = [](Variant v) {
+        v.counting = false;  // the frame's counts stay the frame's
+        v.history = true;
+        return v;
+    };
+    Draw draw = real;
+    draw.layout = history_.layout();
+    draw.opaque = pipelines_.get(twin(opaque));
+    history_pipelines_ = {history_pipeline(real.opaque_info)};
+    if (real.mask) {
+        draw.mask = pipelines_.get(twin(mask));
+        history_pipelines_.push_back(history_pipeline(real.mask_info));
+    }
+    const FrameOptions& o = in.options;
+    const graph::ImageHandle depth = !o.prepass ? graph::ImageHandle{}
+                                     : o.msaa() ? res.msaa_depth
+                                                : res.depth;
+    const graph::BufferHandle uniforms = res.frame_uniforms;
+    history_.add(
+        graph, in, {.depth = depth, .extent_of = res.depth},
+        [uniforms, lighting = draw.lighting](graph::PassBuilder& b) {
+            LightingSet::declare(b, lighting);
+            b.read(uniforms, Access::UniformRead, graph::Shader::Vertex | graph::Shader::Fragment);
+        },
+        [this, in, draw](graph::PassContext& ctx, DrawLog& log) {
+            const VkDescriptorSet lighting = lighting_.write(ctx, in.frame_number, draw.lighting);
+            PipelineUses unused;  // the frame's pipelines report the frame's draws only
+            draw_scene(ctx.cmd(), in, draw, lighting, VK_NULL_HANDLE, unused, &log);
+        });
+}
+
+void ForwardPass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw,
+                             VkDescriptorSet lighting, VkDescriptorSet counts, PipelineUses& uses,
+                             DrawLog* log) const {
+    const FrameOptions& o = in.options;
     bind_geometry(cmd, *in.scene);
-    const VkPipelineLayout layout = layout_.handle();
+    const VkPipelineLayout layout = draw.layout ? draw.layout : layout_.handle();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
                             nullptr);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &lighting, 0,
@@ -178,13 +243,16 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     const AlphaMode mask[] = {AlphaMode::Mask};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
     const Decals decals = scene_groups(o.decal_pass);
-    uses_.add(draw.opaque_info, draw_groups(cmd, *in.scene, layout, opaque, decals).draws);
+    // The log's tags: 0 the opaque pipeline, 1 the MASK one (add_history's order).
+    if (log) log->pipeline = 0;
+    uses.add(draw.opaque_info,
+             draw_groups(cmd, *in.scene, layout, opaque, decals, std::nullopt, log).draws);
     // MASK after opaque either way: with the prepass and EQUAL the same pipeline (EQUAL does
     // the alpha test's work), otherwise the discard pipeline, testing against opaque depth.
     if (draw.mask) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
-    uses_.add(draw.mask ? draw.mask_info : draw.opaque_info,
-              draw_groups(cmd, *in.scene, layout, mask, decals).draws);
-    vk::fn().cmd_end_rendering(cmd);
+    if (log && draw.mask) log->pipeline = 1;
+    uses.add(draw.mask ? draw.mask_info : draw.opaque_info,
+             draw_groups(cmd, *in.scene, layout, mask, decals, std::nullopt, log).draws);
 }
 
 bool ForwardPass::native_resolve(const FrameOptions& o) const {

@@ -22,6 +22,9 @@
 // and transparent resolves it into res.hdr) against res.msaa_depth. Without the prepass it
 // writes that depth and resolves it to the nearest sample into res.depth, natively, or the
 // depth_resolve pass that follows does.
+// Pixel history (FrameInputs::pixel): forward_history replays draw_scene() first with the
+// instrumented variants (pixel_history.h), reading the depth the prepass left (or from the
+// cleared depth without it).
 #include <array>
 #include <cstdint>
 
@@ -33,6 +36,7 @@
 #include "renderer/passes/lighting_set.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/passes/pipeline_use.h"
+#include "renderer/passes/pixel_history.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
@@ -65,12 +69,13 @@ class ForwardPass final : public FramePass {
         bool counting = false;           // COUNT_FRAGMENTS=1
         bool sample_shading = false;     // sample_shading=on (msaa > 1)
         bool alpha_to_coverage = false;  // MASK pipelines, alpha_to_coverage=on
+        bool history = false;            // PIXEL_HISTORY=1: the replay's, no attachments
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(prepass_inputs, alpha_mask, non_invariant, counting, sample_shading,
-                               alpha_to_coverage, int(samples), int(depth));
+                               alpha_to_coverage, history, int(samples), int(depth));
         }
     };
 
@@ -79,6 +84,9 @@ class ForwardPass final : public FramePass {
         VkPipeline mask = VK_NULL_HANDLE;    // otherwise: MASK, with its discard
         PipelineInfo opaque_info, mask_info;
         LightingInputs lighting;
+        // What the sets are bound with (null: the pass's; the replay binds with its own, which
+        // has set 4 too, or binding set 0 would disturb set 4).
+        VkPipelineLayout layout = VK_NULL_HANDLE;
     };
 
     ShaderStages compile(const Variant& variant) const;
@@ -89,6 +97,13 @@ class ForwardPass final : public FramePass {
     void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
                 const Draw& draw);
     void begin(graph::PassContext& ctx, const FrameOptions& o, const FrameResources& res) const;
+    // Binds the sets and draws opaque, then MASK, with `draw`'s pipelines, logged to `log`.
+    void draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw,
+                    VkDescriptorSet lighting, VkDescriptorSet counts, PipelineUses& uses,
+                    DrawLog* log) const;
+    // Pixel history: the replay of draw_scene() with the instrumented twins of `draw`'s.
+    void add_history(graph::RenderGraph& graph, const FrameInputs& in, const FrameResources& res,
+                     const Variant& opaque, const Variant& mask, const Draw& draw);
     bool native_resolve(const FrameOptions& o) const;
 
     PassServices services_;
@@ -98,6 +113,8 @@ class ForwardPass final : public FramePass {
     FrameDescriptorPool count_sets_;
     PipelineVariants<Variant> pipelines_;
     PipelineUses uses_;  // this frame's
+    PixelHistoryReplay history_;
+    std::vector<HistoryPipeline> history_pipelines_;  // this frame's real ones, by log tag
 };
 
 }  // namespace ds::passes

@@ -66,7 +66,7 @@ bool selected(const scene::DrawGroup& group, std::span<const scene::AlphaMode> m
 
 DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
                        std::span<const scene::AlphaMode> modes, Decals decals,
-                       std::optional<VkCullModeFlags> cull) {
+                       std::optional<VkCullModeFlags> cull, DrawLog* log) {
     DrawCounts counts;
     uint32_t material = UINT32_MAX;
     for (const scene::DrawGroup& g : scene.draw_groups()) {
@@ -78,6 +78,7 @@ DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
         // gl_InstanceIndex = first_instance + i indexes the instance buffer directly.
         vkCmdDrawIndexed(cmd, mesh.index_count, g.instance_count, mesh.first_index,
                          mesh.vertex_offset, g.first_instance);
+        if (log) log->add(g.first_instance, g.instance_count);
         ++counts.draws;
         counts.instances += g.instance_count;
     }
@@ -119,7 +120,7 @@ std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 ca
 }
 
 DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
-                       std::span<const InstanceDraw> draws) {
+                       std::span<const InstanceDraw> draws, DrawLog* log) {
     DrawCounts counts;
     uint32_t material = UINT32_MAX;
     for (const InstanceDraw& d : draws) {
@@ -128,6 +129,7 @@ DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
         vk::fn().cmd_set_cull_mode(cmd, cull_mode(d.group->double_sided));
         vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, mesh.vertex_offset,
                          d.instance);
+        if (log) log->add(d.instance, 1);
         ++counts.draws;
         ++counts.instances;
     }

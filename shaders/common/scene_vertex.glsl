@@ -18,6 +18,12 @@
 #define SURFACE_ID 0
 #endif
 
+// PIXEL_HISTORY=1 (the pixel history replays): hands gl_InstanceIndex on, flat; gl_Position's
+// expression and `invariant` are untouched, so the replay's depths are the real pass's.
+#ifndef PIXEL_HISTORY
+#define PIXEL_HISTORY 0
+#endif
+
 #include "bindings.glsl"
 
 layout(location = 0) in vec3 in_position;
@@ -31,6 +37,9 @@ layout(location = 2) out vec2 out_uv0;
 layout(location = 3) out vec4 out_tangent;
 #if SURFACE_ID
 layout(location = 4) flat out uint out_surface_base;
+#endif
+#if PIXEL_HISTORY
+layout(location = 5) flat out uint out_history_instance;
 #endif
 
 #if !NON_INVARIANT
@@ -51,5 +60,8 @@ void main() {
     out_uv0 = in_uv0;
 #if SURFACE_ID
     out_surface_base = instance.surface_base;
+#endif
+#if PIXEL_HISTORY
+    out_history_instance = uint(gl_InstanceIndex);
 #endif
 }
