@@ -136,6 +136,7 @@ void Inspector::draw() {
     resources_panel(panel, layout);
     depth_panel(panel, layout);
     advisor_panel(panel, layout);
+    pixel_panel(panel, layout);
     viewer_panel(panel, layout);  // last: it takes the camera input the others left
 }
 
@@ -186,6 +187,7 @@ void Inspector::apply(const Action& action) {
                        }
                    },
                    [&](const MeasureAdvice&) { measure_advice(); },
+                   [&](const PickPixel& a) { pick_pixel(a); },
                },
                action);
 }
@@ -268,6 +270,23 @@ void Inspector::measure_advice() {
         advice_error_.clear();
     } catch (const std::exception& e) {
         advice_error_ = e.what();  // the last advice, if any, stays
+    }
+}
+
+// One frame more with the pixel history of `pick` (the frame the inspector shows is not
+// replaced: a history frame adds replay passes to the pass list and timings).
+void Inspector::pick_pixel(const PickPixel& pick) {
+    const VkExtent2D size = render_size();
+    try {
+        const FrameResult f = renderer_.render(camera_.camera(), settings_, size.width, size.height,
+                                               ReadBack::No, {}, PixelQuery{pick.x, pick.y});
+        pixel_history_ = f.pixel_history;
+        pixel_depth_ = f.depth;
+        pixel_label_ =
+            scene_.name + " at " + std::to_string(size.width) + "x" + std::to_string(size.height);
+        pixel_error_.clear();
+    } catch (const std::exception& e) {
+        pixel_error_ = e.what();  // a pixel outside the frame, a refused setting
     }
 }
 

@@ -32,6 +32,7 @@ void scene_panel(PanelIo& io, const PanelLayout& layout);
 void shaders_panel(PanelIo& io, const PanelLayout& layout);
 void depth_panel(PanelIo& io, const PanelLayout& layout);
 void advisor_panel(PanelIo& io, const PanelLayout& layout);
+void pixel_panel(PanelIo& io, const PanelLayout& layout);
 
 // Shared widgets.
 void help_marker(const char* text);  // "(?)" with a tooltip
