@@ -48,6 +48,16 @@ nlohmann::json final_color(const FrameResult& frame, const PixelHistory& h) {
     return {frame.rgba8[i], frame.rgba8[i + 1], frame.rgba8[i + 2], frame.rgba8[i + 3]};
 }
 
+// GPU ms of the replays (graph role history) and of the frame's own passes.
+std::pair<double, double> replay_and_frame_ms(const FrameResult& frame) {
+    double replay = 0, own = 0;
+    for (const PassResult& p : frame.passes) {
+        if (p.role == graph::PassRole::History) replay += p.gpu_ms;
+        if (p.role == graph::PassRole::Frame) own += p.gpu_ms;
+    }
+    return {replay, own};
+}
+
 std::string rgba_text(const std::optional<std::array<float, 4>>& c) {
     if (!c) return "-";
     char text[64];
@@ -75,6 +85,9 @@ nlohmann::json pixel_history_json(const PixelReportInput& in) {
               {"zfar", d.zfar}}},
             {"final_color", final_color(in.frame, h)},
             {"dropped_records", h.dropped},
+            {"gpu_ms",
+             {{"replays", replay_and_frame_ms(in.frame).first},
+              {"frame_passes", replay_and_frame_ms(in.frame).second}}},
             {"fragments", fragments}};
 }
 
@@ -85,14 +98,15 @@ std::string pixel_history_table(const PixelReportInput& in) {
     std::snprintf(line, sizeof line, "pixel %u,%u of %s at %ux%u: %zu fragments\n", h.x, h.y,
                   in.scene.name.c_str(), in.frame.width, in.frame.height, h.fragments.size());
     out += line;
-    if (h.fragments.empty()) return out + "no fragment covered it\n";
+    if (h.fragments.empty()) out += "no fragment covered it\n";
     std::snprintf(line, sizeof line,
                   "%-3s %-14s %-4s %-24s %-5s %-3s %-11s %-9s %-5s %-11s %-13s %-6s %s\n", "#",
                   "pass", "draw", "mesh / material", "prim", "smp", "depth", "linear", "test",
                   "against", "alpha/cutoff", "shaded", "color (blended)");
-    out += line;
+    const std::string header = line;
     for (size_t i = 0; i < h.fragments.size(); ++i) {
         const PixelFragment& f = h.fragments[i];
+        if (i == 0) out += header;
         const SurfaceName name = in.scene.instance_name(f.instance);
         char alpha[32] = "-";
         if (f.alpha_test)
@@ -109,7 +123,10 @@ std::string pixel_history_table(const PixelReportInput& in) {
         out += line;
     }
     if (h.dropped) out += "warning: " + std::to_string(h.dropped) + " records dropped\n";
-    return out;
+    const auto [replay, own] = replay_and_frame_ms(in.frame);
+    std::snprintf(line, sizeof line, "replays %.2f ms GPU, the frame's own passes %.2f ms\n",
+                  replay, own);
+    return out + line;
 }
 
 }  // namespace ds::capture

@@ -122,10 +122,52 @@ TEST_F(PixelHistoryTest, OverdrawWithPrepassPassesTheFrontLayerOnce) {
     }
 }
 
+// msaa=4: one fragment per covered sample (every layer covers all four), each sample's depth
+// test against that sample's own depth.
+TEST_F(PixelHistoryTest, MsaaListsEverySampleOfEveryLayer) {
+    const FrameResult f = history("overdraw", {"prepass=off", "msaa=4"}, kCentre);
+    const std::vector<PixelFragment> forward = of_pass(f, "forward");
+    ASSERT_EQ(forward.size(), size_t(kLayers) * 4);
+    for (size_t i = 0; i < forward.size(); ++i) {
+        const PixelFragment& p = forward[i];
+        EXPECT_EQ(p.sample, i % 4) << i;
+        EXPECT_EQ(material(p), "layer_" + std::to_string(kLayers - 1 - int(i / 4))) << i;
+        EXPECT_TRUE(p.depth_passed) << i;
+        if (i >= 4) {
+            EXPECT_EQ(p.against, forward[i - 4].depth) << i;  // the same sample's
+        }
+    }
+}
+
+// Atrium's BLEND overlays (the decals pass's blend step, over forward's colour): at a pixel the
+// frame's decal count image says an overlay was shaded, the simulated blending ends at the
+// colour the frame's HDR image holds there (nothing draws over them there: no transparent
+// draws, and the sky only where nothing is).
+TEST_F(PixelHistoryTest, AtriumDecalBlendingEndsAtTheHdrColour) {
+    const std::vector<std::string> settings = {"count_fragments=on"};
+    const FrameResult counts = history("atrium", settings, {0, 0}, "decal_counts");
+    ASSERT_TRUE(counts.inspected);
+    std::optional<PixelQuery> decal;
+    for (uint32_t i = 0; i < kWidth * kHeight && !decal; ++i)
+        if (texel(counts, {i % kWidth, i / kWidth}) > 0) decal = PixelQuery{i % kWidth, i / kWidth};
+    ASSERT_TRUE(decal) << "atrium has blended overlays in view";
+    const FrameResult f = history("atrium", settings, *decal, "hdr");
+    const PixelFragment* last = nullptr;
+    for (const PixelFragment& p : f.pixel_history->fragments) {
+        if (p.pass != "decals" || !p.depth_passed) continue;
+        ASSERT_TRUE(p.color);
+        EXPECT_EQ(p.pipeline.rfind("decals blend", 0), 0u) << p.pipeline;
+        ASSERT_TRUE(p.blended);
+        last = &p;
+    }
+    ASSERT_NE(last, nullptr);
+    for (int c = 0; c < 3; ++c) expect_half_of(texel(f, *decal, c), (*last->blended)[c]);
+}
+
 // Without a query the frame has no history pass and no history; with one, the frame's own
 // passes and their results are the same.
 TEST_F(PixelHistoryTest, OffAddsNothing) {
-    const FrameResult plain = history("overdraw", {}, kCentre);
+    const FrameResult queried = history("overdraw", {}, kCentre);
     const Settings s;
     const FrameResult off = renderer_->render(scene_.camera, s, kWidth, kHeight);
     EXPECT_FALSE(off.pixel_history);
@@ -133,10 +175,10 @@ TEST_F(PixelHistoryTest, OffAddsNothing) {
         EXPECT_NE(p.role, graph::PassRole::History) << p.name;
         EXPECT_EQ(p.name.find("history"), std::string::npos) << p.name;
     }
-    EXPECT_EQ(test::names(plain), test::names(off));
-    EXPECT_EQ(plain.rgba8, off.rgba8);  // the replay draws nothing into the frame
+    EXPECT_EQ(test::names(queried), test::names(off));
+    EXPECT_EQ(queried.rgba8, off.rgba8);  // the replay draws nothing into the frame
     std::vector<std::string> replays;
-    for (const PassResult& p : plain.passes)
+    for (const PassResult& p : queried.passes)
         if (p.role == graph::PassRole::History) replays.push_back(p.name);
     // Each geometry pass's replay right before it (transparent runs with nothing to draw).
     const std::vector<std::string> expected = {"depth_prepass_history", "forward_history",
