@@ -47,17 +47,10 @@ layout(location = 2) out uint out_surface;
 void main() {
     count_fragment();
     float coverage = 1.0;  // output 0's alpha: the sample mask with alpha-to-coverage
-    float history_alpha = 1.0, history_cutoff = 0.0;
-    uint history_flags = 0u;
 #if ALPHA_MASK
     bool tested = ALPHA_MASK == 1 || (material.flags & kMaterialAlphaMask) != 0u;
     float alpha = texture(base_color_texture, in_uv0).a * material.base_color_factor.a;
     count_invoked();
-    if (tested) {
-        history_alpha = alpha;
-        history_cutoff = alpha_cutoff();
-        history_flags = kHistoryAlphaTested;
-    }
 #if ALPHA_TO_COVERAGE
     float sharpened = coverage_alpha(alpha, alpha_cutoff());  // outside the branch: fwidth
     if (tested) coverage = sharpened;
@@ -65,7 +58,7 @@ void main() {
     if (tested && alpha < alpha_cutoff()) {
         count_discarded();
         count_discarded_fragment();
-        history_record(alpha, history_cutoff, history_flags | kHistoryDiscarded, vec4(0.0));
+        history_record(alpha, alpha_cutoff(), kHistoryAlphaTested | kHistoryDiscarded, vec4(0.0));
         discard;
     }
 #endif
@@ -73,7 +66,11 @@ void main() {
     out_normal = vec4(encode_normal(shading_normal(vertex_normal(in_normal), in_tangent, in_uv0)),
                       coverage);
     out_roughness = material_roughness(in_uv0);
-    history_record(history_alpha, history_cutoff, history_flags, out_normal);
+#if ALPHA_MASK
+    history_record(alpha, alpha_cutoff(), tested ? kHistoryAlphaTested : 0u, out_normal);
+#else
+    history_record(1.0, 0.0, 0u, out_normal);
+#endif
 #if SURFACE_ID
     out_surface = in_surface_base + uint(gl_PrimitiveID) + 1u;
 #endif
