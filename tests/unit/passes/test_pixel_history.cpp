@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "renderer/common/error.h"
+#include "renderer/passes/pixel_history.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/builtin/scene_facts.h"
 #include "renderer/view/decode.h"
@@ -218,6 +219,102 @@ TEST_F(PixelHistoryTest, FoliageCutOutIsADiscardedMaskedFragment) {
     }
     EXPECT_EQ(cut_away, discarded);
     EXPECT_EQ(shaded, uint32_t(texel(f, *cut)));
+}
+
+}  // namespace
+
+namespace {
+
+// simulate() alone, on made-up records (no device): the order it restores, the depth rules,
+// unorm quantisation, duplicates, blending.
+passes::HistoryRecord record(uint32_t instance, uint32_t primitive, float depth,
+                             uint32_t flags = passes::kHistoryColor) {
+    passes::HistoryRecord r;
+    r.instance = instance;
+    r.primitive = primitive;
+    r.depth = depth;
+    r.flags = flags;
+    r.color = {1.0f, 0.5f, 0.25f, 0.5f};
+    r.dst = {0.0f, 0.0f, 1.0f, 1.0f};
+    return r;
+}
+
+TEST(PixelHistorySimulate, RestoresSubmissionOrderAndAppliesTheDepthRules) {
+    passes::DrawLog log;
+    log.add(5, 1);  // draw 0: instance 5
+    log.pipeline = 1;
+    log.add(0, 3);  // draw 1: instances 0..2, the second pipeline
+    const std::vector<passes::HistoryRecord> records = {
+        record(1, 0, 0.6f), record(0, 2, 0.4f), record(5, 0, 0.5f),
+        record(0, 1, 0.7f), record(0, 1, 0.7f),  // a repeated store: one fragment
+        record(9, 0, 0.9f)};                     // no draw of the log holds instance 9: dropped
+    const passes::HistoryPipeline pipelines[] = {{"a", true, false}, {"b", false, false}};
+    const auto out = passes::simulate("forward", records, log, pipelines,
+                                      {.compare = VK_COMPARE_OP_GREATER,
+                                       .depth_write = true,
+                                       .clear_depth = 0.0f,
+                                       .depth_format = VK_FORMAT_D32_SFLOAT});
+    ASSERT_EQ(out.size(), 4u);
+    const uint32_t instances[] = {5, 0, 0, 1}, primitives[] = {0, 1, 2, 0};
+    const bool passed[] = {true, true, false, false};
+    const float against[] = {0.0f, 0.5f, 0.7f, 0.7f};
+    for (size_t i = 0; i < out.size(); ++i) {
+        EXPECT_EQ(out[i].instance, instances[i]) << i;
+        EXPECT_EQ(out[i].primitive, primitives[i]) << i;
+        EXPECT_EQ(out[i].depth_passed, passed[i]) << i;
+        EXPECT_EQ(out[i].against, against[i]) << i;
+    }
+    EXPECT_TRUE(out[0].shaded);  // early-Z and passed
+    EXPECT_TRUE(out[2].shaded);  // late (pipeline b): ran although it failed
+    EXPECT_EQ(out[1].draw, 1u);
+    EXPECT_EQ(out[1].pipeline, "b");
+}
+
+TEST(PixelHistorySimulate, QuantisesUnormDepthsAndBlendsInOrder) {
+    passes::DrawLog log;
+    log.add(0, 2);
+    // Two D16 depths one hundredth of a step apart are the same stored value: EQUAL passes.
+    const float step = 1.0f / 65535.0f;
+    std::vector<passes::HistoryRecord> records = {record(0, 0, 100.0f * step),
+                                                  record(1, 0, 100.01f * step)};
+    records[0].start_depth = records[1].start_depth = 100.0f * step;
+    const passes::HistoryPipeline blended[] = {{"t", true, true}};
+    const auto out =
+        passes::simulate("transparent", records, log, blended,
+                         {.compare = VK_COMPARE_OP_EQUAL, .depth_format = VK_FORMAT_D16_UNORM});
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_TRUE(out[0].depth_passed);
+    EXPECT_TRUE(out[1].depth_passed);
+    ASSERT_TRUE(out[0].blended && out[1].blended);
+    // src 0.5 alpha over dst (0, 0, 1, 1): colour src * 0.5 + dst * 0.5, alpha 0.5 + 1 * 0.5.
+    EXPECT_FLOAT_EQ((*out[0].blended)[0], 0.5f);
+    EXPECT_FLOAT_EQ((*out[0].blended)[2], 0.625f);
+    EXPECT_FLOAT_EQ((*out[0].blended)[3], 1.0f);
+    // The second blends over the first's result.
+    EXPECT_FLOAT_EQ((*out[1].blended)[0], 0.75f);
+    EXPECT_FLOAT_EQ((*out[1].blended)[2], 0.4375f);
+}
+
+// A discarded fragment keeps its alpha test, writes nothing and has no colour.
+TEST(PixelHistorySimulate, DiscardedFragmentsWriteNothing) {
+    passes::DrawLog log;
+    log.add(0, 2);
+    passes::HistoryRecord cut =
+        record(0, 0, 0.8f, passes::kHistoryAlphaTested | passes::kHistoryDiscarded);
+    cut.alpha = 0.2f;
+    cut.cutoff = 0.5f;
+    const std::vector<passes::HistoryRecord> records = {cut, record(1, 0, 0.3f)};
+    const passes::HistoryPipeline late[] = {{"mask", false, false}};
+    const auto out = passes::simulate(
+        "depth_prepass", records, log, late,
+        {.compare = VK_COMPARE_OP_GREATER, .depth_write = true, .clear_depth = 0.0f});
+    ASSERT_EQ(out.size(), 2u);
+    ASSERT_TRUE(out[0].alpha_test);
+    EXPECT_FALSE(out[0].alpha_test->passed);
+    EXPECT_TRUE(out[0].shaded);
+    EXPECT_FALSE(out[0].color);
+    EXPECT_TRUE(out[1].depth_passed);  // the discarded nearer fragment left the clear value
+    EXPECT_EQ(out[1].against, 0.0f);
 }
 
 }  // namespace
