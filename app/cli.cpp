@@ -14,12 +14,14 @@ struct Subcommands {
     CLI::App* capture = nullptr;
     CLI::App* export_cmd = nullptr;
     CLI::App* bench = nullptr;
+    CLI::App* pixel = nullptr;
 };
 
 // --size texts, parsed once the command is known: the window's (view) or the render's.
 struct SizeTexts {
     std::string render;
     std::string window;
+    std::string at;  // pixel --at
 };
 
 // Options every rendering subcommand shares.
@@ -98,6 +100,18 @@ CLI::App* add_bench_command(CLI::App& app, Options& o, std::string& size_text) {
     return bench;
 }
 
+CLI::App* add_pixel_command(CLI::App& app, Options& o, SizeTexts& texts) {
+    auto* pixel = app.add_subcommand(
+        "pixel", "render one frame headless and list every fragment that covered one pixel");
+    add_render_options(*pixel, o, /*with_scene=*/true);
+    pixel->add_option("--size", texts.render, "render size WIDTHxHEIGHT (default 1280x720)");
+    pixel->add_option("--at", texts.at, "the pixel X,Y (0,0 = top left)")
+        ->type_name("X,Y")
+        ->required();
+    pixel->add_option("--json", o.out, "also write the history as JSON to FILE");
+    return pixel;
+}
+
 // Every subcommand in help order; the top level takes the inspector's options too.
 Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     Subcommands c;
@@ -113,6 +127,7 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     c.capture = add_capture_command(app, o, sizes.render);
     c.export_cmd = add_export_scene_command(app, o);
     c.bench = add_bench_command(app, o, sizes.render);
+    c.pixel = add_pixel_command(app, o, sizes);
     return c;
 }
 
@@ -136,12 +151,14 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
     if (c.capture->parsed()) o.command = Command::Capture;
     if (c.export_cmd->parsed()) o.command = Command::ExportScene;
     if (c.bench->parsed()) o.command = Command::Bench;
+    if (c.pixel->parsed()) o.command = Command::Pixel;
+    if (!sizes.at.empty()) parse_at(sizes.at, o.at_x, o.at_y);
     if (!sizes.render.empty()) o.size = parse_size(sizes.render);
     if (!sizes.window.empty()) {
         o.window = parse_size(sizes.window);
         if (o.command == Command::Default) o.size = o.window;  // the headless fallback
     }
-    for (CLI::App* cmd : {&app, c.view, c.capture, c.bench})
+    for (CLI::App* cmd : {&app, c.view, c.capture, c.bench, c.pixel})
         if (cmd->count("--scene")) o.scene_given = true;
 }
 
@@ -156,6 +173,18 @@ Size parse_size(const std::string& text) {
                          "'");
     }
     return {w, h};
+}
+
+void parse_at(const std::string& text, uint32_t& x, uint32_t& y) {
+    unsigned px = 0, py = 0;
+    char comma = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%u%c%u%c", &px, &comma, &py, &extra) != 3 || comma != ',' ||
+        text.find('-') != std::string::npos) {
+        throw UsageError("--at expects X,Y (two whole numbers, 0,0 = top left), got '" + text +
+                         "'");
+    }
+    x = px;
+    y = py;
 }
 
 std::optional<int> parse_command_line(int argc, char** argv, Options& o) {

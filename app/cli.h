@@ -7,7 +7,7 @@
 
 namespace ds::app {
 
-enum class Command { Default, View, Info, Scenes, Settings, Capture, ExportScene, Bench };
+enum class Command { Default, View, Info, Scenes, Settings, Capture, ExportScene, Bench, Pixel };
 
 struct Size {
     uint32_t width = 1280;
@@ -35,6 +35,8 @@ struct Options {
     int bench_warmup = 5;
     std::vector<std::string> matrix;  // "name=v1,v2"
     bool advise = false;  // bench / capture --advise: the prepass advisor (prepass on and off)
+    // pixel: --at X,Y (checked against --size when the command runs); --json goes to `out`
+    uint32_t at_x = 0, at_y = 0;
 };
 
 // Parses argv. Returns the exit code to use right away (help printed: 0), or nullopt to run.
@@ -43,5 +45,7 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& options);
 
 // "640x360" -> Size; throws UsageError.
 Size parse_size(const std::string& text);
+// "12,34" -> (12, 34) into x, y; throws UsageError.
+void parse_at(const std::string& text, uint32_t& x, uint32_t& y);
 
 }  // namespace ds::app

@@ -390,18 +390,23 @@ uint64_t Renderer::Impl::record(Slot& slot, VkCommandBuffer cmd) {
 
 FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& settings,
                              uint32_t width, uint32_t height, ReadBack read_back,
-                             const InspectRequest& inspect) {
-    return render(scene_camera, settings, width, height, read_back, std::span(&inspect, 1));
+                             const InspectRequest& inspect,
+                             const std::optional<PixelQuery>& pixel) {
+    return render(scene_camera, settings, width, height, read_back, std::span(&inspect, 1), pixel);
 }
-
 FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& settings,
                              uint32_t width, uint32_t height, ReadBack read_back,
-                             std::span<const InspectRequest> inspect) {
+                             std::span<const InspectRequest> inspect,
+                             const std::optional<PixelQuery>& pixel) {
     Impl& r = *impl_;
     if (!r.scene) throw Error("render: no scene (call set_scene first)");
     if (width == 0 || height == 0)
         throw Error("render: size " + std::to_string(width) + "x" + std::to_string(height) +
                     " is empty");
+    if (pixel && (pixel->x >= width || pixel->y >= height))
+        throw Error("render: pixel " + std::to_string(pixel->x) + "," + std::to_string(pixel->y) +
+                    " is outside the frame (" + std::to_string(width) + "x" +
+                    std::to_string(height) + ")");
     const passes::FrameOptions options = r.options_for(settings);
     // The scene camera with the znear / zfar knobs, checked before the frame begins; the
     // frame uses only this one.
@@ -421,7 +426,8 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
                                  .frame_number = frame.number,
                                  .settings = &settings,
                                  .read_back = read_back,
-                                 .inspect = {inspect.begin(), inspect.end()}};
+                                 .inspect = {inspect.begin(), inspect.end()},
+                                 .pixel = pixel};
     const passes::FrameResources res = r.build_graph(in, slot);
     r.write_uniforms(slot, camera, in, res);
     r.graph->compile();
@@ -437,6 +443,8 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
     r.frames->wait(frame);
     r.collect(slot, graph_frame, in, res, result);
     result.resources = r.resources;
+    // A pixel nothing covered still has a (empty) history.
+    if (pixel && !result.pixel_history) result.pixel_history = PixelHistory{pixel->x, pixel->y};
     if (inspect_final) result.inspected = final_as_inspected(result);
     auto with_planes = [&](InspectedImage& image) {
         image.znear = camera.znear;

@@ -49,14 +49,16 @@ class Renderer {
     // frame begins, for a material_alpha_cutoff name that is no MASK material of the scene, a
     // depth_format the device lacks, or planes (`camera`'s with the znear / zfar knobs) that
     // are not 0 < znear < zfar.
+    // `pixel`: FrameResult::pixel_history for that pixel (ds::Error outside the frame).
     FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
                        uint32_t height, ReadBack read_back = ReadBack::Yes,
-                       const InspectRequest& inspect = {});
+                       const InspectRequest& inspect = {},
+                       const std::optional<PixelQuery>& pixel = std::nullopt);
     // The same with several images read back: the first is FrameResult::inspected, the others
     // FrameResult::overlays (the viewer's overlays and what it derives views from).
     FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
-                       uint32_t height, ReadBack read_back,
-                       std::span<const InspectRequest> inspect);
+                       uint32_t height, ReadBack read_back, std::span<const InspectRequest> inspect,
+                       const std::optional<PixelQuery>& pixel = std::nullopt);
     // A camera cut: the next frame's temporal passes start over (no history, and its
     // previous_view_projection is its own). set_scene() and a new size imply one.
     void camera_cut();

@@ -9,6 +9,7 @@
 //   COUNT_FRAGMENTS=1  count the fragments that ran (common/count.glsl).
 //   SURFACE_ID=1       also write the surface that won the depth test (attachment 2, u32).
 //   ALPHA_TO_COVERAGE, COUNT_DISCARDS: see common/alpha_test.glsl (with ALPHA_MASK only).
+//   PIXEL_HISTORY=1    the pixel history replay: records each fragment (common/pixel_history.glsl).
 #extension GL_GOOGLE_include_directive : require
 
 #ifndef ALPHA_MASK
@@ -20,6 +21,7 @@
 
 #include "common/alpha_test.glsl"
 #include "common/count.glsl"
+#include "common/pixel_history.glsl"
 #include "common/surface.glsl"
 
 #if COUNT_FRAGMENTS && ALPHA_MASK == 0
@@ -32,7 +34,11 @@ layout(location = 2) in vec2 in_uv0;
 layout(location = 3) in vec4 in_tangent;
 
 layout(location = 0) out vec4 out_normal;
+#if PIXEL_HISTORY  // the replay's one attachment is a stand-in for output 0: this is recorded
+float out_roughness;
+#else
 layout(location = 1) out float out_roughness;
+#endif
 #if SURFACE_ID
 layout(location = 4) flat in uint in_surface_base;
 layout(location = 2) out uint out_surface;
@@ -52,6 +58,7 @@ void main() {
     if (tested && alpha < alpha_cutoff()) {
         count_discarded();
         count_discarded_fragment();
+        history_record(alpha, alpha_cutoff(), kHistoryAlphaTested | kHistoryDiscarded, vec4(0.0));
         discard;
     }
 #endif
@@ -59,6 +66,11 @@ void main() {
     out_normal = vec4(encode_normal(shading_normal(vertex_normal(in_normal), in_tangent, in_uv0)),
                       coverage);
     out_roughness = material_roughness(in_uv0);
+#if ALPHA_MASK
+    history_record(alpha, alpha_cutoff(), tested ? kHistoryAlphaTested : 0u, out_normal);
+#else
+    history_record(1.0, 0.0, 0u, out_normal);
+#endif
 #if SURFACE_ID
     out_surface = in_surface_base + uint(gl_PrimitiveID) + 1u;
 #endif

@@ -9,6 +9,7 @@
 //                      discard, in its own pipeline drawn after opaque.
 //   COUNT_FRAGMENTS=1  count the fragments that ran (common/count.glsl).
 //   ALPHA_TO_COVERAGE=1  with ALPHA_MASK: coverage instead of discard (common/alpha_test.glsl).
+//   PIXEL_HISTORY=1    the pixel history replay: records each fragment (common/pixel_history.glsl).
 #extension GL_GOOGLE_include_directive : require
 
 #ifndef PREPASS
@@ -21,6 +22,7 @@
 #include "common/alpha_test.glsl"
 #include "common/count.glsl"
 #include "common/lighting.glsl"
+#include "common/pixel_history.glsl"
 
 #if COUNT_FRAGMENTS && ALPHA_MASK == 0
 layout(early_fragment_tests) in;
@@ -42,6 +44,8 @@ void main() {
 #elif ALPHA_MASK
     if (base.a < alpha_cutoff()) {
         count_discarded_fragment();
+        history_record(base.a, alpha_cutoff(), kHistoryAlphaTested | kHistoryDiscarded,
+                       vec4(0.0));
         discard;
     }
 #endif
@@ -58,4 +62,9 @@ void main() {
     s.occlusion *= screen_ao();
     float sun = sun_shadow(in_world_position, facing(n_vertex)) * screen_contact_shadow();
     out_color = vec4(shade(s, in_world_position, sun), coverage);
+#if ALPHA_MASK
+    history_record(base.a, alpha_cutoff(), kHistoryAlphaTested | kHistoryColor, out_color);
+#else
+    history_record(base.a, 0.0, kHistoryColor, out_color);
+#endif
 }

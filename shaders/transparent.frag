@@ -2,7 +2,8 @@
 // Transparent and decals passes: surfaces lit like forward without prepass inputs (they are
 // not in the prepass), with their own normals. Screen-space AO and contact shadows apply
 // too: the atrium's BLEND materials and every coplanar overlay lie on the opaque surface
-// those images describe. Defines: COUNT_FRAGMENTS (default 0); ALPHA_MODE (default 2):
+// those images describe. Defines: COUNT_FRAGMENTS, PIXEL_HISTORY (common/pixel_history.glsl)
+// (default 0); ALPHA_MODE (default 2):
 //   0 OPAQUE  alpha written as 1 (no blending)
 //   1 MASK    discard below the cutoff, then alpha 1 (no depth writes, so early tests hold)
 //   2 BLEND   alpha for SRC_ALPHA / ONE_MINUS_SRC_ALPHA blending into the HDR target
@@ -10,6 +11,7 @@
 
 #include "common/count.glsl"
 #include "common/lighting.glsl"
+#include "common/pixel_history.glsl"
 
 #ifndef ALPHA_MODE
 #define ALPHA_MODE 2
@@ -32,6 +34,8 @@ void main() {
 #if ALPHA_MODE == 1
     if (base.a < alpha_cutoff()) {
         count_discarded_fragment();
+        history_record(base.a, alpha_cutoff(), kHistoryAlphaTested | kHistoryDiscarded,
+                       vec4(0.0));
         discard;
     }
 #endif
@@ -42,4 +46,9 @@ void main() {
     s.occlusion *= screen_ao();
     float sun = sun_shadow(in_world_position, facing(n_vertex)) * screen_contact_shadow();
     out_color = vec4(shade(s, in_world_position, sun), ALPHA_MODE == 2 ? base.a : 1.0);
+#if ALPHA_MODE == 1
+    history_record(base.a, alpha_cutoff(), kHistoryAlphaTested | kHistoryColor, out_color);
+#else
+    history_record(base.a, 0.0, kHistoryColor, out_color);
+#endif
 }

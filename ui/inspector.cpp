@@ -139,6 +139,7 @@ void Inspector::draw() {
     advisor_panel(panel, layout);
     draws_panel(panel, layout);
     overlays_panel(panel, layout);
+    pixel_panel(panel, layout);
     viewer_panel(panel, layout);  // last: it takes the camera input the others left
 }
 
@@ -200,6 +201,7 @@ void Inspector::apply(const Action& action) {
                            size_t(to) < viewer_.overlays.size())
                            std::swap(viewer_.overlays[a.index], viewer_.overlays[size_t(to)]);
                    },
+                   [&](const PickPixel& a) { pick_pixel(a); },
                },
                action);
 }
@@ -282,6 +284,24 @@ void Inspector::measure_advice() {
         advice_error_.clear();
     } catch (const std::exception& e) {
         advice_error_ = e.what();  // the last advice, if any, stays
+    }
+}
+
+// One frame more with the pixel history of `pick` (the frame the inspector shows is not
+// replaced: a history frame adds replay passes to the pass list and timings).
+void Inspector::pick_pixel(const PickPixel& pick) {
+    const VkExtent2D size = render_size();
+    try {
+        const FrameResult f =
+            renderer_.render(camera_.camera(), settings_, size.width, size.height, ReadBack::No,
+                             InspectRequest{}, PixelQuery{pick.x, pick.y});
+        pixel_history_ = f.pixel_history;
+        pixel_depth_ = f.depth;
+        pixel_label_ =
+            scene_.name + " at " + std::to_string(size.width) + "x" + std::to_string(size.height);
+        pixel_error_.clear();
+    } catch (const std::exception& e) {
+        pixel_error_ = e.what();  // a pixel outside the frame, a refused setting
     }
 }
 

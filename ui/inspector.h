@@ -68,11 +68,16 @@ struct MoveOverlay {
     size_t index = 0;
     int by = 0;  // -1: drawn earlier (under), +1: later (over)
 };
+// A click on the image in pick mode (or with Alt): the pixel history of render pixel (x, y)
+// with the current camera, size and settings.
+struct PickPixel {
+    uint32_t x = 0, y = 0;
+};
 using Action =
     std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders, SetAutoReload,
-                 ResetSettings, MeasureAdvice, AddOverlay, RemoveOverlay, MoveOverlay>;
+                 ResetSettings, MeasureAdvice, AddOverlay, RemoveOverlay, MoveOverlay, PickPixel>;
 
-enum class MouseTarget : uint8_t { Camera, Image };
+enum class MouseTarget : uint8_t { Camera, Image, Pick };
 
 // An image drawn over the shown one, decoded (counts as a heat map) and blended with
 // `opacity` where its value is not 0.
@@ -166,6 +171,12 @@ class Inspector {
     const std::optional<capture::Advice>& advice() const { return advice_; }
     const std::string& advice_label() const { return advice_label_; }
     const std::string& advice_error() const { return advice_error_; }
+    // The last PickPixel's history (none until picked), the frame's depth planes for its
+    // linear depths, what it rendered ("atrium at 960x540") and its error, if it failed.
+    const std::optional<PixelHistory>& pixel_history() const { return pixel_history_; }
+    const std::optional<DepthResult>& pixel_depth() const { return pixel_depth_; }
+    const std::string& pixel_label() const { return pixel_label_; }
+    const std::string& pixel_error() const { return pixel_error_; }
     const scene::Camera& camera() const { return camera_.camera(); }
     CameraInput& camera_input() { return camera_input_; }
     // The render size the next frame uses: the viewer's area times render_scale.
@@ -195,6 +206,7 @@ class Inspector {
     void change_settings(const Settings& changed);
     void render();
     void measure_advice();
+    void pick_pixel(const PickPixel& pick);
 
     Renderer& renderer_;
     DeviceInfo device_;  // what the panels say of the device's counters
@@ -221,6 +233,9 @@ class Inspector {
     uint64_t frames_rendered_ = 0;
     std::optional<capture::Advice> advice_;
     std::string advice_label_, advice_error_;
+    std::optional<PixelHistory> pixel_history_;
+    std::optional<DepthResult> pixel_depth_;
+    std::string pixel_label_, pixel_error_;
     mutable PanelState panel_state_;
 };
 

@@ -32,6 +32,8 @@ const char* pass_role_name(PassRole role) {
             return "readback";
         case PassRole::Measure:
             return "measure";
+        case PassRole::History:
+            return "history";
     }
     return "?";
 }

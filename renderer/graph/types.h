@@ -97,12 +97,13 @@ enum class Lifetime : uint8_t {
 enum class PassKind : uint8_t { Graphics, Compute, Transfer };
 
 // What a pass is for, so a report or a panel can group and fold: the frame's own work,
-// clearing what a later pass accumulates into, or reading results back to the host.
-// Measure: work a diagnostic adds beside a frame pass (count_fragments' rasterized counts)
-// that is not the frame's own.
-enum class PassRole : uint8_t { Frame, Clear, ReadBack, Measure };
+// clearing what a later pass accumulates into, reading results back to the host, work a
+// diagnostic adds beside a frame pass (Measure: count_fragments' rasterized counts), or a pixel
+// history replay (History: a geometry pass's draws again, instrumented, before the pass itself).
+enum class PassRole : uint8_t { Frame, Clear, ReadBack, Measure, History };
 
 const char* pass_kind_name(PassKind kind);  // "graphics" | "compute" | "transfer"
-const char* pass_role_name(PassRole role);  // "frame" | "clear" | "readback" | "measure"
+// "frame" | "clear" | "readback" | "measure" | "history"
+const char* pass_role_name(PassRole role);
 
 }  // namespace ds::graph

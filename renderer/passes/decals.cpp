@@ -30,15 +30,22 @@ DecalsPass::DecalsPass(const PassServices& services)
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
                  [](const Variant& v, const ShaderStages& s) {
                      return describe_pipeline(pipeline_name(v), s, /*alpha_to_coverage=*/false);
-                 }) {}
+                 }),
+      history_(services, kName, drawing_.set_layouts()) {}
 
 ShaderStages DecalsPass::compile(const Variant& v) const {
     std::vector<shader::Define> defines = {{"ALPHA_MODE", std::to_string(int(v.mode))}};
-    if (v.counting) add_count_defines(defines, services_.context);
     std::vector<shader::Define> vert_defines;
+    if (v.counting) add_count_defines(defines, services_.context);
     if (v.count_draws) {
         vert_defines.push_back({"COUNT_DRAWS", "1"});
         defines.push_back({"COUNT_DRAWS", "1"});
+    }
+    if (v.history) {
+        for (shader::Define& d :
+             PixelHistoryReplay::defines(true, true, v.samples != VK_SAMPLE_COUNT_1_BIT))
+            defines.push_back(std::move(d));
+        vert_defines.push_back({"PIXEL_HISTORY", "1"});
     }
     return {
         services_.compiler.compile("transparent.vert", shader::Stage::Vertex, vert_defines).spirv,
@@ -51,10 +58,12 @@ std::string DecalsPass::pipeline_name(const Variant& v) {
                        : v.mode == AlphaMode::Mask ? "decals mask"
                                                    : "decals blend";
     if (v.counting) name += " counting";
+    if (v.history) name += " history";
     return name;
 }
 
 vk::Pipeline DecalsPass::create(const Variant& v, const ShaderStages& s) const {
+    if (v.history) return history_.create(s, v.samples, pipeline_name(v));
     const float towards_camera = v.reverse_z ? 1.0f : -1.0f;
     return scene_pipeline_builder(drawing_.layout(), s.vert, s.frag)
         .color_attachment(kHdrFormat,
@@ -67,43 +76,67 @@ vk::Pipeline DecalsPass::create(const Variant& v, const ShaderStages& s) const {
 
 void DecalsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     uses_.clear();
+    history_.clear();
     if (!in.options.decal_pass) return;
     struct Step {
         AlphaMode mode;
         VkPipeline pipeline;
         PipelineInfo info;
     };
-    auto step = [&](AlphaMode mode) {
+    using Steps = std::array<Step, 3>;
+    auto step = [&](AlphaMode mode, bool history) {
         const Variant v{.mode = mode,
-                        .counting = res.decal_counts.valid(),
+                        .counting = res.decal_counts.valid() && !history,
                         .reverse_z = in.options.reverse_z,
+                        .history = history,
                         .samples = in.options.samples,
                         .depth = in.options.depth_format,
                         .count_draws = res.decal_counts.draws.valid()};
         return Step{mode, pipelines_.get(v), pipelines_.info(v)};
     };
-    const std::array<Step, 3> order = {step(AlphaMode::Opaque), step(AlphaMode::Mask),
-                                       step(AlphaMode::Blend)};
-    const VkPipelineLayout layout = drawing_.layout();
+    auto steps = [&](bool history) {
+        return Steps{step(AlphaMode::Opaque, history), step(AlphaMode::Mask, history),
+                     step(AlphaMode::Blend, history)};
+    };
+    // Opaque, MASK, BLEND overlays in authored order; the log's tag is the step.
+    auto draw_with = [](Steps order, PipelineUses* uses) {
+        return [order, uses](VkCommandBuffer cmd, const FrameInputs& in, VkPipelineLayout layout,
+                             DrawLog* log) {
+            for (uint32_t i = 0; i < order.size(); ++i) {
+                const Step& s = order[i];
+                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.pipeline);
+                if (log) log->pipeline = i;
+                const DrawCounts n = draw_groups(cmd, *in.scene, layout, {&s.mode, 1}, Decals::Only,
+                                                 std::nullopt, {.log = log});
+                if (uses) uses->add(s.info, n.draws);
+            }
+        };
+    };
+    const Steps order = steps(false);
+    if (in.pixel) {
+        history_pipelines_.clear();
+        for (const Step& s : order)
+            history_pipelines_.push_back(history_pipeline(s.info, s.mode == AlphaMode::Blend));
+        drawing_.add_history(graph, in, res, history_, draw_with(steps(true), nullptr));
+    }
     drawing_.add(graph, kName, in, res, res.decal_counts, /*resolve=*/false,
-                 [this, order, layout](VkCommandBuffer cmd, const FrameInputs& in) {
-                     for (const Step& s : order) {
-                         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.pipeline);
-                         uses_.add(
-                             s.info,
-                             draw_groups(cmd, *in.scene, layout, {&s.mode, 1}, Decals::Only).draws);
-                     }
-                 });
+                 draw_with(order, &uses_));
     rasterized_.add(graph, in, res, res.decal_counts,
                     {.samples = in.options.samples,
                      .modes = {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend},
                      .decals = Decals::Only});
 }
 
-void DecalsPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
-    if (own.empty()) return;
-    collect_counts(c.readback, c.res.decal_counts, own[0]);
-    own[0].pipelines = uses_.list();
+void DecalsPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {
+    PassResult* const own_pass = frame_result(own);
+    if (!own_pass) return;
+    collect_counts(c.readback, c.res.decal_counts, *own_pass);
+    own_pass->pipelines = uses_.list();
+    // Against the scene depth, closer-or-equal, no writes (the bias: decals.h).
+    history_.collect(
+        c, history_pipelines_,
+        {.compare = c.in.options.closer_or_equal(), .depth_format = c.in.options.depth_format},
+        frame);
 }
 
 }  // namespace ds::passes

@@ -11,6 +11,9 @@
 // and the base's AO and contact shadows.
 //
 // msaa > 1: draws into res.msaa_hdr against res.msaa_depth; transparent resolves afterwards.
+// Pixel history (FrameInputs::pixel): decals_history replays the three steps first with the
+// instrumented variants (pixel_history.h). The replay has no depth attachment, so its depths
+// carry no bias: the simulated test compares the unbiased depth with the scene depth.
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
@@ -50,12 +53,13 @@ class DecalsPass final : public FramePass {
         scene::AlphaMode mode = scene::AlphaMode::Opaque;
         bool counting = false;  // COUNT_FRAGMENTS=1
         bool reverse_z = true;  // the bias's direction
+        bool history = false;   // PIXEL_HISTORY=1: the replay's, no attachments
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
         bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
         bool operator==(const Variant&) const = default;
         size_t hash() const {
-            return hash_fields(int(mode), counting, reverse_z, int(samples), int(depth),
+            return hash_fields(int(mode), counting, reverse_z, history, int(samples), int(depth),
                                count_draws);
         }
     };
@@ -68,6 +72,8 @@ class DecalsPass final : public FramePass {
     RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
     PipelineUses uses_;  // this frame's
+    PixelHistoryReplay history_;
+    std::vector<HistoryPipeline> history_pipelines_;  // this frame's real ones, by log tag
 };
 
 }  // namespace ds::passes

@@ -39,7 +39,10 @@ DepthPrepass::DepthPrepass(const PassServices& services)
                  [](const Variant& v, const ShaderStages& s) {
                      return describe_pipeline(pipeline_name(v), s, v.alpha_to_coverage);
                  }),
-      queries_(services.context) {
+      queries_(services.context),
+      history_(services, kName,
+               {services.frame_layout, services.material_layout, discard_layout_.handle(),
+                count_layout_.handle()}) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           discard_layout_.handle(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "depth prepass layout");
@@ -74,6 +77,12 @@ ShaderStages DepthPrepass::compile(const Variant& v) const {
         defines.push_back({"SURFACE_ID", "1"});
         vert_defines.push_back({"SURFACE_ID", "1"});
     }
+    if (v.history) {
+        for (shader::Define& d :
+             PixelHistoryReplay::defines(false, false, v.samples != VK_SAMPLE_COUNT_1_BIT))
+            defines.push_back(std::move(d));
+        vert_defines.push_back({"PIXEL_HISTORY", "1"});
+    }
     ShaderStages s;
     s.vert =
         services_.compiler.compile("depth_prepass.vert", shader::Stage::Vertex, vert_defines).spirv;
@@ -91,10 +100,12 @@ std::string DepthPrepass::pipeline_name(const Variant& v) {
     if (v.alpha_to_coverage) name += " a2c";
     if (v.count_discards) name += " count_discards";
     if (v.counting) name += " counting";
+    if (v.history) name += " history";
     return name;
 }
 
 vk::Pipeline DepthPrepass::create(const Variant& v, const ShaderStages& s) const {
+    if (v.history) return history_.create(s, v.samples, pipeline_name(v));
     vk::GraphicsPipelineBuilder b = scene_pipeline_builder(layout_.handle(), s.vert, s.frag);
     b.color_attachment(kNormalFormat).color_attachment(kRoughnessFormat);
     if (v.surface_id) b.color_attachment(kSurfaceFormat);
@@ -110,6 +121,7 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
     // Sorted, one draw per instance; else one per group.
     queries_.begin_frame(in.options.count_draws && in.options.prepass,
                          uint32_t(in.scene->instance_groups().size()));
+    history_.clear();
     if (!in.options.prepass) return;
     const Variant opaque{.counting = res.prepass_counts.valid(),
                          .surface_id = in.options.surface_id,
@@ -139,6 +151,7 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
                                                 kDiscardBytes)
             : graph::BufferHandle{};
     discards_ = discards;
+    if (in.pixel) add_history(graph, in, res, opaque, tested);
     struct Data {
         FrameInputs in;
         FrameResources res;
@@ -173,10 +186,18 @@ VkDescriptorSet DepthPrepass::discard_set(graph::PassContext& ctx, const FrameIn
 }
 
 void DepthPrepass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {
-    if (own.empty()) return;
-    collect_counts(c.readback, c.res.prepass_counts, own[0]);
-    own[0].pipelines = uses_.list();
-    own[0].draw_samples_passed = queries_.per_group(c.in.scene->draw_groups().size());
+    PassResult* const own_pass = frame_result(own);
+    if (!own_pass) return;
+    collect_counts(c.readback, c.res.prepass_counts, *own_pass);
+    own_pass->pipelines = uses_.list();
+    own_pass->draw_samples_passed = queries_.per_group(c.in.scene->draw_groups().size());
+    // The depth buffer starts cleared; the closer test, writes on (draw_scene).
+    history_.collect(c, history_pipelines_,
+                     {.compare = c.in.options.closer(),
+                      .depth_write = true,
+                      .clear_depth = c.in.options.far_depth(),
+                      .depth_format = c.in.options.depth_format},
+                     frame);
     const std::span<const std::byte> bytes = c.readback.buffer_bytes(discards_);
     if (bytes.size() < kDiscardBytes) return;
     uint32_t counts[2] = {};
@@ -292,14 +313,48 @@ void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const 
     }
     queries_.reset(cmd);
     begin(ctx, in, res, msaa);
-    draw_scene(cmd, in, draw);
+    draw_scene(cmd, in, draw, uses_, nullptr);
     vk::fn().cmd_end_rendering(cmd);
 }
 
-void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw) {
+void DepthPrepass::add_history(graph::RenderGraph& graph, const FrameInputs& in,
+                               FrameResources& res, const Variant& opaque, const Variant& tested) {
+    Variant replay_opaque = opaque, replay_tested = tested;
+    for (Variant* v : {&replay_opaque, &replay_tested}) {
+        *v = {.alpha = v->alpha,
+              .alpha_to_coverage = v->alpha_to_coverage,
+              .history = true,
+              .samples = v->samples,
+              .depth = v->depth};  // no counting: the frame's counts stay the frame's
+    }
+    Draw draw;
+    draw.layout = history_.layout();
+    if (in.options.masked_split) {
+        draw.opaque = pipelines_.get(replay_opaque);
+        draw.mask = pipelines_.get(replay_tested);
+        history_pipelines_ = {history_pipeline(pipelines_.info(opaque)),
+                              history_pipeline(pipelines_.info(tested))};
+    } else {
+        draw.opaque = pipelines_.get(replay_tested);
+        history_pipelines_ = {history_pipeline(pipelines_.info(tested))};
+    }
+    const graph::BufferHandle uniforms = res.frame_uniforms;
+    history_.add(
+        graph, in, {.extent_of = res.depth},
+        [uniforms](graph::PassBuilder& b) {
+            b.read(uniforms, Access::UniformRead, graph::Shader::Vertex | graph::Shader::Fragment);
+        },
+        [this, in, draw](graph::PassContext& ctx, DrawLog& log) {
+            PipelineUses unused;  // the frame's pipelines report the frame's draws only
+            draw_scene(ctx.cmd(), in, draw, unused, &log);
+        });
+}
+
+void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw,
+                              PipelineUses& uses, DrawLog* log) {
     set_depth_state(cmd, /*test=*/true, /*write=*/true, in.options.closer());
     bind_geometry(cmd, *in.scene);
-    const VkPipelineLayout layout = layout_.handle();
+    const VkPipelineLayout layout = draw.layout ? draw.layout : layout_.handle();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
                             nullptr);
     if (draw.counts)
@@ -310,26 +365,35 @@ void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const 
                                 &draw.discards, 0, nullptr);
     // prepass_sort: nearest instances first, so the depth test rejects hidden layers before
     // their (normal-mapped) fragment shader runs; off: instanced groups in authored order.
+    // The frame's draws are queried (count_draws); a history replay's (with `log`) are not.
+    const DrawHooks hooks{.queries = log ? nullptr : &queries_, .log = log};
     auto draw_modes = [&](std::span<const AlphaMode> modes) {
         const Decals decals = scene_groups(in.options.decal_pass);
         if (!in.options.prepass_sort)
-            return draw_groups(cmd, *in.scene, layout, modes, decals, std::nullopt, &queries_);
+            return draw_groups(cmd, *in.scene, layout, modes, decals, std::nullopt, hooks);
         const auto sorted =
             sort_by_distance(*in.scene, in.camera_position, modes, DrawOrder::FrontToBack, decals);
-        return draw_sorted(cmd, *in.scene, layout, sorted, &queries_);
+        return draw_sorted(cmd, *in.scene, layout, sorted, hooks);
+    };
+    // The log's tags: 0 the first pipeline, 1 the MASK one (add_history's order).
+    auto tag = [log](uint32_t pipeline) {
+        if (log) log->pipeline = pipeline;
     };
     if (draw.mask) {
         const AlphaMode opaque[] = {AlphaMode::Opaque};
         const AlphaMode mask[] = {AlphaMode::Mask};
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
-        uses_.add(draw.opaque_info, draw_modes(opaque).draws);
+        tag(0);
+        uses.add(draw.opaque_info, draw_modes(opaque).draws);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
-        uses_.add(draw.mask_info, draw_modes(mask).draws);
+        tag(1);
+        uses.add(draw.mask_info, draw_modes(mask).draws);
     } else {
         // One pipeline with discard for opaque and MASK alike.
         const AlphaMode all[] = {AlphaMode::Opaque, AlphaMode::Mask};
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
-        uses_.add(draw.opaque_info, draw_modes(all).draws);
+        tag(0);
+        uses.add(draw.opaque_info, draw_modes(all).draws);
     }
 }
 

@@ -24,6 +24,8 @@
 //
 // count_discards=on: that pipeline counts the fragments it ran and those it discarded into a
 // small host storage buffer (set 2, HostReadback), read after the frame's fence.
+// Pixel history (FrameInputs::pixel): depth_prepass_history replays draw_scene() first with
+// the instrumented variants (pixel_history.h); its fragments start from the cleared depth.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -36,6 +38,7 @@
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/passes/pipeline_use.h"
+#include "renderer/passes/pixel_history.h"
 #include "renderer/passes/rasterized_count.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptors.h"
@@ -72,13 +75,14 @@ class DepthPrepass final : public FramePass {
         bool alpha_to_coverage = false;  // alpha-tested pipeline only
         bool count_discards = false;     // alpha-tested pipeline only
         bool surface_id = false;         // SURFACE_ID=1: a third, u32 attachment
+        bool history = false;            // PIXEL_HISTORY=1: the replay's, no attachments
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
         bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(int(alpha), counting, alpha_to_coverage, count_discards, surface_id,
-                               int(samples), int(depth), count_draws);
+                               history, int(samples), int(depth), count_draws);
         }
     };
     static constexpr uint32_t kDiscardSet = 2;
@@ -89,6 +93,9 @@ class DepthPrepass final : public FramePass {
         PipelineInfo opaque_info, mask_info;
         VkDescriptorSet counts = VK_NULL_HANDLE;
         VkDescriptorSet discards = VK_NULL_HANDLE;
+        // What the sets are bound with (null: the pass's; the replay binds with its own, which
+        // has set 4 too, or binding set 0 would disturb set 4).
+        VkPipelineLayout layout = VK_NULL_HANDLE;
     };
 
     ShaderStages compile(const Variant& variant) const;
@@ -106,7 +113,12 @@ class DepthPrepass final : public FramePass {
                 const Msaa& msaa, Draw draw, graph::BufferHandle discards);
     void begin(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
                const Msaa& msaa) const;
-    void draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw);
+    // The pass's draws with `draw`'s pipelines (the frame's or the replay's), logged to `log`.
+    void draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw,
+                    PipelineUses& uses, DrawLog* log);
+    // Pixel history: the replay of draw_scene() with the instrumented twins of `draw`'s.
+    void add_history(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res,
+                     const Variant& opaque, const Variant& tested);
 
     PassServices services_;
     vk::DescriptorSetLayout discard_layout_;
@@ -119,6 +131,8 @@ class DepthPrepass final : public FramePass {
     graph::BufferHandle discards_;  // this frame's discard counters (count_discards=on)
     PipelineUses uses_;             // this frame's
     DrawQueries queries_;           // count_draws: samples passed per draw
+    PixelHistoryReplay history_;
+    std::vector<HistoryPipeline> history_pipelines_;  // this frame's real ones, by log tag
 };
 
 }  // namespace ds::passes

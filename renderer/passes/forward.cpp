@@ -27,7 +27,10 @@ ForwardPass::ForwardPass(const PassServices& services)
                  [](const Variant& v, const ShaderStages& s) {
                      return describe_pipeline(pipeline_name(v), s, v.alpha_to_coverage);
                  }),
-      queries_(services.context) {
+      queries_(services.context),
+      history_(services, kName,
+               {services.frame_layout, services.material_layout, lighting_.layout(),
+                count_layout_.handle()}) {
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           lighting_.layout(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "forward layout");
@@ -39,11 +42,23 @@ void ForwardPass::rebuild_pipelines(vk::DestroyList& retired) {
     rasterized_.rebuild_pipelines(retired);
 }
 
-void ForwardPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
-    if (own.empty()) return;
-    collect_counts(c.readback, c.res.forward_counts, own[0]);
-    own[0].pipelines = uses_.list();
-    own[0].draw_samples_passed = queries_.per_group(c.in.scene->draw_groups().size());
+void ForwardPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {
+    PassResult* const own_pass = frame_result(own);
+    if (!own_pass) return;
+    collect_counts(c.readback, c.res.forward_counts, *own_pass);
+    own_pass->pipelines = uses_.list();
+    own_pass->draw_samples_passed = queries_.per_group(c.in.scene->draw_groups().size());
+    const FrameOptions& o = c.in.options;
+    // With the prepass: its depth, EQUAL (or closer-or-equal), no writes; else cleared, the
+    // closer test, writes on (record()).
+    history_.collect(c, history_pipelines_,
+                     {.compare = !o.prepass      ? o.closer()
+                                 : o.depth_equal ? VK_COMPARE_OP_EQUAL
+                                                 : o.closer_or_equal(),
+                      .depth_write = !o.prepass,
+                      .clear_depth = o.prepass ? std::nullopt : std::optional(o.far_depth()),
+                      .depth_format = o.depth_format},
+                     frame);
 }
 
 ShaderStages ForwardPass::compile(const Variant& v) const {
@@ -56,6 +71,12 @@ ShaderStages ForwardPass::compile(const Variant& v) const {
     if (v.count_draws) {
         vert_defines.push_back({"COUNT_DRAWS", "1"});
         frag_defines.push_back({"COUNT_DRAWS", "1"});
+    }
+    if (v.history) {
+        const bool msaa = v.samples != VK_SAMPLE_COUNT_1_BIT;
+        for (shader::Define& d : PixelHistoryReplay::defines(v.prepass_inputs, false, msaa))
+            frag_defines.push_back(std::move(d));
+        vert_defines.push_back({"PIXEL_HISTORY", "1"});
     }
     ShaderStages s;
     s.vert = services_.compiler.compile("forward.vert", shader::Stage::Vertex, vert_defines).spirv;
@@ -72,10 +93,12 @@ std::string ForwardPass::pipeline_name(const Variant& v) {
                                           : "forward opaque";
     if (v.alpha_to_coverage) name += " a2c";
     if (v.counting) name += " counting";
+    if (v.history) name += " history";
     return name;
 }
 
 vk::Pipeline ForwardPass::create(const Variant& v, const ShaderStages& s) const {
+    if (v.history) return history_.create(s, v.samples, pipeline_name(v));
     return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
         .color_attachment(kHdrFormat)
         .depth_attachment(v.depth)
@@ -109,12 +132,14 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
     }
     uses_.clear();
     queries_.begin_frame(o.count_draws && !o.prepass, uint32_t(in.scene->draw_groups().size()));
+    history_.clear();
     draw.lighting = {.shadow_map = res.shadow_map,
                      .normals = o.prepass ? res.normals : graph::ImageHandle{},
                      .roughness = o.prepass ? res.roughness : graph::ImageHandle{},
                      .ao = res.ao,
                      .contact_shadows = res.contact_shadows};
     // The record lambda needs the handles setup creates: they travel in the pass's Data.
+    if (in.pixel) add_history(graph, in, res, opaque, mask, draw);
     struct Data {
         FrameInputs in;
         FrameResources res;
@@ -181,9 +206,51 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
                              : o.depth_equal ? VK_COMPARE_OP_EQUAL
                                              : o.closer_or_equal();
     set_depth_state(cmd, /*test=*/true, /*write=*/!o.prepass, test);
+    draw_scene(cmd, in, draw, lighting, counts, uses_, nullptr);
+    vk::fn().cmd_end_rendering(cmd);
+}
 
+void ForwardPass::add_history(graph::RenderGraph& graph, const FrameInputs& in,
+                              const FrameResources& res, const Variant& opaque, const Variant& mask,
+                              const Draw& real) {
+    auto twin = [](Variant v) {
+        v.counting = false;  // the frame's counts stay the frame's
+        v.count_draws = false;
+        v.history = true;
+        return v;
+    };
+    Draw draw = real;
+    draw.layout = history_.layout();
+    draw.opaque = pipelines_.get(twin(opaque));
+    history_pipelines_ = {history_pipeline(real.opaque_info)};
+    if (real.mask) {
+        draw.mask = pipelines_.get(twin(mask));
+        history_pipelines_.push_back(history_pipeline(real.mask_info));
+    }
+    const FrameOptions& o = in.options;
+    const graph::ImageHandle depth = !o.prepass ? graph::ImageHandle{}
+                                     : o.msaa() ? res.msaa_depth
+                                                : res.depth;
+    const graph::BufferHandle uniforms = res.frame_uniforms;
+    history_.add(
+        graph, in, {.depth = depth, .extent_of = res.depth},
+        [uniforms, lighting = draw.lighting](graph::PassBuilder& b) {
+            LightingSet::declare(b, lighting);
+            b.read(uniforms, Access::UniformRead, graph::Shader::Vertex | graph::Shader::Fragment);
+        },
+        [this, in, draw](graph::PassContext& ctx, DrawLog& log) {
+            const VkDescriptorSet lighting = lighting_.write(ctx, in.frame_number, draw.lighting);
+            PipelineUses unused;  // the frame's pipelines report the frame's draws only
+            draw_scene(ctx.cmd(), in, draw, lighting, VK_NULL_HANDLE, unused, &log);
+        });
+}
+
+void ForwardPass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw,
+                             VkDescriptorSet lighting, VkDescriptorSet counts, PipelineUses& uses,
+                             DrawLog* log) {
+    const FrameOptions& o = in.options;
     bind_geometry(cmd, *in.scene);
-    const VkPipelineLayout layout = layout_.handle();
+    const VkPipelineLayout layout = draw.layout ? draw.layout : layout_.handle();
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
                             nullptr);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &lighting, 0,
@@ -195,14 +262,18 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     const AlphaMode mask[] = {AlphaMode::Mask};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
     const Decals decals = scene_groups(o.decal_pass);
-    uses_.add(draw.opaque_info,
-              draw_groups(cmd, *in.scene, layout, opaque, decals, std::nullopt, &queries_).draws);
+    // The log's tags: 0 the opaque pipeline, 1 the MASK one (add_history's order). The frame's
+    // draws are queried (count_draws with prepass=off); a history replay's (with `log`) are not.
+    const DrawHooks hooks{.queries = log ? nullptr : &queries_, .log = log};
+    if (log) log->pipeline = 0;
+    uses.add(draw.opaque_info,
+             draw_groups(cmd, *in.scene, layout, opaque, decals, std::nullopt, hooks).draws);
     // MASK after opaque either way: with the prepass and EQUAL the same pipeline (EQUAL does
     // the alpha test's work), otherwise the discard pipeline, testing against opaque depth.
     if (draw.mask) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
-    uses_.add(draw.mask ? draw.mask_info : draw.opaque_info,
-              draw_groups(cmd, *in.scene, layout, mask, decals, std::nullopt, &queries_).draws);
-    vk::fn().cmd_end_rendering(cmd);
+    if (log && draw.mask) log->pipeline = 1;
+    uses.add(draw.mask ? draw.mask_info : draw.opaque_info,
+             draw_groups(cmd, *in.scene, layout, mask, decals, std::nullopt, hooks).draws);
 }
 
 bool ForwardPass::native_resolve(const FrameOptions& o) const {

@@ -22,6 +22,9 @@
 // and transparent resolves it into res.hdr) against res.msaa_depth. Without the prepass it
 // writes that depth and resolves it to the nearest sample into res.depth, natively, or the
 // depth_resolve pass that follows does.
+// Pixel history (FrameInputs::pixel): forward_history replays draw_scene() first with the
+// instrumented variants (pixel_history.h), reading the depth the prepass left (or from the
+// cleared depth without it).
 #include <array>
 #include <cstdint>
 
@@ -34,6 +37,7 @@
 #include "renderer/passes/lighting_set.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/passes/pipeline_use.h"
+#include "renderer/passes/pixel_history.h"
 #include "renderer/passes/rasterized_count.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
@@ -67,13 +71,14 @@ class ForwardPass final : public FramePass {
         bool counting = false;           // COUNT_FRAGMENTS=1
         bool sample_shading = false;     // sample_shading=on (msaa > 1)
         bool alpha_to_coverage = false;  // MASK pipelines, alpha_to_coverage=on
+        bool history = false;            // PIXEL_HISTORY=1: the replay's, no attachments
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
         bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(prepass_inputs, alpha_mask, non_invariant, counting, sample_shading,
-                               alpha_to_coverage, int(samples), int(depth), count_draws);
+                               alpha_to_coverage, history, int(samples), int(depth), count_draws);
         }
     };
 
@@ -82,6 +87,9 @@ class ForwardPass final : public FramePass {
         VkPipeline mask = VK_NULL_HANDLE;    // otherwise: MASK, with its discard
         PipelineInfo opaque_info, mask_info;
         LightingInputs lighting;
+        // What the sets are bound with (null: the pass's; the replay binds with its own, which
+        // has set 4 too, or binding set 0 would disturb set 4).
+        VkPipelineLayout layout = VK_NULL_HANDLE;
     };
 
     ShaderStages compile(const Variant& variant) const;
@@ -92,6 +100,13 @@ class ForwardPass final : public FramePass {
     void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
                 const Draw& draw);
     void begin(graph::PassContext& ctx, const FrameOptions& o, const FrameResources& res) const;
+    // Binds the sets and draws opaque, then MASK, with `draw`'s pipelines, logged to `log`.
+    void draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw,
+                    VkDescriptorSet lighting, VkDescriptorSet counts, PipelineUses& uses,
+                    DrawLog* log);
+    // Pixel history: the replay of draw_scene() with the instrumented twins of `draw`'s.
+    void add_history(graph::RenderGraph& graph, const FrameInputs& in, const FrameResources& res,
+                     const Variant& opaque, const Variant& mask, const Draw& draw);
     bool native_resolve(const FrameOptions& o) const;
 
     PassServices services_;
@@ -104,6 +119,8 @@ class ForwardPass final : public FramePass {
     PipelineUses uses_;  // this frame's
     // count_draws with prepass=off: forward decides visibility, so its draws are queried.
     DrawQueries queries_;
+    PixelHistoryReplay history_;
+    std::vector<HistoryPipeline> history_pipelines_;  // this frame's real ones, by log tag
 };
 
 }  // namespace ds::passes

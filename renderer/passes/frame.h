@@ -199,6 +199,7 @@ struct FrameInputs {
     const Settings* settings = nullptr;   // the registry's values (skip reasons name knobs)
     ReadBack read_back = ReadBack::Yes;   // what the caller reads back after the fence
     std::vector<InspectRequest> inspect;  // resources to read back through the inspect pass
+    std::optional<PixelQuery> pixel;      // pixel history: the geometry passes replay for it
 };
 
 }  // namespace ds::passes

@@ -24,6 +24,15 @@ struct FrameCollect {
     const HostReadback& readback;
 };
 
+// A frame pass's own graph pass among those it added (FramePass::collect's `own`): the first
+// of the Frame role, since a pixel history replay comes before it and a measurement after it.
+// Null when it added none.
+inline PassResult* frame_result(std::span<PassResult> own) {
+    for (PassResult& p : own)
+        if (p.role == graph::PassRole::Frame) return &p;
+    return nullptr;
+}
+
 class FramePass {
   public:
     virtual ~FramePass() = default;

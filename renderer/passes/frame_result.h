@@ -2,6 +2,7 @@
 // What a frame gives back (FrameResult and its parts) and what a caller may ask of it
 // (ReadBack, InspectRequest). Plain data, below the passes: each pass fills its own part
 // after the frame's fence (FramePass::collect), the facade returns it.
+#include <array>
 #include <compare>
 #include <cstdint>
 #include <optional>
@@ -173,6 +174,32 @@ struct DrawReport {
     bool occluded = false;
 };
 
+// pixel history (PixelQuery): one fragment that covered the pixel, as its pass's instrumented
+// replay recorded it and the host's simulation of the pass's depth test and blending judged it
+// (renderer/passes/pixel_history.h). Names come from the scene (Scene::instance_name).
+struct PixelAlphaTest {
+    float alpha = 0, cutoff = 0;
+    bool passed = true;  // false: discarded
+};
+struct PixelFragment {
+    std::string pass;      // the geometry pass ("depth_prepass", "forward", ...)
+    std::string pipeline;  // the real pipeline that drew it (PipelineReport::name)
+    uint32_t draw = 0;     // index of its draw in the pass's submission order
+    uint32_t instance = 0, primitive = 0, sample = 0;
+    float depth = 0;  // gl_FragCoord.z, as the depth format stores it
+    bool depth_passed = false;
+    float against = 0;  // the depth buffer's value when the fragment was tested
+    std::optional<PixelAlphaTest> alpha_test;  // pipelines with an alpha test only
+    bool shaded = false;  // the fragment shader ran in the real frame (early-Z: only if passed)
+    std::optional<std::array<float, 4>> color;    // the shader's HDR output (not the prepass)
+    std::optional<std::array<float, 4>> blended;  // blended passes: the colour after blending
+};
+struct PixelHistory {
+    uint32_t x = 0, y = 0;
+    std::vector<PixelFragment> fragments = {};  // submission order: pass, draw, instance, primitive
+    uint64_t dropped = 0;  // records past a replay's buffer (then fragments are incomplete)
+};
+
 struct FrameResult {
     uint32_t width = 0, height = 0;
     std::vector<uint8_t> rgba8;      // final image, sRGB-encoded, tightly packed, top row first;
@@ -207,6 +234,8 @@ struct FrameResult {
     // (names it lacks are left out, so find them by name): what the viewer stacks over the
     // first and derives views from.
     std::vector<InspectedImage> overlays;
+    // PixelQuery: every fragment that covered the pixel; none when nothing was asked.
+    std::optional<PixelHistory> pixel_history;
 };
 
 // Read back one graph image by name at the end of the frame ("final": the tonemapped image;
@@ -215,6 +244,12 @@ struct FrameResult {
 struct InspectRequest {
     std::string resource;  // "" = none
     uint32_t sample = 0;   // multisampled images
+};
+
+// Pixel history for one pixel of the frame (x, y in pixels, row 0 = top): each geometry pass
+// replays its draws with instrumented shaders first (graph role history).
+struct PixelQuery {
+    uint32_t x = 0, y = 0;
 };
 
 // Benchmarks skip the copy to host memory; WithMsaaDepth is Yes plus MsaaResult's depth.

@@ -21,6 +21,11 @@ OverlayDrawing::OverlayDrawing(const PassServices& services, const char* name)
         vk::PipelineLayout(services.context, sets, {}, (std::string(name) + " layout").c_str());
 }
 
+std::vector<VkDescriptorSetLayout> OverlayDrawing::set_layouts() const {
+    return {services_.frame_layout, services_.material_layout, lighting_.layout(),
+            count_layout_.handle()};
+}
+
 void OverlayDrawing::add(graph::RenderGraph& graph, const char* name, const FrameInputs& in,
                          FrameResources& res, const CountImages& counts, bool resolve, Draw draw) {
     // Not in the prepass: no prepass normal or roughness.
@@ -69,8 +74,41 @@ void OverlayDrawing::record(graph::PassContext& ctx, const FrameInputs& in,
     if (count_set)
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kCountSet, 1,
                                 &count_set, 0, nullptr);
-    draw(cmd, in);
+    draw(cmd, in, layout, nullptr);
     vk::fn().cmd_end_rendering(cmd);
+}
+
+void OverlayDrawing::add_history(graph::RenderGraph& graph, const FrameInputs& in,
+                                 const FrameResources& res, PixelHistoryReplay& replay, Draw draw) {
+    const LightingInputs lighting = {.shadow_map = res.shadow_map,
+                                     .normals = {},
+                                     .roughness = {},
+                                     .ao = res.ao,
+                                     .contact_shadows = res.contact_shadows};
+    const bool msaa = in.options.msaa();
+    const graph::BufferHandle uniforms = res.frame_uniforms;
+    replay.add(
+        graph, in,
+        {.depth = msaa ? res.msaa_depth : res.depth,
+         .dst = msaa ? res.msaa_hdr : res.hdr,
+         .extent_of = res.depth},
+        [lighting, uniforms](graph::PassBuilder& b) {
+            LightingSet::declare(b, lighting);
+            b.read(uniforms, graph::Access::UniformRead,
+                   graph::Shader::Vertex | graph::Shader::Fragment);
+        },
+        [this, in, lighting, draw, &replay](graph::PassContext& ctx, DrawLog& log) {
+            VkCommandBuffer cmd = ctx.cmd();
+            const VkDescriptorSet lighting_set = lighting_.write(ctx, in.frame_number, lighting);
+            // The replay's layout: binding with the pass's would disturb set 4.
+            const VkPipelineLayout layout = replay.layout();
+            bind_geometry(cmd, *in.scene);
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1,
+                                    &in.frame_set, 0, nullptr);
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1,
+                                    &lighting_set, 0, nullptr);
+            draw(cmd, in, layout, &log);
+        });
 }
 
 }  // namespace ds::passes

@@ -67,8 +67,8 @@ bool selected(const scene::DrawGroup& group, std::span<const scene::AlphaMode> m
 
 DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
                        std::span<const scene::AlphaMode> modes, Decals decals,
-                       std::optional<VkCullModeFlags> cull, DrawQueries* queries) {
-    if (queries && !queries->on()) queries = nullptr;
+                       std::optional<VkCullModeFlags> cull, DrawHooks hooks) {
+    DrawQueries* queries = hooks.queries && hooks.queries->on() ? hooks.queries : nullptr;
     DrawCounts counts;
     uint32_t material = UINT32_MAX;
     for (const scene::DrawGroup& g : scene.draw_groups()) {
@@ -82,6 +82,7 @@ DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
         vkCmdDrawIndexed(cmd, mesh.index_count, g.instance_count, mesh.first_index,
                          mesh.vertex_offset, g.first_instance);
         if (queries) queries->end(cmd);
+        if (hooks.log) hooks.log->add(g.first_instance, g.instance_count);
         ++counts.draws;
         counts.instances += g.instance_count;
     }
@@ -123,8 +124,8 @@ std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 ca
 }
 
 DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
-                       std::span<const InstanceDraw> draws, DrawQueries* queries) {
-    if (queries && !queries->on()) queries = nullptr;
+                       std::span<const InstanceDraw> draws, DrawHooks hooks) {
+    DrawQueries* queries = hooks.queries && hooks.queries->on() ? hooks.queries : nullptr;
     DrawCounts counts;
     uint32_t material = UINT32_MAX;
     for (const InstanceDraw& d : draws) {
@@ -135,6 +136,7 @@ DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
         vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, mesh.vertex_offset,
                          d.instance);
         if (queries) queries->end(cmd);
+        if (hooks.log) hooks.log->add(d.instance, 1);
         ++counts.draws;
         ++counts.instances;
     }

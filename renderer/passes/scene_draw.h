@@ -52,15 +52,33 @@ struct DrawCounts {
 };
 
 class DrawQueries;
+// The draws a pass recorded, in submission order (pixel history maps a fragment's instance to
+// its draw through it, so the history's order is the one the pass draws in, not a copy of it).
+// `pipeline` is the caller's tag for the draws that follow (which pipeline it bound).
+struct DrawLog {
+    struct Draw {
+        uint32_t first_instance = 0, instance_count = 0;
+        uint32_t pipeline = 0;
+    };
+    std::vector<Draw> draws;
+    uint32_t pipeline = 0;
+    void add(uint32_t first_instance, uint32_t instance_count) {
+        draws.push_back({first_instance, instance_count, pipeline});
+    }
+};
 
 // One instanced draw per group whose alpha mode is in `modes`, in the scene's authored
 // order. Set 1 is bound when the material changes; the cull mode follows each group's
 // double_sided flag unless `cull` overrides it. The caller has bound the pipeline and set 0.
-// With `queries` (on) each draw is inside an occlusion query of its group.
+// What a draw call may carry besides the draw: with `queries` (count_draws) each draw is inside
+// an occlusion query of its group; with `log` (pixel history) each draw is appended to it.
+struct DrawHooks {
+    DrawQueries* queries = nullptr;
+    DrawLog* log = nullptr;
+};
 DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
                        std::span<const scene::AlphaMode> modes, Decals decals,
-                       std::optional<VkCullModeFlags> cull = std::nullopt,
-                       DrawQueries* queries = nullptr);
+                       std::optional<VkCullModeFlags> cull = std::nullopt, DrawHooks hooks = {});
 
 // One instance, in the order it must be drawn.
 struct InstanceDraw {
@@ -78,6 +96,6 @@ std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 ca
                                              Decals decals);
 // Draws them one instance at a time (the order is per instance, not per group).
 DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
-                       std::span<const InstanceDraw> draws, DrawQueries* queries = nullptr);
+                       std::span<const InstanceDraw> draws, DrawHooks hooks = {});
 
 }  // namespace ds::passes

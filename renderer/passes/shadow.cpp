@@ -60,9 +60,10 @@ std::string ShadowPass::pipeline_name(const Variant& v) {
 }
 
 void ShadowPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
-    if (own.empty()) return;
-    collect_counts(c.readback, c.res.shadow_counts, own[0]);
-    own[0].pipelines = uses_.list();
+    PassResult* const own_pass = frame_result(own);
+    if (!own_pass) return;
+    collect_counts(c.readback, c.res.shadow_counts, *own_pass);
+    own_pass->pipelines = uses_.list();
 }
 
 vk::Pipeline ShadowPass::create(const Variant& v, const ShaderStages& s) const {

@@ -21,7 +21,8 @@ TransparentPass::TransparentPass(const PassServices& services)
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
                  [](const Variant& v, const ShaderStages& s) {
                      return describe_pipeline(pipeline_name(v), s, /*alpha_to_coverage=*/false);
-                 }) {
+                 }),
+      history_(services, kName, drawing_.set_layouts()) {
     pipelines_.get({.depth = services.preferred_depth_format});
 }
 
@@ -31,12 +32,15 @@ void TransparentPass::rebuild_pipelines(vk::DestroyList& retired) {
 }
 
 ShaderStages TransparentPass::compile(const Variant& v) const {
-    std::vector<shader::Define> defines;
+    std::vector<shader::Define> defines, vert_defines;
     if (v.counting) add_count_defines(defines, services_.context);
-    std::vector<shader::Define> vert_defines;
     if (v.count_draws) {
         vert_defines.push_back({"COUNT_DRAWS", "1"});
         defines.push_back({"COUNT_DRAWS", "1"});
+    }
+    if (v.history) {
+        defines = PixelHistoryReplay::defines(true, true, v.samples != VK_SAMPLE_COUNT_1_BIT);
+        vert_defines.push_back({"PIXEL_HISTORY", "1"});
     }
     return {
         services_.compiler.compile("transparent.vert", shader::Stage::Vertex, vert_defines).spirv,
@@ -47,10 +51,12 @@ ShaderStages TransparentPass::compile(const Variant& v) const {
 std::string TransparentPass::pipeline_name(const Variant& v) {
     std::string name = "transparent";
     if (v.counting) name += " counting";
+    if (v.history) name += " history";
     return name;
 }
 
 vk::Pipeline TransparentPass::create(const Variant& v, const ShaderStages& s) const {
+    if (v.history) return history_.create(s, v.samples, pipeline_name(v));
     return scene_pipeline_builder(drawing_.layout(), s.vert, s.frag)
         .color_attachment(kHdrFormat, vk::Blend::Alpha)
         .depth_attachment(v.depth)
@@ -65,26 +71,45 @@ void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
                     .count_draws = res.transparent_counts.draws.valid()};
     const VkPipeline pipeline = pipelines_.get(v);
     const PipelineInfo info = pipelines_.info(v);
-    const VkPipelineLayout layout = drawing_.layout();
     uses_.clear();
+    history_.clear();
+    // Back to front, one instance at a time; the replay draws the same with its own pipeline.
+    auto draw_with = [](VkPipeline bound, PipelineInfo drawn, PipelineUses* uses) {
+        return [bound, drawn, uses](VkCommandBuffer cmd, const FrameInputs& in,
+                                    VkPipelineLayout layout, DrawLog* log) {
+            const std::vector<InstanceDraw> draws = sort_back_to_front(
+                *in.scene, in.camera_position, scene_groups(in.options.decal_pass));
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
+            const DrawCounts n = draw_sorted(cmd, *in.scene, layout, draws, {.log = log});
+            if (uses) uses->add(drawn, n.draws);
+        };
+    };
+    if (in.pixel) {
+        const Variant twin{.history = true, .samples = v.samples, .depth = v.depth};
+        history_pipelines_ = {history_pipeline(info, /*blend=*/true)};
+        drawing_.add_history(graph, in, res, history_,
+                             draw_with(pipelines_.get(twin), info, nullptr));
+    }
     // msaa > 1: the samples are stored too, for the edge count (MsaaProbe) after the graph.
     drawing_.add(graph, kName, in, res, res.transparent_counts, /*resolve=*/true,
-                 [this, pipeline, info, layout](VkCommandBuffer cmd, const FrameInputs& in) {
-                     const std::vector<InstanceDraw> draws = sort_back_to_front(
-                         *in.scene, in.camera_position, scene_groups(in.options.decal_pass));
-                     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-                     uses_.add(info, draw_sorted(cmd, *in.scene, layout, draws).draws);
-                 });
+                 draw_with(pipeline, info, &uses_));
     rasterized_.add(graph, in, res, res.transparent_counts,
                     {.samples = in.options.samples,
                      .modes = {scene::AlphaMode::Blend},
                      .decals = scene_groups(in.options.decal_pass)});
 }
 
-void TransparentPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
-    if (own.empty()) return;
-    collect_counts(c.readback, c.res.transparent_counts, own[0]);
-    own[0].pipelines = uses_.list();
+void TransparentPass::collect(const FrameCollect& c, std::span<PassResult> own,
+                              FrameResult& frame) {
+    PassResult* const own_pass = frame_result(own);
+    if (!own_pass) return;
+    collect_counts(c.readback, c.res.transparent_counts, *own_pass);
+    own_pass->pipelines = uses_.list();
+    // Against the scene depth, closer-or-equal, no writes; blended over the HDR colour.
+    history_.collect(
+        c, history_pipelines_,
+        {.compare = c.in.options.closer_or_equal(), .depth_format = c.in.options.depth_format},
+        frame);
 }
 
 }  // namespace ds::passes

@@ -9,6 +9,8 @@
 // msaa > 1: the last pass that draws multisampled. It blends into res.msaa_hdr against
 // res.msaa_depth and resolves the colour (AVERAGE) into res.hdr, which it creates, at the
 // end of its rendering; forward and skybox have drawn every sample before.
+// Pixel history (FrameInputs::pixel): transparent_history replays the same sorted draws first
+// with the instrumented variant (pixel_history.h), reading the depth and the HDR colour there.
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
@@ -42,11 +44,14 @@ class TransparentPass final : public FramePass {
   private:
     struct Variant {
         bool counting = false;  // COUNT_FRAGMENTS=1
+        bool history = false;   // PIXEL_HISTORY=1: the replay's, no attachments
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
         bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
         bool operator==(const Variant&) const = default;
-        size_t hash() const { return hash_fields(counting, int(samples), int(depth), count_draws); }
+        size_t hash() const {
+            return hash_fields(counting, history, int(samples), int(depth), count_draws);
+        }
     };
 
     ShaderStages compile(const Variant& variant) const;
@@ -58,6 +63,8 @@ class TransparentPass final : public FramePass {
     RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
     PipelineUses uses_;  // this frame's
+    PixelHistoryReplay history_;
+    std::vector<HistoryPipeline> history_pipelines_;  // this frame's real one
 };
 
 }  // namespace ds::passes

@@ -19,9 +19,10 @@
 namespace ds::view {
 
 // In the order a viewer lists a pass's images; "wasted" is derived (wasted_image), never a
-// graph resource.
-inline constexpr std::array<std::string_view, 5> kCountKinds{"counts", "discarded", "rasterized",
-                                                             "quads", "wasted"};
+// graph resource. Fragments per pixel all: `<pass>_quads` (quads per 2x2 block, half size) is
+// another unit and keeps a scale of its own.
+inline constexpr std::array<std::string_view, 4> kCountKinds{"counts", "discarded", "rasterized",
+                                                             "wasted"};
 inline constexpr std::string_view kShadedKind = "counts";
 inline constexpr std::string_view kWastedKind = "wasted";
 

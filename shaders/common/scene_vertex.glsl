@@ -18,6 +18,12 @@
 #define SURFACE_ID 0
 #endif
 
+// PIXEL_HISTORY=1 (the pixel history replays): hands gl_InstanceIndex on, flat; gl_Position's
+// expression and `invariant` are untouched, so the replay's depths are the real pass's.
+#ifndef PIXEL_HISTORY
+#define PIXEL_HISTORY 0
+#endif
+
 #include "bindings.glsl"
 #include "count_draws.glsl"
 
@@ -32,6 +38,9 @@ layout(location = 2) out vec2 out_uv0;
 layout(location = 3) out vec4 out_tangent;
 #if SURFACE_ID
 layout(location = 4) flat out uint out_surface_base;
+#endif
+#if PIXEL_HISTORY
+layout(location = 5) flat out uint out_history_instance;
 #endif
 
 #if !NON_INVARIANT
@@ -54,4 +63,7 @@ void main() {
     out_surface_base = instance.surface_base;
 #endif
     PASS_DRAW_GROUP(instance);
+#if PIXEL_HISTORY
+    out_history_instance = uint(gl_InstanceIndex);
+#endif
 }

@@ -35,6 +35,7 @@ void depth_panel(PanelIo& io, const PanelLayout& layout);
 void advisor_panel(PanelIo& io, const PanelLayout& layout);
 void draws_panel(PanelIo& io, const PanelLayout& layout);
 void overlays_panel(PanelIo& io, const PanelLayout& layout);
+void pixel_panel(PanelIo& io, const PanelLayout& layout);
 
 // The Draws panel's table: column ids (kDrawShaded + k: shaded fragments of the k-th counting
 // pass of the draws' shaded_fragments), and the rows to show — indices into `draws` whose

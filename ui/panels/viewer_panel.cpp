@@ -123,12 +123,15 @@ void mouse_mode(ViewerState& v) {
     ImGui::RadioButton("camera", &mouse, int(MouseTarget::Camera));
     ImGui::SameLine();
     ImGui::RadioButton("image", &mouse, int(MouseTarget::Image));
+    ImGui::SameLine();
+    ImGui::RadioButton("pick", &mouse, int(MouseTarget::Pick));
     v.mouse = MouseTarget(mouse);
     ImGui::SameLine();
     help_marker(
         "Camera: left drag orbits, middle drag pans, wheel dollies, right drag + WASD/QE flies "
         "(shift: faster), F frames the scene.\nImage (or hold Ctrl): wheel zooms at the cursor, "
-        "drag pans. Nearest-neighbour when zoomed in.");
+        "drag pans. Nearest-neighbour when zoomed in.\nPick (or Alt + click): a click lists "
+        "every fragment of that pixel in the Pixel panel.");
 }
 
 // The decode controls above the image, a row each: the resource, its range and channel, the
@@ -173,6 +176,7 @@ void input(PanelIo& io, const ImVec2& origin, bool hovered, bool active) {
     const DecodedView& view = io.inspector.view();
     const bool image_mode = v.mouse == MouseTarget::Image || imgui.KeyCtrl;
     CameraInput& cam = io.camera;
+    if (v.mouse == MouseTarget::Pick) return;  // clicks pick (viewer_panel)
     if (image_mode) {
         if (hovered && imgui.MouseWheel != 0.0f && view.width) {
             // Zoom about the cursor: the texel under it stays under it.
@@ -266,6 +270,13 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
                                     imgui.MousePos.y * scale.y);
         if (texel) v.hover = io.inspector.readout_at((*texel)[0], (*texel)[1]);
         if (texel) v.hover_overlays = io.inspector.overlay_text((*texel)[0], (*texel)[1]);
+        // A click (not a drag) picks the pixel for its history.
+        const bool pick = v.mouse == MouseTarget::Pick || imgui.KeyAlt;
+        const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
+        const bool click = drag.x * drag.x + drag.y * drag.y <=
+                           imgui.MouseDragThreshold * imgui.MouseDragThreshold;
+        if (texel && pick && click && ImGui::IsMouseReleased(ImGuiMouseButton_Left))
+            io.actions.emplace_back(std::in_place_type<PickPixel>, (*texel)[0], (*texel)[1]);
     }
     ImGui::Separator();
     if (v.hover)

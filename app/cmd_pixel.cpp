@@ -1,0 +1,58 @@
+// pixel: one frame headless with a pixel history; the table on stdout, the JSON with --json.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "app/commands.h"
+#include "app/exit_code.h"
+#include "renderer/capture/pixel_report.h"
+#include "renderer/capture/report.h"
+#include "renderer/common/error.h"
+#include "renderer/renderer.h"
+#include "renderer/scene/loader.h"
+
+namespace ds::app {
+namespace {
+
+// Before any Vulkan work: the pixel must lie in the frame, and --json's folder must exist.
+void check_input(const Options& o) {
+    if (o.at_x >= o.size.width || o.at_y >= o.size.height) {
+        throw UsageError(
+            "--at " + std::to_string(o.at_x) + "," + std::to_string(o.at_y) + " is outside the " +
+            std::to_string(o.size.width) + "x" + std::to_string(o.size.height) + " frame (x < " +
+            std::to_string(o.size.width) + ", y < " + std::to_string(o.size.height) + ")");
+    }
+    if (o.out.empty()) return;
+    const std::filesystem::path folder = std::filesystem::absolute(o.out).parent_path();
+    if (!std::filesystem::is_directory(folder))
+        throw Error("--json " + o.out + ": no folder " + folder.string());
+}
+
+}  // namespace
+
+int run_pixel(const Options& o) {
+    check_input(o);
+    Settings settings;
+    for (const auto& assignment : o.sets) settings.apply(assignment);
+    const scene::Scene scene = scene::load_scene(o.scene, settings);
+    for (const auto& w : scene.warnings)
+        std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
+
+    RendererOptions renderer_options;
+    renderer_options.validate = o.validate;
+    renderer_options.device = o.device;
+    Renderer renderer(renderer_options);
+    renderer.set_scene(scene);
+    const FrameResult frame =
+        renderer.render(scene.camera, settings, o.size.width, o.size.height, ReadBack::Yes,
+                        InspectRequest{}, PixelQuery{o.at_x, o.at_y});
+    const capture::PixelReportInput report{scene, settings, frame};
+    std::fputs(capture::pixel_history_table(report).c_str(), stdout);
+    if (!o.out.empty()) {
+        capture::write_json_atomically(o.out, capture::pixel_history_json(report));
+        std::printf("depthscope: wrote %s\n", o.out.c_str());
+    }
+    return validation_exit_code(renderer);
+}
+
+}  // namespace ds::app

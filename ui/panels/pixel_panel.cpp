@@ -1,0 +1,134 @@
+// Pixel: the history of one pixel (PickPixel: the viewer's "pick" mouse mode or Alt + click),
+// every fragment that covered it in submission order: pass, draw and surface, primitive and
+// sample, depth raw and linear, the depth test against the value it met, the alpha test,
+// whether the shader ran, the colour it wrote and, for blended passes, the colour after
+// blending. Exact: from instrumented replays of the passes' own draws (pixel_history.h).
+#include <cmath>
+#include <string>
+
+#include <imgui.h>
+
+#include "renderer/view/decode.h"
+#include "ui/panels/panels.h"
+
+namespace ds::ui {
+namespace {
+
+constexpr ImGuiTableFlags kTableFlags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                        ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX |
+                                        ImGuiTableFlags_ScrollY;
+constexpr const char* kColumns[] = {"#",     "pass",   "draw",   "surface", "prim",
+                                    "smp",   "depth",  "linear", "test",    "against",
+                                    "alpha", "shaded", "colour", "blended"};
+
+// HDR colours as swatches: Reinhard per channel, so bright values still show their hue; the
+// tooltip has the numbers.
+void swatch(const char* id, const std::optional<std::array<float, 4>>& c) {
+    if (!c) {
+        ImGui::TextDisabled("-");
+        return;
+    }
+    auto map = [](float v) { return std::isfinite(v) ? v / (1.0f + std::max(v, 0.0f)) : 1.0f; };
+    const ImVec4 shown(map((*c)[0]), map((*c)[1]), map((*c)[2]), 1.0f);
+    ImGui::ColorButton(id, shown, ImGuiColorEditFlags_NoTooltip, ImVec2(28, 14));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%.4f %.4f %.4f %.4f", (*c)[0], (*c)[1], (*c)[2], (*c)[3]);
+}
+
+void fragment_row(const Inspector& in, size_t i, const PixelFragment& f) {
+    const DepthResult& d = *in.pixel_depth();
+    const SurfaceName name = in.scene().instance_name(f.instance);
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::Text("%zu", i);
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(f.pass.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("pipeline: %s", f.pipeline.c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%u", f.draw);
+    ImGui::TableNextColumn();
+    ImGui::Text("%s / %s", name.mesh.c_str(), name.material.c_str());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("node %s, instance %u", name.node.c_str(), f.instance);
+    ImGui::TableNextColumn();
+    ImGui::Text("%u", f.primitive);
+    ImGui::TableNextColumn();
+    ImGui::Text("%u", f.sample);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.9f", f.depth);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.4f", view::linear_depth(f.depth, d.reverse_z, d.znear, d.zfar));
+    ImGui::TableNextColumn();
+    const ImVec4 colour = f.depth_passed ? ImVec4(0.5f, 1, 0.5f, 1) : ImVec4(1, 0.5f, 0.4f, 1);
+    ImGui::TextColored(colour, "%s", f.depth_passed ? "pass" : "fail");
+    ImGui::TableNextColumn();
+    ImGui::Text("%.9f", f.against);
+    ImGui::TableNextColumn();
+    if (f.alpha_test)
+        ImGui::Text("%.3f / %.3f %s", f.alpha_test->alpha, f.alpha_test->cutoff,
+                    f.alpha_test->passed ? "kept" : "discarded");
+    else
+        ImGui::TextDisabled("-");
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(f.shaded ? "yes" : "no");
+    ImGui::TableNextColumn();
+    swatch(("##c" + std::to_string(i)).c_str(), f.color);
+    ImGui::TableNextColumn();
+    swatch(("##b" + std::to_string(i)).c_str(), f.blended);
+}
+
+void history_table(const Inspector& in) {
+    const PixelHistory& h = *in.pixel_history();
+    ImGui::Text("pixel (%u, %u) of %s: %zu fragments", h.x, h.y, in.pixel_label().c_str(),
+                h.fragments.size());
+    if (h.dropped)
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "%llu records dropped: the list is short",
+                           static_cast<unsigned long long>(h.dropped));
+    if (h.fragments.empty()) {
+        ImGui::TextDisabled("no surface covered this pixel (the sky's)");
+        return;
+    }
+    const int columns = int(std::size(kColumns));
+    if (!ImGui::BeginTable("fragments", columns, kTableFlags)) return;
+    for (const char* c : kColumns) ImGui::TableSetupColumn(c);
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableHeadersRow();
+    for (size_t i = 0; i < h.fragments.size(); ++i) fragment_row(in, i, h.fragments[i]);
+    ImGui::EndTable();
+}
+
+}  // namespace
+
+void pixel_panel(PanelIo& io, const PanelLayout& layout) {
+    // Over the lower part of the viewer, collapsed until a pixel is picked.
+    ImGui::SetNextWindowPos(ImVec2(layout.left(), layout.height * 0.55f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(
+        ImVec2(layout.width - layout.left() - layout.right(), layout.height * 0.45f),
+        ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Pixel")) {
+        ImGui::End();
+        return;
+    }
+    const Inspector& in = io.inspector;
+    if (in.pixel_history()) {
+        if (ImGui::Button("again")) {  // the same pixel with the settings as they are now
+            io.actions.push_back(PickPixel{in.pixel_history()->x, in.pixel_history()->y});
+        }
+        ImGui::SameLine();
+    }
+    help_marker(
+        "Every fragment that covered the pixel, in submission order, from instrumented replays "
+        "of each geometry pass's own draws; the depth test, depth writes and blending are "
+        "replayed on them in order. 'against' is the depth buffer's value when the fragment "
+        "was tested; 'shaded': the fragment shader ran (early-Z pipelines: only if it passed).");
+    if (!in.pixel_error().empty())
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", in.pixel_error().c_str());
+    if (in.pixel_history() && in.pixel_depth())
+        history_table(in);
+    else
+        ImGui::TextDisabled("pick a pixel: the viewer's \"pick\" mouse mode (or Alt) and a click");
+    ImGui::End();
+}
+
+}  // namespace ds::ui
