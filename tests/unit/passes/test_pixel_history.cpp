@@ -191,6 +191,35 @@ TEST_F(PixelHistoryTest, OffAddsNothing) {
                  ds::Error);
 }
 
+// Diagnostics together: the counts of a frame with a history (whose replays come before each
+// geometry pass, and its measurement draws after) are its passes' own, as without one.
+TEST_F(PixelHistoryTest, CountsStayThePassesOwnWithAHistory) {
+    const std::vector<std::string> counting = {"count_fragments=on", "count_draws=on"};
+    const FrameResult queried = history("foliage", counting, kCentre);
+    const Settings s = test::settings_of(counting);
+    const FrameResult off = renderer_->render(scene_.camera, s, kWidth, kHeight);
+    ASSERT_TRUE(queried.pixel_history);
+    auto by_name = [](const FrameResult& f, const std::string& name) -> const PassResult& {
+        for (const PassResult& p : f.passes)
+            if (p.name == name && p.role == graph::PassRole::Frame) return p;
+        static const PassResult none;
+        ADD_FAILURE() << "no pass " << name;
+        return none;
+    };
+    for (const char* name : {"shadow", "depth_prepass", "forward", "transparent"}) {
+        const PassResult& with = by_name(queried, name);
+        const PassResult& without = by_name(off, name);
+        ASSERT_TRUE(with.shaded_fragments) << name;
+        EXPECT_EQ(with.shaded_fragments, without.shaded_fragments) << name;
+        EXPECT_EQ(with.rasterized_fragments, without.rasterized_fragments) << name;
+        EXPECT_EQ(with.discarded_fragments, without.discarded_fragments) << name;
+        EXPECT_EQ(with.draw_shaded, without.draw_shaded) << name;
+        EXPECT_EQ(with.pipelines.size(), without.pipelines.size()) << name;
+    }
+    for (const PassResult& p : queried.passes)
+        if (p.role != graph::PassRole::Frame) EXPECT_FALSE(p.shaded_fragments) << p.name;
+}
+
 // Foliage: a pixel where the masked prepass discarded (derived from the frame's own discard
 // count image) lists that many masked prepass fragments with alpha below the cutoff, each
 // shaded (the discard costs the pipeline its early-Z), and as many shaded prepass fragments as
