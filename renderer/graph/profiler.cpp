@@ -20,49 +20,6 @@ constexpr uint32_t kStatisticCount = 4;
 
 }  // namespace
 
-QueryPool::QueryPool(VkDevice device, VkQueryType type, uint32_t count,
-                     VkQueryPipelineStatisticFlags statistics)
-    : device_(device), count_(count) {
-    auto info = vk::make<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
-    info.queryType = type;
-    info.queryCount = count;
-    info.pipelineStatistics = statistics;
-    vk::check(vkCreateQueryPool(device, &info, nullptr, &pool_), "vkCreateQueryPool");
-}
-
-QueryPool& QueryPool::operator=(QueryPool&& other) noexcept {
-    if (this == &other) return *this;
-    reset_handle();
-    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
-    pool_ = std::exchange(other.pool_, VK_NULL_HANDLE);
-    count_ = std::exchange(other.count_, 0);
-    return *this;
-}
-
-void QueryPool::reset_handle() {
-    if (pool_) vkDestroyQueryPool(device_, pool_, nullptr);
-    pool_ = VK_NULL_HANDLE;
-}
-
-std::vector<uint64_t> QueryPool::results(uint32_t queries, uint32_t values) const {
-    if (queries == 0) return {};
-    // Each query's values, then its availability: a query that never ran cannot read as 0.
-    const uint32_t stride = values + 1;
-    std::vector<uint64_t> raw(size_t(queries) * stride);
-    const VkResult result = vkGetQueryPoolResults(
-        device_, pool_, 0, queries, raw.size() * sizeof(uint64_t), raw.data(),
-        stride * sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
-    if (result == VK_NOT_READY) return {};
-    vk::check(result, "vkGetQueryPoolResults");
-    std::vector<uint64_t> out;
-    out.reserve(size_t(queries) * values);
-    for (uint32_t q = 0; q < queries; ++q) {
-        if (raw[size_t(q) * stride + values] == 0) return {};
-        for (uint32_t v = 0; v < values; ++v) out.push_back(raw[size_t(q) * stride + v]);
-    }
-    return out;
-}
-
 PassProfiler::PassProfiler(vk::Context& context) : context_(context) {
     const vk::DeviceReport& report = context.report();
     timestamps_ = report.timestamps && report.timestamp_valid_bits > 0;
@@ -84,11 +41,12 @@ void PassProfiler::begin_frame(VkCommandBuffer cmd, uint64_t frame,
     // Pools only grow; the slot's previous frame may still be in flight for all we know here.
     if (timestamps_ && slot.timestamps.count() < 2 * passes) {
         if (slot.timestamps.handle()) retired.defer(std::move(slot.timestamps));
-        slot.timestamps = QueryPool(device, VK_QUERY_TYPE_TIMESTAMP, 2 * passes);
+        slot.timestamps = vk::QueryPool(device, VK_QUERY_TYPE_TIMESTAMP, 2 * passes);
     }
     if (statistics_ && slot.statistics.count() < passes) {
         if (slot.statistics.handle()) retired.defer(std::move(slot.statistics));
-        slot.statistics = QueryPool(device, VK_QUERY_TYPE_PIPELINE_STATISTICS, passes, kStatistics);
+        slot.statistics =
+            vk::QueryPool(device, VK_QUERY_TYPE_PIPELINE_STATISTICS, passes, kStatistics);
     }
     if (timestamps_) vkCmdResetQueryPool(cmd, slot.timestamps.handle(), 0, 2 * passes);
     if (statistics_) vkCmdResetQueryPool(cmd, slot.statistics.handle(), 0, passes);

@@ -8,6 +8,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/vk/query.h"
+
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/frame.h"
 
@@ -26,32 +28,6 @@ struct PassResult {
     uint64_t fragment_invocations = 0;
     uint64_t clipping_primitives = 0;
     uint64_t compute_invocations = 0;
-};
-
-// A VkQueryPool, move-only (so a replaced one can wait in a DestroyList).
-class QueryPool {
-  public:
-    QueryPool() = default;
-    QueryPool(VkDevice device, VkQueryType type, uint32_t count,
-              VkQueryPipelineStatisticFlags statistics = 0);
-    ~QueryPool() { reset_handle(); }
-    QueryPool(QueryPool&& other) noexcept { *this = std::move(other); }
-    QueryPool& operator=(QueryPool&& other) noexcept;
-    QueryPool(const QueryPool&) = delete;
-    QueryPool& operator=(const QueryPool&) = delete;
-
-    VkQueryPool handle() const { return pool_; }
-    uint32_t count() const { return count_; }
-    // `values` 64-bit values per query for the first `queries` queries, or empty when one of
-    // them is not available (yet).
-    std::vector<uint64_t> results(uint32_t queries, uint32_t values) const;
-
-  private:
-    void reset_handle();
-
-    VkDevice device_ = VK_NULL_HANDLE;
-    VkQueryPool pool_ = VK_NULL_HANDLE;
-    uint32_t count_ = 0;
 };
 
 class PassProfiler {
@@ -73,8 +49,8 @@ class PassProfiler {
 
   private:
     struct Slot {
-        QueryPool timestamps;  // 2 per pass: begin, end
-        QueryPool statistics;  // 1 per pass
+        vk::QueryPool timestamps;  // 2 per pass: begin, end
+        vk::QueryPool statistics;  // 1 per pass
         uint64_t frame = UINT64_MAX;
         std::vector<std::string> names;
     };

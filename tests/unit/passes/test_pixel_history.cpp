@@ -216,8 +216,11 @@ TEST_F(PixelHistoryTest, CountsStayThePassesOwnWithAHistory) {
         EXPECT_EQ(with.draw_shaded, without.draw_shaded) << name;
         EXPECT_EQ(with.pipelines.size(), without.pipelines.size()) << name;
     }
-    for (const PassResult& p : queried.passes)
-        if (p.role != graph::PassRole::Frame) EXPECT_FALSE(p.shaded_fragments) << p.name;
+    for (const PassResult& p : queried.passes) {
+        if (p.role != graph::PassRole::Frame) {
+            EXPECT_FALSE(p.shaded_fragments) << p.name;
+        }
+    }
 }
 
 // Foliage: a pixel where the masked prepass discarded (derived from the frame's own discard
