@@ -291,6 +291,7 @@ void Inspector::measure_advice() {
 // replaced: a history frame adds replay passes to the pass list and timings).
 void Inspector::pick_pixel(const PickPixel& pick) {
     const VkExtent2D size = render_size();
+    ++pixel_picks_;
     try {
         const FrameResult f =
             renderer_.render(camera_.camera(), settings_, size.width, size.height, ReadBack::No,

@@ -177,6 +177,7 @@ class Inspector {
     const std::optional<DepthResult>& pixel_depth() const { return pixel_depth_; }
     const std::string& pixel_label() const { return pixel_label_; }
     const std::string& pixel_error() const { return pixel_error_; }
+    uint64_t pixel_picks() const { return pixel_picks_; }  // PickPixel actions applied so far
     const scene::Camera& camera() const { return camera_.camera(); }
     CameraInput& camera_input() { return camera_input_; }
     // The render size the next frame uses: the viewer's area times render_scale.
@@ -196,6 +197,7 @@ class Inspector {
         std::array<char, 512> scene_path{};
         std::array<char, 128> draw_filter{};  // the Draws panel's filter (mesh/material/node)
         std::vector<size_t> draw_rows;        // the Draws panel's rows as last drawn
+        uint64_t pixel_picks_shown = 0;       // the Pixel panel opens on a new pick
     };
     PanelState& panel_state() const { return panel_state_; }
 
@@ -236,6 +238,7 @@ class Inspector {
     std::optional<PixelHistory> pixel_history_;
     std::optional<DepthResult> pixel_depth_;
     std::string pixel_label_, pixel_error_;
+    uint64_t pixel_picks_ = 0;
     mutable PanelState panel_state_;
 };
 

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // ImGui::FindWindowByName: whether a panel is open
 
 #include "renderer/capture/image_writer.h"
 #include "renderer/scene/loader.h"
@@ -404,8 +405,11 @@ TEST_F(Inspector, PickPixelListsTheOverdrawLayersAndAClickPicks) {
     EXPECT_EQ(in.pixel_history()->y, 23u);
     EXPECT_EQ(in.pixel_history()->fragments.size(), 16u);  // 8 prepass + 8 forward
     EXPECT_EQ(in.camera().position, camera);               // pick mode leaves the camera
-    // The panel, opened, draws the table (an ImGui assertion would abort here).
-    ImGui::SetWindowCollapsed("Pixel", false);
+    // A pick opens the panel (collapsed until the first), which draws the table (an ImGui
+    // assertion would abort here).
+    const ImGuiWindow* panel = ImGui::FindWindowByName("Pixel");
+    ASSERT_TRUE(panel);
+    EXPECT_FALSE(panel->Collapsed) << "a pick shows its history";
     ui->frame();  // the table sizes its columns to what the first frame drew
     const std::vector<uint8_t> pixels = ui->frame();
     if (const char* png = std::getenv("DS_PIXEL_PNG"))
