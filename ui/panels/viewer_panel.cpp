@@ -218,6 +218,46 @@ void input(PanelIo& io, const ImVec2& origin, bool hovered, bool active) {
     if ((hovered || active) && ImGui::IsKeyPressed(int('F'), false)) cam.frame = true;
 }
 
+// The texel under the cursor: its readout and the overlays' values there; a click (not a
+// drag) in pick mode or with Alt picks it for its pixel history.
+void hover(PanelIo& io, bool hovered, ImVec2 scale) {
+    ViewerState& v = io.viewer;
+    v.hover.reset();
+    v.hover_overlays.clear();
+    if (!hovered || !io.inspector.view().width || !io.inspector.shown()) return;
+    // Through the blit's own integer mapping: the readout names the texel drawn there.
+    const ImGuiIO& imgui = ImGui::GetIO();
+    const TargetSize target{uint32_t(imgui.DisplaySize.x * scale.x),
+                            uint32_t(imgui.DisplaySize.y * scale.y)};
+    const auto texel = texel_at(io.inspector.viewer_blit(), target, imgui.MousePos.x * scale.x,
+                                imgui.MousePos.y * scale.y);
+    if (!texel) return;
+    v.hover = io.inspector.readout_at((*texel)[0], (*texel)[1]);
+    v.hover_overlays = io.inspector.overlay_text((*texel)[0], (*texel)[1]);
+    const bool pick = v.mouse == MouseTarget::Pick || imgui.KeyAlt;
+    const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
+    const bool click =
+        drag.x * drag.x + drag.y * drag.y <= imgui.MouseDragThreshold * imgui.MouseDragThreshold;
+    if (pick && click && ImGui::IsMouseReleased(ImGuiMouseButton_Left))
+        io.actions.emplace_back(std::in_place_type<PickPixel>, (*texel)[0], (*texel)[1]);
+}
+
+// The readout lines under the image.
+void readout_lines(const ViewerState& v) {
+    ImGui::Separator();
+    if (v.hover)
+        ImGui::Text("(%u, %u)  raw %s  |  %s", v.hover->x, v.hover->y, v.hover->raw_text.c_str(),
+                    v.hover->decoded_text.c_str());
+    else
+        ImGui::TextDisabled("hover the image for pixel values");
+    if (!v.overlays.empty()) {
+        if (v.hover && !v.hover_overlays.empty())
+            ImGui::Text("over it: %s", v.hover_overlays.c_str());
+        else
+            ImGui::TextDisabled("over it: %zu overlays", v.overlays.size());
+    }
+}
+
 }  // namespace
 
 void viewer_panel(PanelIo& io, const PanelLayout& layout) {
@@ -232,7 +272,6 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
     }
     const FrameResult& frame = io.inspector.frame();
     controls(io);
-    const DecodedView& view = io.inspector.view();
     int legend_id = 0;
     for (const ViewLegend& scale : io.inspector.composer().legends()) legend(scale, legend_id);
     if (!io.inspector.shown() && frame.width)
@@ -258,38 +297,8 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
     v.h = std::floor(avail.y * scale.y);
     input(io, origin, hovered, active);
 
-    // Hover readout: the texel under the cursor.
-    v.hover.reset();
-    v.hover_overlays.clear();
-    if (hovered && view.width && io.inspector.shown()) {
-        // Through the blit's own integer mapping: the readout names the texel drawn there.
-        const ImGuiIO& imgui = ImGui::GetIO();
-        const TargetSize target{uint32_t(imgui.DisplaySize.x * scale.x),
-                                uint32_t(imgui.DisplaySize.y * scale.y)};
-        const auto texel = texel_at(io.inspector.viewer_blit(), target, imgui.MousePos.x * scale.x,
-                                    imgui.MousePos.y * scale.y);
-        if (texel) v.hover = io.inspector.readout_at((*texel)[0], (*texel)[1]);
-        if (texel) v.hover_overlays = io.inspector.overlay_text((*texel)[0], (*texel)[1]);
-        // A click (not a drag) picks the pixel for its history.
-        const bool pick = v.mouse == MouseTarget::Pick || imgui.KeyAlt;
-        const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
-        const bool click = drag.x * drag.x + drag.y * drag.y <=
-                           imgui.MouseDragThreshold * imgui.MouseDragThreshold;
-        if (texel && pick && click && ImGui::IsMouseReleased(ImGuiMouseButton_Left))
-            io.actions.emplace_back(std::in_place_type<PickPixel>, (*texel)[0], (*texel)[1]);
-    }
-    ImGui::Separator();
-    if (v.hover)
-        ImGui::Text("(%u, %u)  raw %s  |  %s", v.hover->x, v.hover->y, v.hover->raw_text.c_str(),
-                    v.hover->decoded_text.c_str());
-    else
-        ImGui::TextDisabled("hover the image for pixel values");
-    if (!v.overlays.empty()) {
-        if (v.hover && !v.hover_overlays.empty())
-            ImGui::Text("over it: %s", v.hover_overlays.c_str());
-        else
-            ImGui::TextDisabled("over it: %zu overlays", v.overlays.size());
-    }
+    hover(io, hovered, scale);
+    readout_lines(v);
     if (!io.inspector.message().empty())
         ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", io.inspector.message().c_str());
     ImGui::End();
