@@ -72,13 +72,8 @@ void advice_section(const Inspector& in) {
 }  // namespace
 
 void advisor_panel(PanelIo& io, const PanelLayout& layout) {
-    // Under the Depth panel's title bar, collapsed until wanted: measuring costs frames.
-    ImGui::SetNextWindowPos(ImVec2(layout.left(), layout.height * 0.6f + 24.0f),
-                            ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(
-        ImVec2(layout.width - layout.left() - layout.right(), layout.height * 0.4f - 24.0f),
-        ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    // Collapsed until wanted: measuring costs frames.
+    layout.next_stacked_window(PanelLayout::kAdvisor);
     if (!ImGui::Begin("Advisor")) {
         ImGui::End();
         return;

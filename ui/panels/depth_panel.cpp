@@ -214,12 +214,8 @@ void precision_section(PanelIo& io) {
 }  // namespace
 
 void depth_panel(PanelIo& io, const PanelLayout& layout) {
-    // Below the Resources panel, collapsed until wanted: the diagnostics cost frames.
-    ImGui::SetNextWindowPos(ImVec2(layout.left(), layout.height * 0.6f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(
-        ImVec2(layout.width - layout.left() - layout.right(), layout.height * 0.4f),
-        ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    // Collapsed until wanted: the diagnostics cost frames.
+    layout.next_stacked_window(PanelLayout::kDepth);
     if (!ImGui::Begin("Depth")) {
         ImGui::End();
         return;

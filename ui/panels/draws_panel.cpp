@@ -152,11 +152,7 @@ void summary(const FrameResult& f) {
 }  // namespace
 
 void draws_panel(PanelIo& io, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(layout.left(), layout.height * 0.55f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(
-        ImVec2(layout.width - layout.left() - layout.right(), layout.height * 0.45f),
-        ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    layout.next_stacked_window(PanelLayout::kDraws);
     if (!ImGui::Begin("Draws")) {
         ImGui::End();
         return;

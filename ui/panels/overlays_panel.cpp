@@ -65,13 +65,8 @@ void overlay_row(PanelIo& io, size_t i, const std::string& status) {
 }  // namespace
 
 void overlays_panel(PanelIo& io, const PanelLayout& layout) {
-    // Under the Depth and Advisor panels' title bars, collapsed until wanted.
-    ImGui::SetNextWindowPos(ImVec2(layout.left(), layout.height * 0.6f + 48.0f),
-                            ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(
-        ImVec2(layout.width - layout.left() - layout.right(), layout.height * 0.4f - 48.0f),
-        ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    // Collapsed until wanted.
+    layout.next_stacked_window(PanelLayout::kOverlays);
     if (!ImGui::Begin("Overlays")) {
         ImGui::End();
         return;

@@ -23,6 +23,12 @@ struct PanelLayout {
     // Side columns: 340 and 460 at 1600 wide, narrower in a small window.
     float left() const { return std::min(340.0f, 0.22f * width); }
     float right() const { return std::min(460.0f, 0.29f * width); }
+    // The panels that open over the lower viewer (Draws, Depth, Advisor, Overlays, Pixel)
+    // start collapsed, their title bars stacked from 55% of the height down, one per slot;
+    // opened, each spans the viewer's width down to the bottom.
+    enum Slot : int { kDraws, kDepth, kAdvisor, kOverlays, kPixel };
+    float stacked_y(Slot slot) const { return height * 0.55f + 24.0f * float(slot); }
+    void next_stacked_window(Slot slot) const;  // position, size and collapsed, first use
 };
 
 void passes_panel(PanelIo& io, const PanelLayout& layout);

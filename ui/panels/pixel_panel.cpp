@@ -100,14 +100,8 @@ void history_table(const Inspector& in) {
 }  // namespace
 
 void pixel_panel(PanelIo& io, const PanelLayout& layout) {
-    // Over the lower part of the viewer, collapsed until a pixel is picked; its title bar
-    // below the Draws, Depth, Advisor and Overlays ones.
-    ImGui::SetNextWindowPos(ImVec2(layout.left(), layout.height * 0.6f + 72.0f),
-                            ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(
-        ImVec2(layout.width - layout.left() - layout.right(), layout.height * 0.4f - 72.0f),
-        ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+    // Over the lower part of the viewer, collapsed until a pick opens it.
+    layout.next_stacked_window(PanelLayout::kPixel);
     Inspector::PanelState& state = io.inspector.panel_state();
     if (io.inspector.pixel_picks() != state.pixel_picks_shown) {  // a new pick: show it
         state.pixel_picks_shown = io.inspector.pixel_picks();

@@ -17,6 +17,13 @@ void help_marker(const char* text) {
     }
 }
 
+void PanelLayout::next_stacked_window(Slot slot) const {
+    const float y = stacked_y(slot);
+    ImGui::SetNextWindowPos(ImVec2(left(), y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(width - left() - right(), height - y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
+}
+
 void shaders_panel(PanelIo& io, const PanelLayout& layout) {
     ImGui::SetNextWindowPos(ImVec2(0, layout.height * 0.82f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(layout.left(), layout.height * 0.18f), ImGuiCond_FirstUseEver);

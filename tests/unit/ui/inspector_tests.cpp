@@ -243,6 +243,10 @@ TEST_F(Inspector, ZfightViewNamesFightsAndShowsTheSelectedPair) {
 
 TEST_F(Inspector, ZoomedInTheReadoutNamesTheTexelDrawnUnderTheCursor) {
     auto ui = open("atrium");
+    // The collapsed panels' title bars lie over the lower image (the Viewer window has no
+    // background): park them outside the framebuffer, so every probe sees the blit alone.
+    for (const char* panel : {"Draws", "Depth", "Advisor", "Overlays", "Pixel"})
+        ImGui::SetWindowPos(panel, ImVec2(0.0f, 10000.0f));
     ui::ViewerState& v = ui->inspector().viewer();
     v.zoom = 4.0f;
     v.centre = {0.37f, 0.61f};  // a fractional origin: the blit's rounding shows
