@@ -12,11 +12,11 @@
 #include <sstream>
 
 #include <imgui.h>
-#include <imgui_internal.h>  // ImGui::FindWindowByName: whether a panel is open
 
 #include "renderer/capture/image_writer.h"
 #include "renderer/scene/loader.h"
 #include "tests/unit/passes/shared_renderer.h"
+#include "tests/unit/ui/inspector_ui.h"
 #include "ui/config.h"
 #include "ui/headless.h"
 #include "ui/shader_watch.h"
@@ -34,25 +34,11 @@ std::string read_text(const std::filesystem::path& path) {
 }
 using ui::HeadlessUi;
 
-class Inspector : public SharedRenderer {
+class Inspector : public InspectorUi {
   protected:
-    std::unique_ptr<HeadlessUi> open(const std::string& scene_name, Settings settings = {},
-                                     VkExtent2D size = {960, 540}) {
-        scene::Scene scene = scene::load_scene(scene_name, settings);
-        auto ui = std::make_unique<HeadlessUi>(*renderer_, settings, std::move(scene), size);
-        ui->frame();  // lays the panels out: the viewer's area is known from here on
-        return ui;
-    }
     static bool has_pass(const FrameResult& f, const std::string& name) {
         return std::any_of(f.passes.begin(), f.passes.end(),
                            [&](const PassResult& p) { return p.name == name; });
-    }
-    // The framebuffer position of texel (x, y)'s centre in the viewer.
-    static glm::vec2 screen_of(const HeadlessUi& ui, uint32_t x, uint32_t y) {
-        const ui::ViewerBlit b = const_cast<HeadlessUi&>(ui).inspector().viewer_blit();
-        const float zoom = b.dst_w / b.src_w;
-        return {b.dst_x + (float(x) + 0.5f - b.src_x) * zoom,
-                b.dst_y + (float(y) + 0.5f - b.src_y) * zoom};
     }
 };
 
@@ -353,71 +339,6 @@ TEST_F(Inspector, LeftDragOrbitsAndCtrlWheelZoomsTheImage) {
     ui->frame(zoom);
     EXPECT_NEAR(ui->inspector().viewer().zoom, 1.5625f, 1e-4f);
     EXPECT_EQ(glm::length(ui->inspector().camera().position - moved), 0.0f);  // not the camera
-}
-
-// The Pixel panel: PickPixel through the inspector's renderer, camera, size and settings. On
-// overdraw (every layer covers the whole view) the prepass lists the eight layers front to
-// back, only the first passing, and forward exactly one passing fragment, the front layer's;
-// then a click in the viewer's "pick" mode asks for the texel under the cursor.
-TEST_F(Inspector, PickPixelListsTheOverdrawLayersAndAClickPicks) {
-    auto ui = open("overdraw", {}, {1280, 720});
-    ui::Inspector& in = ui->inspector();
-    EXPECT_FALSE(in.pixel_history());
-    const VkExtent2D size = in.render_size();
-    const uint32_t x = size.width / 3, y = size.height / 2;
-    in.queue(ui::PickPixel{x, y});
-    ui->frame();
-    ASSERT_TRUE(in.pixel_history()) << in.pixel_error();
-    EXPECT_EQ(in.pixel_history()->x, x);
-    size_t prepass = 0, prepass_passed = 0, forward_passed = 0;
-    for (const PixelFragment& f : in.pixel_history()->fragments) {
-        if (f.pass == "depth_prepass") {
-            EXPECT_EQ(f.depth_passed, prepass == 0) << prepass;
-            EXPECT_EQ(in.scene().instance_name(f.instance).material,
-                      "layer_" + std::to_string(prepass));
-            prepass_passed += f.depth_passed;
-            ++prepass;
-        } else if (f.pass == "forward" && f.depth_passed) {
-            ++forward_passed;
-            EXPECT_EQ(in.scene().instance_name(f.instance).material, "layer_0");
-        }
-    }
-    EXPECT_EQ(prepass, 8u);
-    EXPECT_EQ(prepass_passed, 1u);
-    EXPECT_EQ(forward_passed, 1u);
-    EXPECT_EQ(in.pixel_label(),
-              "overdraw at " + std::to_string(size.width) + "x" + std::to_string(size.height));
-    // The inspector's own frame has no replay passes: it renders the settings as set.
-    for (const PassResult& p : in.frame().passes) EXPECT_NE(p.role, graph::PassRole::History);
-    // Outside the frame: an error in the panel, the last history kept.
-    in.queue(ui::PickPixel{size.width, 0});
-    ui->frame();
-    EXPECT_FALSE(in.pixel_error().empty());
-    EXPECT_EQ(in.pixel_history()->x, x);
-
-    // A click in pick mode: the texel under the cursor (press, then release without moving).
-    in.viewer().mouse = ui::MouseTarget::Pick;
-    const glm::vec3 camera = in.camera().position;
-    HeadlessInput click;
-    click.mouse = screen_of(*ui, 17, 23);
-    click.left = true;
-    ui->frame(click);
-    click.left = false;
-    ui->frame(click);
-    ASSERT_TRUE(in.pixel_history()) << in.pixel_error();
-    EXPECT_EQ(in.pixel_history()->x, 17u);
-    EXPECT_EQ(in.pixel_history()->y, 23u);
-    EXPECT_EQ(in.pixel_history()->fragments.size(), 16u);  // 8 prepass + 8 forward
-    EXPECT_EQ(in.camera().position, camera);               // pick mode leaves the camera
-    // A pick opens the panel (collapsed until the first), which draws the table (an ImGui
-    // assertion would abort here).
-    const ImGuiWindow* panel = ImGui::FindWindowByName("Pixel");
-    ASSERT_TRUE(panel);
-    EXPECT_FALSE(panel->Collapsed) << "a pick shows its history";
-    ui->frame();  // the table sizes its columns to what the first frame drew
-    const std::vector<uint8_t> pixels = ui->frame();
-    if (const char* png = std::getenv("DS_PIXEL_PNG"))
-        capture::write_png_rgba8(png, 1280, 720, pixels);
 }
 
 TEST(InspectorConfig, SettingsRoundTripThroughTheConfigFile) {
