@@ -36,11 +36,7 @@ DecalsPass::DecalsPass(const PassServices& services)
 ShaderStages DecalsPass::compile(const Variant& v) const {
     std::vector<shader::Define> defines = {{"ALPHA_MODE", std::to_string(int(v.mode))}};
     std::vector<shader::Define> vert_defines;
-    if (v.counting) add_count_defines(defines, services_.context);
-    if (v.count_draws) {
-        vert_defines.push_back({"COUNT_DRAWS", "1"});
-        defines.push_back({"COUNT_DRAWS", "1"});
-    }
+    if (v.counting) add_count_defines(defines, vert_defines, services_.context, v.count_draws);
     if (v.history) {
         for (shader::Define& d :
              PixelHistoryReplay::defines(true, true, v.samples != VK_SAMPLE_COUNT_1_BIT))

@@ -62,17 +62,12 @@ std::optional<std::string> DepthPrepass::skipped(const FrameInputs& in) const {
 }
 
 ShaderStages DepthPrepass::compile(const Variant& v) const {
-    std::vector<shader::Define> defines;
+    std::vector<shader::Define> defines, vert_defines;
     if (v.alpha != AlphaTest::Opaque)
         defines.push_back({"ALPHA_MASK", std::to_string(int(v.alpha))});
-    if (v.counting) add_count_defines(defines, services_.context);
+    if (v.counting) add_count_defines(defines, vert_defines, services_.context, v.count_draws);
     if (v.alpha_to_coverage) defines.push_back({"ALPHA_TO_COVERAGE", "1"});
     if (v.count_discards) defines.push_back({"COUNT_DISCARDS", "1"});
-    std::vector<shader::Define> vert_defines;
-    if (v.count_draws) {
-        defines.push_back({"COUNT_DRAWS", "1"});
-        vert_defines.push_back({"COUNT_DRAWS", "1"});
-    }
     if (v.surface_id) {
         defines.push_back({"SURFACE_ID", "1"});
         vert_defines.push_back({"SURFACE_ID", "1"});

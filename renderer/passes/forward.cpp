@@ -66,12 +66,8 @@ ShaderStages ForwardPass::compile(const Variant& v) const {
     if (v.non_invariant) vert_defines.push_back({"NON_INVARIANT", "1"});
     if (v.prepass_inputs) frag_defines.push_back({"PREPASS", "1"});
     if (v.alpha_mask) frag_defines.push_back({"ALPHA_MASK", "1"});
-    if (v.counting) add_count_defines(frag_defines, services_.context);
+    if (v.counting) add_count_defines(frag_defines, vert_defines, services_.context, v.count_draws);
     if (v.alpha_to_coverage) frag_defines.push_back({"ALPHA_TO_COVERAGE", "1"});
-    if (v.count_draws) {
-        vert_defines.push_back({"COUNT_DRAWS", "1"});
-        frag_defines.push_back({"COUNT_DRAWS", "1"});
-    }
     if (v.history) {
         const bool msaa = v.samples != VK_SAMPLE_COUNT_1_BIT;
         for (shader::Define& d : PixelHistoryReplay::defines(v.prepass_inputs, false, msaa))

@@ -164,9 +164,13 @@ vk::DescriptorSetLayout create_count_set_layout(vk::Context& context) {
     return vk::DescriptorSetLayout(context, bindings, "count set layout");
 }
 
-void add_count_defines(std::vector<shader::Define>& defines, const vk::Context& context) {
-    defines.push_back({"COUNT_FRAGMENTS", "1"});
-    if (context.report().fragment_quad_operations) defines.push_back({"COUNT_QUADS", "1"});
+void add_count_defines(std::vector<shader::Define>& frag, std::vector<shader::Define>& vert,
+                       const vk::Context& context, bool per_draw) {
+    frag.push_back({"COUNT_FRAGMENTS", "1"});
+    if (context.report().fragment_quad_operations) frag.push_back({"COUNT_QUADS", "1"});
+    if (!per_draw) return;
+    frag.push_back({"COUNT_DRAWS", "1"});
+    vert.push_back({"COUNT_DRAWS", "1"});
 }
 
 std::vector<graph::ImageHandle> count_images(const FrameResources& res) {

@@ -113,9 +113,11 @@ inline constexpr uint32_t kCountSet = 3;
 inline constexpr VkDescriptorPoolSize kCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 3},
                                                            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
 vk::DescriptorSetLayout create_count_set_layout(vk::Context& context);
-// A counting fragment shader's defines on this device: COUNT_FRAGMENTS=1, and COUNT_QUADS=1
-// where it has quad subgroup operations in fragment shaders.
-void add_count_defines(std::vector<shader::Define>& defines, const vk::Context& context);
+// A counting pipeline's defines on this device: COUNT_FRAGMENTS=1, COUNT_QUADS=1 where it has
+// quad subgroup operations in fragment shaders (fragment stage), and with `per_draw`
+// (count_draws) COUNT_DRAWS=1 in both stages.
+void add_count_defines(std::vector<shader::Define>& frag, std::vector<shader::Define>& vert,
+                       const vk::Context& context, bool per_draw);
 // Every valid count image of the frame's counting passes (clear_counts, readback_counts).
 std::vector<graph::ImageHandle> count_images(const FrameResources& res);
 // Declares what the counting fragment shader does to `counts` (clear_counts zeroed them).

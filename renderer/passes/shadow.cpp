@@ -41,11 +41,7 @@ void ShadowPass::rebuild_pipelines(vk::DestroyList& retired) {
 
 ShaderStages ShadowPass::compile(const Variant& v) const {
     std::vector<shader::Define> vert_defines, defines = {{"ALPHA_MASK", v.mask ? "1" : "0"}};
-    if (v.counting) add_count_defines(defines, services_.context);
-    if (v.count_draws) {
-        vert_defines.push_back({"COUNT_DRAWS", "1"});
-        defines.push_back({"COUNT_DRAWS", "1"});
-    }
+    if (v.counting) add_count_defines(defines, vert_defines, services_.context, v.count_draws);
     ShaderStages s;
     s.vert = services_.compiler.compile("shadow.vert", shader::Stage::Vertex, vert_defines).spirv;
     if (!v.mask && !v.counting) return s;  // depth only

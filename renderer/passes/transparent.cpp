@@ -33,11 +33,7 @@ void TransparentPass::rebuild_pipelines(vk::DestroyList& retired) {
 
 ShaderStages TransparentPass::compile(const Variant& v) const {
     std::vector<shader::Define> defines, vert_defines;
-    if (v.counting) add_count_defines(defines, services_.context);
-    if (v.count_draws) {
-        vert_defines.push_back({"COUNT_DRAWS", "1"});
-        defines.push_back({"COUNT_DRAWS", "1"});
-    }
+    if (v.counting) add_count_defines(defines, vert_defines, services_.context, v.count_draws);
     if (v.history) {
         defines = PixelHistoryReplay::defines(true, true, v.samples != VK_SAMPLE_COUNT_1_BIT);
         vert_defines.push_back({"PIXEL_HISTORY", "1"});
