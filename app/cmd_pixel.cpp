@@ -30,9 +30,9 @@ void check_input(const Options& o) {
 }  // namespace
 
 int run_pixel(const Options& o) {
-    check_input(o);
     Settings settings;
     for (const auto& assignment : o.sets) settings.apply(assignment);
+    check_input(o);
     const scene::Scene scene = scene::load_scene(o.scene, settings);
     for (const auto& w : scene.warnings)
         std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());

@@ -93,6 +93,7 @@ std::string OutputDir::commit() {
             result = ::rename(staging_.c_str(), target_.c_str());
         if (result != 0) fail(final_, "cannot move capture into place", errno);
         committed_ = true;
+        on_signal_.reset();
         return {};
     }
     // One step: the new folder takes the old one's place, and staging_ then holds the old
@@ -101,7 +102,8 @@ std::string OutputDir::commit() {
         fail(final_, "cannot replace the existing folder (renameat2 RENAME_EXCHANGE)", errno);
     committed_ = true;
     std::error_code ec;
-    fs::remove_all(staging_, ec);
+    fs::remove_all(staging_, ec);  // the old files; a signal meanwhile removes them too
+    on_signal_.reset();
     if (ec)
         return escaped(final_.string()) + ": replaced; the old files stay in " +
                escaped(staging_.string()) + ": " + ec.message();
