@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "renderer/common/error.h"
+#include "renderer/common/quoted.h"
 
 namespace ds::app {
 namespace {
@@ -26,12 +27,12 @@ std::vector<std::vector<Assignment>> expand_matrix(const std::vector<std::string
     for (const std::string& spec : specs) {
         const size_t eq = spec.find('=');
         if (eq == std::string::npos || eq == 0 || eq + 1 == spec.size()) {
-            throw UsageError("--matrix expects name=value1,value2,..., got '" + spec + "'");
+            throw UsageError("--matrix expects name=value1,value2,..., got " + quote(spec));
         }
         const std::string name = spec.substr(0, eq);
         const std::vector<std::string> values = split(spec.substr(eq + 1), ',');
         if (std::any_of(values.begin(), values.end(), [](auto& v) { return v.empty(); })) {
-            throw UsageError("--matrix " + spec + ": empty value");
+            throw UsageError("--matrix " + quote(spec) + ": empty value");
         }
         std::vector<std::vector<Assignment>> next;
         for (const auto& run : runs) {

@@ -1,8 +1,12 @@
 #include "app/cli.h"
 
+#include <charconv>
+#include <limits>
+
 #include <CLI/CLI.hpp>
 
 #include "renderer/common/error.h"
+#include "renderer/common/quoted.h"
 
 namespace ds::app {
 namespace {
@@ -17,12 +21,68 @@ struct Subcommands {
     CLI::App* pixel = nullptr;
 };
 
-// --size texts, parsed once the command is known: the window's (view) or the render's.
+// --size texts, parsed once the command is known: the window's (view) or the render's. Unset
+// when the option is absent; an empty text given on the command line is an error, not the
+// default.
 struct SizeTexts {
-    std::string render;
-    std::string window;
-    std::string at;  // pixel --at
+    std::optional<std::string> render;
+    std::optional<std::string> window;
+    std::optional<std::string> at;  // pixel --at
 };
+
+// Digits only, read without wrapping: no sign, space, hex, octal or exponent (CLI11 alone
+// takes "0x10", reads "010" as 8 and skips leading spaces). nullopt when `text` is not that.
+std::optional<uint32_t> parse_digits(std::string_view text) {
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string_view::npos)
+        return std::nullopt;
+    uint32_t value = 0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || ptr != text.data() + text.size()) return std::nullopt;
+    return value;
+}
+
+// A whole-number option's value in min..max; throws UsageError naming the option.
+int parse_count(const std::string& option, const std::string& text, int min, int max) {
+    const std::optional<uint32_t> value = parse_digits(text);
+    if (!value || *value < uint32_t(min) || *value > uint32_t(max))
+        throw UsageError(option + " expects a whole number in " + std::to_string(min) + ".." +
+                         std::to_string(max) + ", got " + quote(text));
+    return int(*value);
+}
+
+// A whole-number option read by parse_count rather than CLI11's own conversion.
+CLI::Option* add_count_option(CLI::App& cmd, const std::string& name, int& target, int min, int max,
+                              const std::string& help) {
+    return cmd
+        .add_option_function<std::string>(
+            name,
+            [&target, name, min, max](const std::string& text) {
+                target = parse_count(name, text, min, max);
+            },
+            help)
+        ->type_name("N");
+}
+
+// A path option: an empty value is an error, not "no path" (which would mean the default).
+CLI::Option* add_path_option(CLI::App& cmd, const std::string& name, std::string& target,
+                             const std::string& help) {
+    return cmd
+        .add_option_function<std::string>(
+            name,
+            [&target, name](const std::string& text) {
+                if (text.empty()) throw UsageError(name + " expects a path, got ''");
+                target = text;
+            },
+            help)
+        ->type_name("PATH");
+}
+
+// A text option that remembers whether it was given (an empty value included).
+CLI::Option* add_text_option(CLI::App& cmd, const std::string& name,
+                             std::optional<std::string>& target, const std::string& help) {
+    return cmd.add_option_function<std::string>(
+        name, [&target](const std::string& text) { target = text; }, help);
+}
 
 // Options every rendering subcommand shares.
 void add_render_options(CLI::App& cmd, Options& o, bool with_scene) {
@@ -38,19 +98,23 @@ void add_render_options(CLI::App& cmd, Options& o, bool with_scene) {
 }
 
 // The inspector: `depthscope [view] [--scene NAME|PATH] [--set k=v]... [--frames N]`.
-void add_view_options(CLI::App& cmd, Options& o, std::string& window_text) {
+void add_view_options(CLI::App& cmd, Options& o, std::optional<std::string>& window_text) {
     add_render_options(cmd, o, /*with_scene=*/true);
-    cmd.add_option("--frames", o.view_frames, "close the window after N frames (0: never)")
-        ->check(CLI::Range(0, 100000000));
-    cmd.add_option("--size", window_text, "window size WIDTHxHEIGHT (default 1600x900)");
+    add_count_option(cmd, "--frames", o.view_frames, 0, 100000000,
+                     "close the window after N frames (0: never)");
+    add_text_option(cmd, "--size", window_text, "window size WIDTHxHEIGHT (default 1600x900)")
+        ->type_name("WxH");
 }
 
-CLI::App* add_capture_command(CLI::App& app, Options& o, std::string& size_text) {
+CLI::App* add_capture_command(CLI::App& app, Options& o, std::optional<std::string>& size_text) {
     auto* capture = app.add_subcommand(
         "capture", "render one frame headless; write DIR/final.png and DIR/report.json");
     add_render_options(*capture, o, /*with_scene=*/true);
-    capture->add_option("--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)");
-    capture->add_option("--out", o.out, "output folder (default captures/YYYYmmdd-HHMMSS-SCENE/)");
+    add_text_option(*capture, "--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)")
+        ->type_name("WxH");
+    add_path_option(*capture, "--out", o.out,
+                    "output folder (default captures/YYYYmmdd-HHMMSS-SCENE/); an existing one "
+                    "holding only a capture's files is replaced whole");
     capture->add_flag("--renderdoc", o.renderdoc,
                       "bracket the frame with RenderDoc's StartFrameCapture/EndFrameCapture and "
                       "store the .rdc in the output folder (needs RenderDoc loaded)");
@@ -77,20 +141,22 @@ CLI::App* add_export_scene_command(CLI::App& app, Options& o) {
     return export_cmd;
 }
 
-CLI::App* add_bench_command(CLI::App& app, Options& o, std::string& size_text) {
+CLI::App* add_bench_command(CLI::App& app, Options& o, std::optional<std::string>& size_text) {
     auto* bench = app.add_subcommand(
         "bench", "render frames headless for each settings combination; per-pass GPU medians");
     add_render_options(*bench, o, /*with_scene=*/true);
-    bench->add_option("--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)");
-    bench->add_option("--frames", o.bench_frames, "measured frames per combination (default 20)")
-        ->check(CLI::Range(1, 100000));
-    bench->add_option("--warmup", o.bench_warmup, "unmeasured frames first (default 5)")
-        ->check(CLI::Range(0, 100000));
+    add_text_option(*bench, "--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)")
+        ->type_name("WxH");
+    add_count_option(*bench, "--frames", o.bench_frames, 1, 100000,
+                     "measured frames per combination (default 20)");
+    add_count_option(*bench, "--warmup", o.bench_warmup, 0, 100000,
+                     "unmeasured frames first (default 5)");
     bench
         ->add_option("--matrix", o.matrix,
                      "setting=value1,value2,...: one run per combination, repeatable")
         ->type_name("NAME=V1,V2");
-    bench->add_option("--json", o.out, "also write the results as JSON to FILE");
+    add_path_option(*bench, "--json", o.out,
+                    "also write the results as JSON to FILE (a new file or a regular one)");
     bench->add_flag("--ui", o.ui,
                     "draw the inspector offscreen every frame (its cost is measured)");
     bench->add_flag("--advise", o.advise,
@@ -104,11 +170,13 @@ CLI::App* add_pixel_command(CLI::App& app, Options& o, SizeTexts& texts) {
     auto* pixel = app.add_subcommand(
         "pixel", "render one frame headless and list every fragment that covered one pixel");
     add_render_options(*pixel, o, /*with_scene=*/true);
-    pixel->add_option("--size", texts.render, "render size WIDTHxHEIGHT (default 1280x720)");
-    pixel->add_option("--at", texts.at, "the pixel X,Y (0,0 = top left)")
+    add_text_option(*pixel, "--size", texts.render, "render size WIDTHxHEIGHT (default 1280x720)")
+        ->type_name("WxH");
+    add_text_option(*pixel, "--at", texts.at, "the pixel X,Y (0,0 = top left)")
         ->type_name("X,Y")
         ->required();
-    pixel->add_option("--json", o.out, "also write the history as JSON to FILE");
+    add_path_option(*pixel, "--json", o.out,
+                    "also write the history as JSON to FILE (a new file or a regular one)");
     return pixel;
 }
 
@@ -152,10 +220,10 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
     if (c.export_cmd->parsed()) o.command = Command::ExportScene;
     if (c.bench->parsed()) o.command = Command::Bench;
     if (c.pixel->parsed()) o.command = Command::Pixel;
-    if (!sizes.at.empty()) parse_at(sizes.at, o.at_x, o.at_y);
-    if (!sizes.render.empty()) o.size = parse_size(sizes.render);
-    if (!sizes.window.empty()) {
-        o.window = parse_size(sizes.window);
+    if (sizes.at) parse_at(*sizes.at, o.at_x, o.at_y);
+    if (sizes.render) o.size = parse_size(*sizes.render);
+    if (sizes.window) {
+        o.window = parse_size(*sizes.window);
         if (o.command == Command::Default) o.size = o.window;  // the headless fallback
     }
     for (CLI::App* cmd : {&app, c.view, c.capture, c.bench, c.pixel})
@@ -164,27 +232,35 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
 
 }  // namespace
 
+// Syntax and the tool's own bound only: whether the device can make images this large (and
+// has the memory) is checked when rendering.
 Size parse_size(const std::string& text) {
-    unsigned w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 ||
-        h < 1 || w > 16384 || h > 16384) {
-        throw UsageError("--size expects WIDTHxHEIGHT between 1x1 and 16384x16384, got '" + text +
-                         "'");
+    const size_t x = text.find('x');
+    const std::optional<uint32_t> w =
+        x == std::string::npos ? std::nullopt : parse_digits(std::string_view(text).substr(0, x));
+    const std::optional<uint32_t> h =
+        x == std::string::npos ? std::nullopt : parse_digits(std::string_view(text).substr(x + 1));
+    if (!w || !h || *w < 1 || *h < 1 || *w > kMaxSize || *h > kMaxSize) {
+        throw UsageError("--size expects WIDTHxHEIGHT between 1x1 and " + std::to_string(kMaxSize) +
+                         "x" + std::to_string(kMaxSize) + ", got " + quote(text));
     }
-    return {w, h};
+    return {*w, *h};
 }
 
 void parse_at(const std::string& text, uint32_t& x, uint32_t& y) {
-    unsigned px = 0, py = 0;
-    char comma = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%u%c%u%c", &px, &comma, &py, &extra) != 3 || comma != ',' ||
-        text.find('-') != std::string::npos) {
-        throw UsageError("--at expects X,Y (two whole numbers, 0,0 = top left), got '" + text +
-                         "'");
+    const size_t comma = text.find(',');
+    const std::optional<uint32_t> px = comma == std::string::npos
+                                           ? std::nullopt
+                                           : parse_digits(std::string_view(text).substr(0, comma));
+    const std::optional<uint32_t> py = comma == std::string::npos
+                                           ? std::nullopt
+                                           : parse_digits(std::string_view(text).substr(comma + 1));
+    if (!px || !py || *px >= kMaxSize || *py >= kMaxSize) {
+        throw UsageError("--at expects X,Y (two whole numbers below " + std::to_string(kMaxSize) +
+                         ", 0,0 = top left), got " + quote(text));
     }
-    x = px;
-    y = py;
+    x = *px;
+    y = *py;
 }
 
 std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
@@ -204,7 +280,8 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
     } catch (const CLI::CallForAllHelp& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        throw UsageError(std::string(e.what()) + " (see --help)");
+        // CLI11's messages repeat the arguments they object to.
+        throw UsageError(escaped(e.what()) + " (see --help)");
     }
 
     reject_options_before_command(app);

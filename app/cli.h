@@ -43,9 +43,12 @@ struct Options {
 // Usage errors throw ds::UsageError.
 std::optional<int> parse_command_line(int argc, char** argv, Options& options);
 
-// "640x360" -> Size; throws UsageError.
+// The largest --size side (WIDTH and HEIGHT each 1..kMaxSize).
+constexpr uint32_t kMaxSize = 16384;
+
+// "640x360" -> Size: digits only, each side 1..kMaxSize; throws UsageError.
 Size parse_size(const std::string& text);
-// "12,34" -> (12, 34) into x, y; throws UsageError.
+// "12,34" -> (12, 34) into x, y: digits only, each below kMaxSize; throws UsageError.
 void parse_at(const std::string& text, uint32_t& x, uint32_t& y);
 
 }  // namespace ds::app

@@ -12,6 +12,7 @@
 #include "app/commands.h"
 #include "app/exit_code.h"
 #include "renderer/capture/advice.h"
+#include "renderer/capture/file_output.h"
 #include "renderer/capture/report.h"
 #include "renderer/common/error.h"
 #include "renderer/device_info.h"
@@ -190,11 +191,12 @@ void bench_combination(const Options& o, Renderer& renderer, const scene::Scene&
 }
 
 void write_results(const Options& o, const scene::Scene& scene, const nlohmann::json& runs) {
-    capture::write_json_atomically(o.out, {{"scene", scene.name},
-                                           {"size", {o.size.width, o.size.height}},
-                                           {"frames", o.bench_frames},
-                                           {"warmup", o.bench_warmup},
-                                           {"runs", runs}});
+    capture::write_json_atomically("--json", o.out,
+                                   {{"scene", scene.name},
+                                    {"size", {o.size.width, o.size.height}},
+                                    {"frames", o.bench_frames},
+                                    {"warmup", o.bench_warmup},
+                                    {"runs", runs}});
     std::printf("\nbench: wrote %s\n", o.out.c_str());
 }
 
@@ -255,6 +257,9 @@ int run_bench(const Options& o) {
     // Check every combination before the first frame: a typo should not cost a long run.
     for (const auto& combination : combinations) combined(base, combination);  // throws
     check_advise(o, combinations);
+    // --json's target before any frame: a directory or a device node there is refused now,
+    // not after the whole benchmark.
+    if (!o.out.empty()) capture::check_output_file("--json", o.out);
     const scene::Scene scene = scene::load_scene(o.scene, base);
     RendererOptions renderer_options;
     renderer_options.validate = o.validate;

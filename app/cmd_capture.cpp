@@ -11,6 +11,7 @@
 #include "renderer/capture/renderdoc.h"
 #include "renderer/capture/report.h"
 #include "renderer/common/error.h"
+#include "renderer/common/quoted.h"
 #include "renderer/device_info.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/builtin/builtin.h"
@@ -82,8 +83,8 @@ FrameResult capture_ui_frame(const Options& o, Renderer& renderer, const Setting
         std::string images;
         for (const ResourceSummary& r : frame.resources)
             if (r.is_image) images += (images.empty() ? "" : ", ") + r.name;
-        throw UsageError("--view " + o.view_resource + ": this frame has no such image (" + images +
-                         ")");
+        throw UsageError("--view " + escaped(o.view_resource) + ": this frame has no such image (" +
+                         images + ")");
     }
     return frame;
 }
@@ -152,7 +153,8 @@ int run_capture(const Options& o) {
     if (o.advise) advice = advise(o, renderer, settings, scene);
     write_report(renderer, scene, settings, frame, advice ? &*advice : nullptr, out);
     if (o.dump_graph) std::printf("%s\n", renderer.graph_dump().c_str());
-    out.commit();
+    const std::string warning = out.commit();
+    if (!warning.empty()) std::fprintf(stderr, "depthscope: warning: %s\n", warning.c_str());
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());
     return validation_exit_code(renderer);
 }

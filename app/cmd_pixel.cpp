@@ -5,6 +5,7 @@
 
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "renderer/capture/file_output.h"
 #include "renderer/capture/pixel_report.h"
 #include "renderer/capture/report.h"
 #include "renderer/common/error.h"
@@ -14,7 +15,8 @@
 namespace ds::app {
 namespace {
 
-// Before any Vulkan work: the pixel must lie in the frame, and --json's folder must exist.
+// Before any Vulkan work: the pixel must lie in the frame, and --json must name a regular file
+// or a new one in an existing folder.
 void check_input(const Options& o) {
     if (o.at_x >= o.size.width || o.at_y >= o.size.height) {
         throw UsageError(
@@ -22,18 +24,15 @@ void check_input(const Options& o) {
             std::to_string(o.size.width) + "x" + std::to_string(o.size.height) + " frame (x < " +
             std::to_string(o.size.width) + ", y < " + std::to_string(o.size.height) + ")");
     }
-    if (o.out.empty()) return;
-    const std::filesystem::path folder = std::filesystem::absolute(o.out).parent_path();
-    if (!std::filesystem::is_directory(folder))
-        throw Error("--json " + o.out + ": no folder " + folder.string());
+    if (!o.out.empty()) capture::check_output_file("--json", o.out);
 }
 
 }  // namespace
 
 int run_pixel(const Options& o) {
-    check_input(o);
     Settings settings;
     for (const auto& assignment : o.sets) settings.apply(assignment);
+    check_input(o);
     const scene::Scene scene = scene::load_scene(o.scene, settings);
     for (const auto& w : scene.warnings)
         std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
@@ -49,7 +48,7 @@ int run_pixel(const Options& o) {
     const capture::PixelReportInput report{scene, settings, frame};
     std::fputs(capture::pixel_history_table(report).c_str(), stdout);
     if (!o.out.empty()) {
-        capture::write_json_atomically(o.out, capture::pixel_history_json(report));
+        capture::write_json_atomically("--json", o.out, capture::pixel_history_json(report));
         std::printf("depthscope: wrote %s\n", o.out.c_str());
     }
     return validation_exit_code(renderer);

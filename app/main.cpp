@@ -1,11 +1,13 @@
 // depthscope's entry point: parse, dispatch, and turn every error into one line and an exit
 // code (DESIGN decision 8): 0 ok, 1 runtime or input error, 2 usage error, 3 validation.
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
 #include "app/cli.h"
 #include "app/commands.h"
 #include "renderer/common/error.h"
+#include "renderer/common/quoted.h"
 
 namespace {
 
@@ -38,14 +40,19 @@ int dispatch(const ds::app::Options& o) {
     return 2;
 }
 
+// Every echo site quotes the user's text; escaping the whole line again changes nothing there
+// and keeps a message from a library (a file name, a parser's text) on one line too.
 int fail(const char* what, int code) {
-    std::fprintf(stderr, "depthscope: error: %s\n", what);
+    std::fprintf(stderr, "depthscope: error: %s\n", ds::escaped(what).c_str());
     return code;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Over a file-size limit (ulimit -f) a write would raise SIGXFSZ, which ends the process
+    // with no word; ignored, the write fails with EFBIG and the command reports it and cleans up.
+    std::signal(SIGXFSZ, SIG_IGN);
     try {
         ds::app::Options options;
         if (auto exit_code = ds::app::parse_command_line(argc, argv, options)) return *exit_code;

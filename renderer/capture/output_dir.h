@@ -1,16 +1,23 @@
 #pragma once
-// Output that appears complete or not at all (DESIGN decision 8): files are written into a
-// staging folder and moved into place by commit(). Without commit() the staging folder is
-// removed, so a failed capture leaves nothing behind.
+// A capture folder that appears complete or not at all (DESIGN decision 8): files are written
+// into a staging folder beside the final one, which commit() moves into place in one step: a
+// rename for a new folder, an exchange (renameat2 RENAME_EXCHANGE) for an existing one, whose
+// old files are removed only afterwards. Without commit(), and on SIGTERM, SIGINT, SIGHUP or
+// SIGPIPE, the staging folder is removed, so a failed capture leaves nothing behind and an
+// existing folder exactly as it was.
 #include <filesystem>
+#include <memory>
 #include <string>
-#include <vector>
 
 namespace ds::capture {
 
+class RemoveOnSignal;
+
 class OutputDir {
   public:
-    // Throws ds::Error ("DIR: cannot create: …") when the folder cannot be made.
+    // Throws ds::Error ("DIR: …") when the staging folder cannot be made, when DIR exists and
+    // is no folder, or when it holds anything but a capture's files (final.png, report.json,
+    // *.rdc): a capture replaces its folder whole, and must never take a user's other files.
     explicit OutputDir(std::filesystem::path final_dir);
     ~OutputDir();
     OutputDir(const OutputDir&) = delete;
@@ -21,12 +28,16 @@ class OutputDir {
     const std::filesystem::path& staging_dir() const { return staging_; }
     const std::filesystem::path& final_dir() const { return final_; }
 
-    // Moves every staged file to the final folder. Throws ds::Error on failure.
-    void commit();
+    // Puts the staged folder in place. Throws ds::Error on failure, leaving an existing folder
+    // untouched. Returns a warning when the capture is in place but the replaced files could
+    // not all be removed (they stay in the staging folder's name); else "".
+    [[nodiscard]] std::string commit();
 
   private:
-    std::filesystem::path final_;
+    std::filesystem::path final_;   // as given (messages)
+    std::filesystem::path target_;  // the real folder: absolute, a symbolic link resolved
     std::filesystem::path staging_;
+    std::unique_ptr<RemoveOnSignal> on_signal_;
     bool final_existed_ = false;
     bool committed_ = false;
 };

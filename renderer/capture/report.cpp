@@ -1,12 +1,10 @@
 #include "renderer/capture/report.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 #include <string>
 
+#include "renderer/capture/file_output.h"
 #include "renderer/common/error.h"
 #include "renderer/format/format.h"
 
@@ -235,27 +233,12 @@ nlohmann::json frame_report(const ReportInput& in) {
 }
 
 void write_json(const std::filesystem::path& path, const nlohmann::json& json) {
-    std::ofstream out(path, std::ios::binary);
-    out << json.dump(2) << '\n';
-    out.close();
-    if (!out) throw Error(path.string() + ": cannot write");
+    write_new_file(path, json.dump(2) + '\n');
 }
 
-void write_json_atomically(const std::filesystem::path& path, const nlohmann::json& json) {
-    const std::filesystem::path temp = path.string() + ".tmp-" + std::to_string(::getpid());
-    try {
-        write_json(temp, json);
-    } catch (...) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        throw Error(path.string() + ": cannot write");
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::filesystem::remove(temp, ec);
-        throw Error(path.string() + ": cannot write: " + ec.message());
-    }
+void write_json_atomically(std::string_view option, const std::filesystem::path& path,
+                           const nlohmann::json& json) {
+    write_file_atomically(option, path, json.dump(2) + '\n');
 }
 
 }  // namespace ds::capture

@@ -42,9 +42,11 @@ nlohmann::json scene_summary(const scene::Scene& scene);
 // both numbers).
 nlohmann::json counters_note(const DeviceInfo& device);
 
-// Writes pretty JSON; throws ds::Error when the file cannot be written.
+// Writes pretty JSON as a new file (file_output.h: every byte checked); throws ds::Error.
 void write_json(const std::filesystem::path& path, const nlohmann::json& json);
-// The same, through a temporary file renamed into place: PATH is complete or absent.
-void write_json_atomically(const std::filesystem::path& path, const nlohmann::json& json);
+// The same onto the file an `option` (--json) names, through a temporary file renamed into
+// place (write_file_atomically): PATH is complete or as it was.
+void write_json_atomically(std::string_view option, const std::filesystem::path& path,
+                           const nlohmann::json& json);
 
 }  // namespace ds::capture

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "renderer/common/error.h"
+#include "renderer/common/quoted.h"
 #include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
 
@@ -285,7 +286,7 @@ void GpuScene::set_alpha_cutoff_overrides(
         masked.erase(std::unique(masked.begin(), masked.end()), masked.end());
         std::string list;
         for (const std::string& m : masked) list += (list.empty() ? "" : ", ") + m;
-        throw UsageError("material_alpha_cutoff: no masked material \"" + name + "\" in " +
+        throw UsageError("material_alpha_cutoff: no masked material \"" + escaped(name) + "\" in " +
                          scene_name_ + " (masked: " + (list.empty() ? "none" : list) + ")");
     }
     if (overrides == cutoff_overrides_) return;

@@ -4,9 +4,11 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "renderer/common/error.h"
+#include "renderer/common/quoted.h"
 
 namespace ds {
 namespace {
@@ -38,17 +40,12 @@ SettingDef enum_knob(std::string name, std::string group, std::vector<std::strin
                       inv};
 }
 
+// `allowed`: when given, the only values within min..max that the knob takes.
 SettingDef int_knob(std::string name, std::string group, int def, int min, int max,
-                    std::string help, Invalidates inv) {
-    return SettingDef{std::move(name),
-                      std::move(group),
-                      SettingType::Int,
-                      std::to_string(def),
-                      double(min),
-                      double(max),
-                      {},
-                      std::move(help),
-                      inv};
+                    std::string help, Invalidates inv, std::vector<std::string> allowed = {}) {
+    return SettingDef{std::move(name),     std::move(group), SettingType::Int,
+                      std::to_string(def), double(min),      double(max),
+                      std::move(allowed),  std::move(help),  inv};
 }
 
 SettingDef float_knob(std::string name, std::string group, std::string def, double min, double max,
@@ -106,13 +103,27 @@ std::string join(const std::vector<std::string>& items, std::string_view sep) {
 std::string canonical_bool(const SettingDef& def, std::string_view v) {
     if (v == "on" || v == "true" || v == "1" || v == "yes") return "on";
     if (v == "off" || v == "false" || v == "0" || v == "no") return "off";
-    throw UsageError("setting " + def.name + ": '" + std::string(v) + "' is not on|off");
+    throw UsageError("setting " + def.name + ": " + quote(v) + " is not on|off");
 }
 
-// `entry`: a Map's entry name, said in the message.
+// A Float or Map number must reach the float that get_float() / get_map() return as itself or
+// as a normal float: a denormal (or anything below FLT_MIN) would turn into 0 or a denormal
+// there, which the registry's range check never saw.
+// The stored text has 7 digits, so the check is on the value read back from it.
+bool fits_normal_float(double value) {
+    const std::string text = format_number(value);
+    double stored = 0.0;
+    std::from_chars(text.data(), text.data() + text.size(), stored);
+    const double magnitude = std::fabs(stored);
+    return value == 0.0 || (magnitude >= std::numeric_limits<float>::min() &&
+                            magnitude <= std::numeric_limits<float>::max());
+}
+
+// `entry`: a Map's entry name, said in the message. Only what std::from_chars reads whole is a
+// number: no sign but '-', no spaces, no hex, no inf/nan.
 double parse_number(const SettingDef& def, std::string_view v, std::string_view entry = {}) {
     const std::string subject =
-        "setting " + def.name + (entry.empty() ? "" : ": " + std::string(entry));
+        "setting " + def.name + (entry.empty() ? "" : ": " + escaped(entry));
     const std::string range = def.type == SettingType::Map
                                   ? format_number(def.min) + ".." + format_number(def.max)
                                   : def.range_text();
@@ -120,9 +131,15 @@ double parse_number(const SettingDef& def, std::string_view v, std::string_view 
     const char* end = v.data() + v.size();
     auto [ptr, ec] = std::from_chars(v.data(), end, value);
     if (v.empty() || ec != std::errc() || ptr != end || !std::isfinite(value)) {
-        throw UsageError(subject + ": '" + std::string(v) + "' is not a number (" +
-                         def.type_name() + " in " + range + ")");
+        throw UsageError(subject + ": " + quote(v) + " is not a number (" + def.type_name() +
+                         " in " + range + ")");
     }
+    if (def.type != SettingType::Int && !fits_normal_float(value)) {
+        throw UsageError(subject + ": " + std::string(v) +
+                         " is too small for a float (nonzero values need a magnitude of at "
+                         "least 1.17549e-38)");
+    }
+    if (value == 0.0) value = 0.0;  // -0 reads as 0
     if (value < def.min || value > def.max) {
         throw UsageError(subject + ": " + std::string(v) + " is out of range " + range);
     }
@@ -148,16 +165,14 @@ std::map<std::string, double, std::less<>> parse_map(const SettingDef& def, std:
         const size_t comma = std::min(all.find(',', start), all.size());
         const std::string_view entry = trim(all.substr(start, comma - start));
         const size_t eq = entry.rfind('=');
-        if (entry.empty())
-            throw UsageError(subject + "empty entry in '" + std::string(all) + "'" + expected);
+        if (entry.empty()) throw UsageError(subject + "empty entry in " + quote(all) + expected);
         if (eq == std::string_view::npos)
-            throw UsageError(subject + "'" + std::string(entry) + "' is not NAME=V" + expected);
+            throw UsageError(subject + quote(entry) + " is not NAME=V" + expected);
         const std::string_view name = trim(entry.substr(0, eq));
-        if (name.empty())
-            throw UsageError(subject + "'" + std::string(entry) + "' has no name" + expected);
+        if (name.empty()) throw UsageError(subject + quote(entry) + " has no name" + expected);
         const double value = parse_number(def, trim(entry.substr(eq + 1)), name);
         if (!pairs.emplace(std::string(name), value).second)
-            throw UsageError(subject + std::string(name) + " is given twice");
+            throw UsageError(subject + escaped(name) + " is given twice");
         if (comma == all.size()) break;
         start = comma + 1;
     }
@@ -172,18 +187,29 @@ std::string canonical_map(const SettingDef& def, std::string_view v) {
     return join(entries, ",");
 }
 
+// An Int within min..max (ints by construction) and, when the knob lists them, one of its
+// choices (msaa: the sample counts Vulkan has; which the device offers is checked per frame).
+std::string canonical_int(const SettingDef& def, std::string_view v) {
+    const double value = parse_number(def, v);
+    if (value != std::floor(value)) {
+        throw UsageError("setting " + def.name + ": " + quote(v) + " is not an integer (" +
+                         def.range_text() + ")");
+    }
+    std::string text = std::to_string(static_cast<long long>(value));
+    if (!def.choices.empty() &&
+        std::find(def.choices.begin(), def.choices.end(), text) == def.choices.end()) {
+        throw UsageError("setting " + def.name + ": " + text + " is not one of " +
+                         def.range_text());
+    }
+    return text;
+}
+
 std::string canonical_value(const SettingDef& def, std::string_view v) {
     switch (def.type) {
         case SettingType::Bool:
             return canonical_bool(def, v);
-        case SettingType::Int: {
-            double value = parse_number(def, v);
-            if (value != std::floor(value)) {
-                throw UsageError("setting " + def.name + ": '" + std::string(v) +
-                                 "' is not an integer (" + def.range_text() + ")");
-            }
-            return std::to_string(static_cast<long long>(value));
-        }
+        case SettingType::Int:
+            return canonical_int(def, v);
         case SettingType::Float:
             for (const auto& keyword : def.choices) {
                 if (keyword == v) return keyword;
@@ -193,7 +219,7 @@ std::string canonical_value(const SettingDef& def, std::string_view v) {
             for (const auto& c : def.choices) {
                 if (c == v) return c;
             }
-            throw UsageError("setting " + def.name + ": '" + std::string(v) + "' is not one of " +
+            throw UsageError("setting " + def.name + ": " + quote(v) + " is not one of " +
                              def.range_text());
         case SettingType::Map:
             return canonical_map(def, v);
@@ -225,7 +251,8 @@ std::string SettingDef::range_text() const {
         case SettingType::Enum:
             return join(choices, "|");
         case SettingType::Int:
-            return format_number(min) + ".." + format_number(max);
+            return choices.empty() ? format_number(min) + ".." + format_number(max)
+                                   : join(choices, "|");
         case SettingType::Float: {
             const std::string range = format_number(min) + ".." + format_number(max);
             return choices.empty() ? range : join(choices, "|") + "|" + range;
@@ -275,13 +302,14 @@ SettingsRegistry::SettingsRegistry() {
         plane_knob("zfar",
                    "far plane in scene units; scene: the scene camera's own (must stay above "
                    "the near plane)"),
-        // A power of two the device supports for colour and depth (checked per frame: the
-        // registry is static, the device is not); lavapipe offers 1 and 4.
+        // A sample count Vulkan has (1, 2, 4, 8: anything else is a usage error); whether the
+        // device supports it for colour and depth is checked per frame (the registry is
+        // static, the device is not): lavapipe offers 1 and 4.
         int_knob("msaa", "msaa", 1, 1, 8,
                  "samples per pixel (1, 2, 4 or 8, as the device allows); > 1: depth, normals, "
                  "roughness and HDR colour are multisampled and resolved inline (depth keeps "
                  "the nearest sample)",
-                 I::Pipelines),
+                 I::Pipelines, {"1", "2", "4", "8"}),
         bool_knob("sample_shading", "msaa", false,
                   "msaa > 1: forward shades every sample (minSampleShading 1), so specular "
                   "and texture detail inside a pixel is antialiased too, at up to msaa times "
@@ -409,8 +437,7 @@ const SettingDef& SettingsRegistry::at(std::string_view name) const {
     if (const SettingDef* d = find(name)) return *d;
     std::vector<std::string> names;
     for (const auto& d : defs_) names.push_back(d.name);
-    throw UsageError("unknown setting '" + std::string(name) + "' (valid: " + join(names, ", ") +
-                     ")");
+    throw UsageError("unknown setting " + quote(name) + " (valid: " + join(names, ", ") + ")");
 }
 
 Settings::Settings() {
@@ -425,7 +452,7 @@ void Settings::set(std::string_view name, std::string_view value) {
 void Settings::apply(std::string_view assignment) {
     const size_t eq = assignment.find('=');
     if (eq == std::string_view::npos || eq == 0) {
-        throw UsageError("--set expects name=value, got '" + std::string(assignment) + "'");
+        throw UsageError("--set expects name=value, got " + quote(assignment));
     }
     set(assignment.substr(0, eq), assignment.substr(eq + 1));
 }
@@ -448,18 +475,30 @@ bool Settings::get_bool(std::string_view name) const {
     return get(name) == "on";
 }
 
+// The stored text is canonical (set() made it), so these conversions succeed; should one not,
+// it is a ds::Error, never a std exception from stoi/stof.
 int Settings::get_int(std::string_view name) const {
-    return std::stoi(get(name));
+    const std::string& value = get(name);
+    int out = 0;
+    const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), out);
+    if (ec != std::errc() || ptr != value.data() + value.size())
+        throw Error("setting " + std::string(name) + ": " + quote(value) + " is not an int");
+    return out;
 }
 
 float Settings::get_float(std::string_view name) const {
     const std::string& value = get(name);
     for (const auto& keyword : SettingsRegistry::instance().at(name).choices) {
         if (value == keyword) {
-            throw UsageError("setting " + std::string(name) + " is '" + value + "', not a number");
+            throw UsageError("setting " + std::string(name) + " is " + quote(value) +
+                             ", not a number");
         }
     }
-    return std::stof(value);
+    float out = 0.0f;
+    const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), out);
+    if (ec != std::errc() || ptr != value.data() + value.size() || !std::isfinite(out))
+        throw Error("setting " + std::string(name) + ": " + quote(value) + " is not a float");
+    return out;
 }
 
 std::vector<std::string> Settings::diff(const Settings& other) const {

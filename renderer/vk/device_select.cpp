@@ -7,6 +7,7 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/common/error.h"
+#include "renderer/common/quoted.h"
 
 namespace ds::vk {
 namespace {
@@ -71,15 +72,19 @@ std::string describe_candidate(const DeviceCandidate& c) {
 uint32_t select_device(const std::vector<DeviceCandidate>& candidates, std::string_view request) {
     if (is_index(request)) {
         uint32_t index = 0;
-        std::from_chars(request.data(), request.data() + request.size(), index);
+        const auto [ptr, ec] =
+            std::from_chars(request.data(), request.data() + request.size(), index);
+        if (ec != std::errc())  // too many digits for any index: no wrap-around to a real one
+            throw Error("no device with index " + escaped(request) +
+                        "; devices:" + device_list(candidates));
         for (const DeviceCandidate& c : candidates) {
             if (c.index != index) continue;
             std::vector<std::string> unmet = unmet_requirements(c);
             if (unmet.empty()) return c.index;
-            throw Error("device " + std::string(request) + " (" + c.name +
+            throw Error("device " + escaped(request) + " (" + c.name +
                         ") does not meet the requirements: " + join(unmet, ", "));
         }
-        throw Error("no device with index " + std::string(request) +
+        throw Error("no device with index " + escaped(request) +
                     "; devices:" + device_list(candidates));
     }
     const std::string needle = lower(request);
@@ -95,7 +100,7 @@ uint32_t select_device(const std::vector<DeviceCandidate>& candidates, std::stri
             "synchronization2, extendedDynamicState, a graphics+compute queue); devices:" +
             device_list(candidates));
     throw Error(std::string(name_matched ? "no device matching '" : "no device name contains '") +
-                std::string(request) + (name_matched ? "' meets the requirements" : "'") +
+                escaped(request) + (name_matched ? "' meets the requirements" : "'") +
                 "; devices:" + device_list(candidates));
 }
 

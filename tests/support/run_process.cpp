@@ -30,11 +30,15 @@ fs::path fresh_dir(const std::string& name) {
 }
 
 ProcessResult run_depthscope(const std::string& args, int timeout_s) {
+    return run_command(DS_EXECUTABLE " " + args, timeout_s);
+}
+
+ProcessResult run_command(const std::string& command, int timeout_s) {
     static int counter = 0;
     const fs::path io = fs::path(DS_TEST_WORK_DIR) /
                         ("io-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    const std::string cmd = "timeout " + std::to_string(timeout_s) + " " DS_EXECUTABLE " " + args +
-                            " >" + io.string() + ".out 2>" + io.string() + ".err";
+    const std::string cmd = "timeout " + std::to_string(timeout_s) + " " + command + " >" +
+                            io.string() + ".out 2>" + io.string() + ".err";
     const int status = std::system(cmd.c_str());
     ProcessResult r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

@@ -15,6 +15,9 @@ struct ProcessResult {
 
 // Runs `depthscope ARGS` (a shell word list) with a time limit in seconds.
 ProcessResult run_depthscope(const std::string& args, int timeout_s = 120);
+// Runs a shell command line (/bin/sh) with a time limit, its output captured the same way
+// (`bash -c 'ulimit -f 8; exec ...'`; DS_EXECUTABLE names depthscope).
+ProcessResult run_command(const std::string& command, int timeout_s = 120);
 
 // A fresh empty folder under the build tree, removed by the caller when wanted.
 std::filesystem::path fresh_dir(const std::string& name);

@@ -210,8 +210,8 @@ TEST_F(Msaa, UnsupportedCountIsAClearError) {
             << e.what();
     }
     Settings s;
-    s.set("msaa", "3");  // the registry allows 1..8; the frame refuses a non-power of two
-    EXPECT_THROW(renderer_->render(edges_->camera, s, 32, 18), ds::Error);
+    // Not a sample count at all: the registry refuses it (a usage error), before any frame.
+    EXPECT_THROW(s.set("msaa", "3"), ds::UsageError);
 }
 
 }  // namespace
