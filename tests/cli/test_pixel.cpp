@@ -57,13 +57,18 @@ TEST(Pixel, OverdrawWithoutPrepassListsEveryLayerAndEndsWithTheFrontOne) {
         EXPECT_TRUE(f["blended"].is_null());
         EXPECT_EQ(f["color"].size(), 4u);
     }
-    // The final colour is the front layer's: what the pixel shows with that layer alone.
-    const auto alone = pixel_json(
-        "pixel_one", std::string(kOverdraw) + " --set prepass=off --set overdraw_layers=1");
+    // The final colour is the front layer's: what the pixel shows with that layer alone. Both
+    // without shadows: the shadow map is fitted to the scene's bounds, which the layer count
+    // changes, so its filtered lookup may differ in the last bit (it does on an NVIDIA H200).
+    const auto lit =
+        pixel_json("pixel_lit", std::string(kOverdraw) + " --set prepass=off --set shadows=off");
+    const auto alone = pixel_json("pixel_one", std::string(kOverdraw) +
+                                                   " --set prepass=off --set shadows=off "
+                                                   "--set overdraw_layers=1");
     ASSERT_EQ(alone["fragments"].size(), 1u);
     EXPECT_EQ(alone["fragments"][0]["material"], "layer_0");
-    EXPECT_EQ(json["final_color"], alone["final_color"]);
-    EXPECT_EQ(forward.back()["color"], alone["fragments"][0]["color"]);
+    EXPECT_EQ(lit["final_color"], alone["final_color"]);
+    EXPECT_EQ(of_pass(lit, "forward").back()["color"], alone["fragments"][0]["color"]);
 }
 
 TEST(Pixel, OverdrawWithPrepassPassesOnceInEachPass) {

@@ -92,4 +92,13 @@ size_t differing_pixels(const Png& a, const Png& b, int tolerance) {
     return n;
 }
 
+std::string selected_device_name() {
+    const ProcessResult r = run_depthscope("info");
+    const std::string marker = "[selected] device ";
+    const size_t at = r.out.find(marker);
+    if (r.exit_code != 0 || at == std::string::npos) return {};
+    const size_t name = r.out.find(": ", at) + 2;
+    return r.out.substr(name, r.out.find('\n', name) - name);
+}
+
 }  // namespace ds::test
