@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <set>
 #include <thread>
 
@@ -98,6 +99,8 @@ TEST_P(MalformedCorpus, RefusedWithOneErrorLine) {
         {"capture", "--scene", scene.string(), "--out", out.string(), "--size", "32x32"},
         w.dir().string() + "-io");
 
+    std::printf("%s: exit %d, %.2f s, peak %ld MiB: %s", c.name.c_str(), r.exit_code, r.seconds,
+                r.max_rss_kb / 1024, r.err.c_str());
     EXPECT_FALSE(r.timed_out) << "still running after " << kTimeLimitS << " s";
     EXPECT_LT(r.seconds, kTimeLimitS);
     EXPECT_LT(r.max_rss_kb, kMemoryLimitKb) << "peak " << r.max_rss_kb / 1024 << " MiB";
