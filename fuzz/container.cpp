@@ -28,7 +28,11 @@ Container unpack(const uint8_t* data, size_t size) {
         std::string bytes(in.substr(at, length));
         at = std::min(in.size(), at + length);
         if (first) {
-            if (!name.empty()) c.name = name;
+            // The name stands for a path: no NUL (the message would end there) and, as the
+            // importer shows paths, control characters as '?'.
+            if (!name.empty() && name.find('\0') == std::string::npos) c.name = name;
+            for (char& ch : c.name)
+                if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = '?';
             c.document = std::move(bytes);
             first = false;
         } else {

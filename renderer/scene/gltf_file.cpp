@@ -74,7 +74,7 @@ tinygltf::Model parse_checked(const std::string& bytes, const detail::FileSource
 }  // namespace
 
 Scene load_gltf(const fs::path& path) {
-    const std::string shown = path.string();
+    const std::string shown = detail::printable(path.string());
     tinygltf::Model model;
     try {
         const std::string bytes = detail::read_regular_file(path);
@@ -82,7 +82,7 @@ Scene load_gltf(const fs::path& path) {
     } catch (const InputError& e) {
         throw InputError(shown + ": " + one_line(e.what()));
     }
-    return import_model(model, path.stem().string(), shown);
+    return import_model(model, detail::printable(path.stem().string()), shown);
 }
 
 Scene load_gltf_memory(const std::string& bytes, const std::map<std::string, std::string>& files,
@@ -91,9 +91,10 @@ Scene load_gltf_memory(const std::string& bytes, const std::map<std::string, std
     try {
         model = parse_checked(bytes, detail::MemorySource(files));
     } catch (const InputError& e) {
-        throw InputError(name + ": " + one_line(e.what()));
+        throw InputError(detail::printable(name) + ": " + one_line(e.what()));
     }
-    return import_model(model, fs::path(name).stem().string(), name);
+    return import_model(model, detail::printable(fs::path(name).stem().string()),
+                        detail::printable(name));
 }
 
 }  // namespace ds::scene

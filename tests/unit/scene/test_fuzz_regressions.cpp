@@ -64,5 +64,22 @@ TEST(FuzzRegressions, MemoryLoadReadsNamedFilesOnly) {
     }
 }
 
+// A name (a path) with control characters stays one line: they show as '?' (found by the
+// fuzzer as a NUL that cut the message short; a newline in a path would split it).
+TEST(FuzzRegressions, ControlCharactersInTheNameShowAsQuestionMarks) {
+    try {
+        load_gltf_memory("{", {}, "a\nb\tc.gltf");
+        FAIL() << "loaded";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("a?b?c.gltf: byte ", 0), 0u) << e.what();
+    }
+    try {
+        load_gltf(std::string("/nonexistent/x\ny.gltf"));
+        FAIL() << "loaded";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "/nonexistent/x?y.gltf: no such file");
+    }
+}
+
 }  // namespace
 }  // namespace ds::scene
