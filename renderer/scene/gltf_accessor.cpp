@@ -4,16 +4,14 @@
 #include <cmath>
 #include <cstring>
 
+#include "renderer/scene/import_limits.h"
 #include "renderer/scene/import_util.h"
 
 namespace ds::scene::detail {
 namespace {
 
-// Caps on element counts keep a hostile file from asking for unbounded memory: 2^25 elements
-// is ~100x a large real mesh; an accessor without a buffer view (zeros, perhaps patched by a
-// sparse block) costs nothing in the file, so it gets a tighter cap.
-constexpr size_t kMaxElements = size_t{1} << 25;
-constexpr size_t kMaxZeroElements = size_t{1} << 22;
+using limits::kMaxAccessorElements;
+using limits::kMaxZeroAccessorElements;
 
 size_t component_size(int component_type) {
     switch (component_type) {
@@ -208,7 +206,8 @@ Span checked_span(const tinygltf::Model& model, int index, const std::string& us
         fail(name + ": invalid componentType " + std::to_string(accessor.componentType));
     if (span.components == 0) fail(name + ": invalid type " + std::to_string(accessor.type));
     if (accessor.count == 0) fail(name + ": count is 0");
-    const size_t max_count = accessor.bufferView >= 0 ? kMaxElements : kMaxZeroElements;
+    const size_t max_count =
+        accessor.bufferView >= 0 ? kMaxAccessorElements : kMaxZeroAccessorElements;
     if (accessor.count > max_count)
         fail(name + ": count " + std::to_string(accessor.count) + " is too large");
     span.element_size = element_size(accessor.componentType, accessor.type);
@@ -218,6 +217,13 @@ Span checked_span(const tinygltf::Model& model, int index, const std::string& us
         if (span.stride < span.element_size)
             fail(name + ": byteStride " + std::to_string(span.stride) +
                  " is smaller than the element size " + std::to_string(span.element_size));
+        // glTF 2.0 3.6.2.4: every component starts on a multiple of its size. The reads here
+        // would not mind (memcpy), but such a file is broken, and GPU-side users would.
+        const size_t start = view.byteOffset + accessor.byteOffset;
+        if (start % span.component_size != 0 || span.stride % span.component_size != 0)
+            fail(name + ": misaligned: byte " + std::to_string(start) + " of the buffer, stride " +
+                 std::to_string(span.stride) + ", for " + component_name(accessor.componentType) +
+                 " components");
         const size_t needed = (accessor.count - 1) * span.stride + span.element_size;
         if (!fits(accessor.byteOffset, needed, view.byteLength))
             fail(name + " out of bufferView range (offset " + std::to_string(accessor.byteOffset) +

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "renderer/scene/import_limits.h"
 #include "renderer/scene/import_util.h"
 
 namespace ds::scene::detail {
@@ -136,19 +137,20 @@ SceneWalk walk_scene(const tinygltf::Model& model, int scene_index) {
     struct Item {
         int node;
         glm::mat4 parent;
-        bool exit;  // leaving the node's subtree: it is no longer on the current path
+        bool exit;     // leaving the node's subtree: it is no longer on the current path
+        size_t depth;  // 1 for a scene root
     };
     std::vector<Item> stack;
     auto push_children = [&](const std::vector<int>& nodes, const glm::mat4& parent,
-                             const std::string& owner) {
+                             const std::string& owner, size_t depth) {
         for (auto it = nodes.rbegin(); it != nodes.rend(); ++it) {
             if (*it < 0 || static_cast<size_t>(*it) >= model.nodes.size())
                 fail(owner + ": node " + std::to_string(*it) + " out of range");
-            stack.push_back({*it, parent, false});
+            stack.push_back({*it, parent, false, depth});
         }
     };
     const tinygltf::Scene& scene = model.scenes[static_cast<size_t>(scene_index)];
-    push_children(scene.nodes, glm::mat4(1.0f), "scene " + std::to_string(scene_index));
+    push_children(scene.nodes, glm::mat4(1.0f), "scene " + std::to_string(scene_index), 1);
 
     SceneWalk walk;
     while (!stack.empty()) {
@@ -164,6 +166,9 @@ SceneWalk walk_scene(const tinygltf::Model& model, int scene_index) {
         if (state[index] == kDone)
             fail(what + " is reached twice (two parents, or listed twice in the scene)");
         state[index] = kOnPath;
+        if (item.depth > limits::kMaxHierarchyDepth)
+            fail(what + ": the node hierarchy is more than " +
+                 std::to_string(limits::kMaxHierarchyDepth) + " levels deep (the limit)");
 
         const tinygltf::Node& node = model.nodes[index];
         const glm::mat4 world = item.parent * locals[index];
@@ -173,8 +178,8 @@ SceneWalk walk_scene(const tinygltf::Model& model, int scene_index) {
         if (node.camera >= 0 && !walk.camera &&
             model.cameras[static_cast<size_t>(node.camera)].type == "perspective")
             walk.camera = place_camera(cameras[static_cast<size_t>(node.camera)], world);
-        stack.push_back({item.node, glm::mat4(1.0f), true});
-        push_children(node.children, world, what);
+        stack.push_back({item.node, glm::mat4(1.0f), true, item.depth});
+        push_children(node.children, world, what, item.depth + 1);
     }
     return walk;
 }

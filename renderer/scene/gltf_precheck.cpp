@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/scene/gltf_json_scan.h"
+#include "renderer/scene/gltf_precheck_refs.h"
 #include "renderer/scene/import_util.h"
 
 namespace ds::scene::detail {
@@ -15,9 +17,11 @@ namespace {
 
 using nlohmann::json;
 
-// Core glTF nests ~8 levels; anything far deeper is not glTF (and would cost stack).
+// Core glTF nests ~8 levels; anything far deeper is not glTF (and would cost stack). The byte
+// scan has already bounded the whole document; this bound is kept for the walk's own sake.
 constexpr int kMaxDepth = 64;
 constexpr uint32_t kGlbChunkJson = 0x4E4F534A;  // "JSON"
+constexpr size_t kGlbJsonOffset = 20;
 
 uint32_t read_u32(std::string_view bytes, size_t offset) {
     const auto* p = reinterpret_cast<const unsigned char*>(bytes.data() + offset);
@@ -33,10 +37,10 @@ std::string_view glb_json(std::string_view bytes) {
     const uint32_t length = read_u32(bytes, 12);
     if (read_u32(bytes, 16) != kGlbChunkJson) fail("GLB: the first chunk is not JSON");
     if (length > bytes.size() - 20) fail("GLB: JSON chunk runs past the end of the file");
-    return bytes.substr(20, length);
+    return bytes.substr(kGlbJsonOffset, length);
 }
 
-json parse_json(std::string_view text) {
+json parse_json(std::string_view text, size_t base) {
     // GLB pads the JSON chunk with spaces; some writers pad with NULs.
     while (!text.empty() && (text.back() == '\0' || text.back() == ' ')) text.remove_suffix(1);
     try {
@@ -45,6 +49,17 @@ json parse_json(std::string_view text) {
         std::string what = e.what();
         if (const size_t bracket = what.find("] "); what.starts_with("[") && bracket != what.npos)
             what = what.substr(bracket + 2);  // drop "[json.exception.parse_error.101] "
+        // A parse error knows its byte (1-based); a number out of range only its text.
+        size_t at = std::string::npos;
+        if (const auto* parse = dynamic_cast<const json::parse_error*>(&e); parse && parse->byte)
+            at = parse->byte - 1;
+        const size_t quote = what.find("parsing '");
+        if (at == std::string::npos && quote != std::string::npos) {
+            const size_t start = quote + 9;
+            at = text.find(what.substr(start, what.find('\'', start) - start));
+        }
+        if (at != std::string::npos)
+            fail("byte " + std::to_string(base + at) + ": invalid JSON: " + what);
         fail("invalid JSON: " + what);
     }
 }
@@ -217,12 +232,15 @@ void check_value(const json& value, std::string_view key, const std::string& pat
 
 }  // namespace
 
-void precheck_gltf(std::string_view bytes, bool binary) {
-    const json doc = parse_json(binary ? glb_json(bytes) : bytes);
+std::vector<FileRef> precheck_gltf(std::string_view bytes, bool binary) {
+    const std::string_view text = binary ? glb_json(bytes) : bytes;
+    scan_json_limits(text, binary ? kGlbJsonOffset : 0);
+    const json doc = parse_json(text, binary ? kGlbJsonOffset : 0);
     if (!doc.is_object()) fail("not a glTF file: the JSON top level is not an object");
     check_version(doc);
     check_required_extensions(doc);
     check_object(doc, "", "", 0);
+    return check_references(doc);
 }
 
 }  // namespace ds::scene::detail

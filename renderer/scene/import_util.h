@@ -41,6 +41,24 @@ inline std::string one_line(std::string_view text) {
     return line.substr(first, last - first + 1);
 }
 
+// A name for the start of a message ("PATH: WHAT"): a path may hold any byte but '/' and NUL,
+// so control characters become '?' to keep the message on one line.
+inline std::string printable(std::string_view text) {
+    std::string out(text);
+    for (char& c : out)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    return out;
+}
+
+// A value from the file, quoted for a message: one line, at most 200 characters shown (a uri
+// may be megabytes long).
+inline std::string quote_value(std::string_view text) {
+    constexpr size_t kShown = 200;
+    std::string line = one_line(text.substr(0, kShown + 1));
+    if (line.size() > kShown) line = line.substr(0, kShown) + "...";
+    return "\"" + line + "\"";
+}
+
 // Extensions that may appear in `extensionsRequired` although we ignore them: they only add
 // shading detail (the base PBR material stays a faithful approximation).
 inline bool is_ignorable_extension(std::string_view name) {

@@ -3,6 +3,7 @@
 // so both are validated alike: whatever reaches the renderer is in range and finite.
 // Every failure is an InputError "SOURCE: WHAT" on one line.
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include <tiny_gltf.h>
@@ -18,6 +19,14 @@ Scene import_model(const tinygltf::Model& model, std::string name, std::string s
 
 // Loads a .gltf or .glb file (detected by content, not by extension) and imports it.
 // Scene::name is the file's stem, Scene::source the path as given.
+// Every limit of import_limits.h applies; the file and each file it references must be a
+// regular file (checked before anything opens it).
 Scene load_gltf(const std::filesystem::path& path);
+
+// The same from memory: `bytes` is the .gltf text or the .glb container, `files` the files its
+// uris name (keys as written in the uris, decoded). `name` stands for the path in messages.
+// For tests and the fuzzer; nothing touches the disk.
+Scene load_gltf_memory(const std::string& bytes, const std::map<std::string, std::string>& files,
+                       const std::string& name);
 
 }  // namespace ds::scene

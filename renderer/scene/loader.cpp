@@ -5,6 +5,7 @@
 
 #include "renderer/common/error.h"
 #include "renderer/scene/builtin/builtin.h"
+#include "renderer/scene/import_util.h"
 #include "renderer/scene/importer.h"
 
 namespace ds::scene {
@@ -24,7 +25,7 @@ Scene load_scene(std::string_view name_or_path, const Settings& settings) {
                 hint += (hint.empty() ? " (built-in scenes: " : ", ") + info.name;
             if (!hint.empty()) hint += ")";
         }
-        throw InputError(name + ": no such file" + hint);
+        throw InputError(detail::printable(name) + ": no such file" + hint);
     }
     return load_gltf(path);
 }
