@@ -1,10 +1,12 @@
 // bench --soak SECONDS: one renderer left running for SECONDS over every built-in scene (and
-// --scene's file), sizes, msaa counts, prepass on / off and the diagnostics, sampling resident
-// memory; fails when it keeps growing after warm-up (the first cycle) or, with --validate, when
-// the validation layer reports anything (teardown's leak check at vkDestroyDevice included).
+// --scene's file), sizes, msaa counts, prepass on / off and the diagnostics (soak_cycle),
+// sampling resident memory at the end of each cycle; fails when it grew after warm-up (the
+// first cycle) beyond the tolerance (judge_rss) or, with --validate, when the validation layer
+// reports anything (teardown's leak check at vkDestroyDevice included).
 #include <chrono>
 #include <cstdio>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -65,7 +67,13 @@ struct SoakPlan {
     std::vector<Size> sizes;
     std::vector<int> msaa;
     std::vector<SoakProbe> probes;
-    std::vector<SoakStep> cycle;
+    size_t frames_per_cycle = 0;
+    // Warm-up: as many cycles as probes, after which every scene x msaa x prepass x probe
+    // combination has been rendered once (soak_cycle's rotation).
+    size_t warmup_cycles = 1;
+    std::vector<SoakStep> cycle(size_t index) const {
+        return soak_cycle(scenes.size(), sizes, msaa, probes, index);
+    }
 };
 
 void print_plan(const SoakPlan& plan, const Options& o, const DeviceInfo& device) {
@@ -76,10 +84,12 @@ void print_plan(const SoakPlan& plan, const Options& o, const DeviceInfo& device
     for (int n : plan.msaa) msaa += " " + std::to_string(n);
     for (SoakProbe p : plan.probes) probes += std::string(" ") + probe_name(p);
     std::printf(
-        "soak: %d s on %s%s; one cycle = %zu frames:\n  scenes:%s\n  sizes:%s\n  msaa:%s\n"
-        "  prepass: on off\n  diagnostics:%s\n",
-        o.soak_seconds, device.name.c_str(), o.validate ? ", validation on" : "", plan.cycle.size(),
-        scenes.c_str(), sizes.c_str(), msaa.c_str(), probes.c_str());
+        "soak: %d s on %s%s; one cycle = %zu frames, warm-up = the first %zu cycles (every "
+        "combination once):\n  scenes:%s\n  sizes:%s\n  msaa:%s\n  prepass: on off\n"
+        "  diagnostics:%s\n",
+        o.soak_seconds, device.name.c_str(), o.validate ? ", validation on" : "",
+        plan.frames_per_cycle, plan.warmup_cycles, scenes.c_str(), sizes.c_str(), msaa.c_str(),
+        probes.c_str());
     std::fflush(stdout);
 }
 
@@ -111,16 +121,17 @@ struct SoakRun {
     double seconds = 0;
 };
 
-// Whole cycles until `seconds` have passed (the last one runs to its end).
+// Whole cycles until `seconds` have passed (the last one runs to its end), and at least the
+// warm-up and one cycle more to judge by.
 SoakRun run_cycles(Renderer& renderer, const SoakPlan& plan, const Settings& base, int seconds) {
     SoakRun run;
     run.start_rss = resident_bytes();
     std::printf("soak: RSS %.1f MiB before the first frame\n", mib(run.start_rss));
     const Clock::time_point start = Clock::now();
     std::optional<size_t> loaded;
-    while (run.cycle_ends.empty() || seconds_since(start) < seconds) {
+    while (run.cycle_ends.size() <= plan.warmup_cycles || seconds_since(start) < seconds) {
         const double cycle_start = seconds_since(start);
-        for (const SoakStep& step : plan.cycle) {
+        for (const SoakStep& step : plan.cycle(run.cycle_ends.size())) {
             if (loaded != step.scene) renderer.set_scene(plan.scenes[step.scene]);
             loaded = step.scene;
             render_step(renderer, plan.scenes[step.scene], base, step);
@@ -131,8 +142,8 @@ SoakRun run_cycles(Renderer& renderer, const SoakPlan& plan, const Settings& bas
         std::printf(
             "soak: cycle %zu%s: %zu frames in %.1f s (%.0f s, %llu frames in all), RSS "
             "%.1f MiB\n",
-            run.cycle_ends.size(), run.cycle_ends.size() == 1 ? " (warm-up)" : "",
-            plan.cycle.size(), s.seconds - cycle_start, s.seconds,
+            run.cycle_ends.size(), run.cycle_ends.size() <= plan.warmup_cycles ? " (warm-up)" : "",
+            plan.frames_per_cycle, s.seconds - cycle_start, s.seconds,
             static_cast<unsigned long long>(run.frames), mib(s.bytes));
         std::fflush(stdout);
     }
@@ -140,13 +151,14 @@ SoakRun run_cycles(Renderer& renderer, const SoakPlan& plan, const Settings& bas
     return run;
 }
 
-void print_verdict(const RssVerdict& v, const RssTolerance& tol, const SoakRun& run) {
+void print_verdict(const RssVerdict& v, const RssTolerance& tol, const SoakRun& run,
+                   const SoakPlan& plan) {
     std::printf("\nsoak: %.1f s, %zu cycles, %llu frames\n", run.seconds, run.cycle_ends.size(),
                 static_cast<unsigned long long>(run.frames));
     std::printf("  %-10s %9.1f MiB   (renderer and scenes ready, before the first frame)\n",
                 "RSS start", mib(v.start));
-    std::printf("  %-10s %9.1f MiB   (after cycle 1: every combination once)\n", "warm-up",
-                mib(v.warm));
+    std::printf("  %-10s %9.1f MiB   (after cycle %zu: every combination once)\n", "warm-up",
+                mib(v.warm), plan.warmup_cycles);
     std::printf("  %-10s %9.1f MiB   (after cycle %zu)\n", "end", mib(v.end),
                 run.cycle_ends.size());
     std::printf(
@@ -163,7 +175,8 @@ nlohmann::json soak_json(const RssVerdict& v, const RssTolerance& tol, const Soa
     for (const auto& s : plan.scenes) scenes.push_back(s.name);
     return {{"seconds", run.seconds},
             {"frames", run.frames},
-            {"frames_per_cycle", plan.cycle.size()},
+            {"frames_per_cycle", plan.frames_per_cycle},
+            {"warmup_cycles", plan.warmup_cycles},
             {"scenes", scenes},
             {"rss_mib", {{"start", mib(v.start)}, {"warm", mib(v.warm)}, {"end", mib(v.end)}}},
             {"growth_mib", v.growth_mib},
@@ -190,13 +203,15 @@ int run_soak(const Options& o) {
     plan.sizes = soak_sizes(o.size);
     plan.msaa = device.msaa_counts;
     plan.probes = soak_probes(device);
-    plan.cycle = soak_cycle(plan.scenes.size(), plan.sizes, plan.msaa, plan.probes);
+    plan.frames_per_cycle = plan.cycle(0).size();
+    plan.warmup_cycles = plan.probes.size();
     print_plan(plan, o, device);
 
     const SoakRun run = run_cycles(renderer, plan, base, o.soak_seconds);
     const RssTolerance tolerance;
-    const RssVerdict verdict = judge_rss(run.start_rss, run.cycle_ends, tolerance);
-    print_verdict(verdict, tolerance, run);
+    const RssVerdict verdict = judge_rss(
+        run.start_rss, std::span(run.cycle_ends).subspan(plan.warmup_cycles - 1), tolerance);
+    print_verdict(verdict, tolerance, run, plan);
     const int validation = validation_exit_code(renderer);  // after teardown's leak check
     if (!o.out.empty()) {
         nlohmann::json out = soak_json(verdict, tolerance, run, plan);

@@ -40,18 +40,19 @@ std::vector<Assignment> probe_settings(SoakProbe probe) {
 
 std::vector<SoakStep> soak_cycle(size_t scenes, std::span<const Size> sizes,
                                  std::span<const int> msaa_counts,
-                                 std::span<const SoakProbe> probes) {
+                                 std::span<const SoakProbe> probes, size_t cycle) {
     std::vector<SoakStep> steps;
     for (size_t scene = 0; scene < scenes; ++scene) {
-        size_t k = 0;
+        size_t k = scene;
         for (const int msaa : msaa_counts)
-            for (const bool prepass : {true, false})
-                for (const SoakProbe probe : probes)
-                    steps.push_back({.scene = scene,
-                                     .size = sizes[k++ % sizes.size()],
-                                     .msaa = msaa,
-                                     .prepass = prepass,
-                                     .probe = probe});
+            for (const bool prepass : {true, false}) {
+                steps.push_back({.scene = scene,
+                                 .size = sizes[k % sizes.size()],
+                                 .msaa = msaa,
+                                 .prepass = prepass,
+                                 .probe = probes[(k + cycle) % probes.size()]});
+                ++k;
+            }
     }
     return steps;
 }

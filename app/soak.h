@@ -32,12 +32,14 @@ struct SoakStep {
     SoakProbe probe = SoakProbe::None;
 };
 
-// One cycle: every scene x msaa x prepass x probe once, scene-major (each scene is uploaded
-// once per cycle); the size alternates within a scene, so every cycle is the same sequence and
-// cycle ends are comparable.
+// Cycle `cycle` (0 first): each scene once, drawn at every msaa count with the prepass on
+// and off; the sizes and the probes rotate over those frames, shifted by one per scene, so
+// that with at least as many scenes as probes every cycle renders each msaa x prepass x probe
+// combination (and every scene, size and probe) once; the probes shift by one per cycle too,
+// so every scene meets every probe over as many cycles as there are probes.
 std::vector<SoakStep> soak_cycle(size_t scenes, std::span<const Size> sizes,
                                  std::span<const int> msaa_counts,
-                                 std::span<const SoakProbe> probes);
+                                 std::span<const SoakProbe> probes, size_t cycle);
 
 // Resident memory of this process in bytes (/proc/self/statm); throws ds::Error without it.
 uint64_t resident_bytes();

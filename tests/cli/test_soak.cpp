@@ -2,6 +2,8 @@
 // diagnostics, validation on: RSS flat after warm-up, no validation message, teardown's leak
 // check included), its usage errors, and the rules it judges resident memory by.
 #include <array>
+#include <set>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -68,18 +70,32 @@ TEST(SoakRules, GrowthCountsOnlyAboveBothTolerances) {
     EXPECT_FALSE(ds::app::judge_rss(0, shrinks, tolerance).growing);
 }
 
-TEST(SoakRules, OneCycleEveryCombinationOnceSceneMajor) {
-    const std::array<ds::app::Size, 2> sizes{{{64, 36}, {33, 17}}};
+TEST(SoakRules, EachCycleRendersEveryMsaaPrepassProbeCombinationOnce) {
+    using ds::app::SoakProbe;
+    const std::array<ds::app::Size, 3> sizes{{{64, 36}, {32, 18}, {25, 13}}};
     const std::array<int, 2> msaa{1, 4};
-    const std::array<ds::app::SoakProbe, 3> probes{
-        ds::app::SoakProbe::None, ds::app::SoakProbe::Counts, ds::app::SoakProbe::Pixel};
-    const auto cycle = ds::app::soak_cycle(3, sizes, msaa, probes);
-    ASSERT_EQ(cycle.size(), 3u * 2u * 2u * 3u);
-    for (size_t i = 1; i < cycle.size(); ++i) EXPECT_LE(cycle[i - 1].scene, cycle[i].scene);
-    size_t small = 0;
-    for (const auto& step : cycle) small += step.size.width == 33;
-    EXPECT_EQ(small, cycle.size() / 2) << "sizes alternate";
-    EXPECT_EQ(ds::app::probe_settings(ds::app::SoakProbe::Counts).size(), 2u);
+    const std::array<SoakProbe, 4> probes{SoakProbe::None, SoakProbe::Counts, SoakProbe::Pixel,
+                                          SoakProbe::ZFight};
+    std::set<std::tuple<size_t, int, bool, SoakProbe>> over_cycles;
+    for (size_t c = 0; c < probes.size(); ++c) {
+        const auto cycle = ds::app::soak_cycle(5, sizes, msaa, probes, c);
+        ASSERT_EQ(cycle.size(), 5u * 2u * 2u);
+        std::set<std::tuple<int, bool, SoakProbe>> combinations;
+        std::set<uint32_t> widths;
+        for (size_t i = 0; i < cycle.size(); ++i) {
+            if (i > 0) {
+                EXPECT_LE(cycle[i - 1].scene, cycle[i].scene) << "each scene once";
+            }
+            combinations.insert({cycle[i].msaa, cycle[i].prepass, cycle[i].probe});
+            widths.insert(cycle[i].size.width);
+            over_cycles.insert({cycle[i].scene, cycle[i].msaa, cycle[i].prepass, cycle[i].probe});
+        }
+        EXPECT_EQ(combinations.size(), 2u * 2u * probes.size()) << "cycle " << c;
+        EXPECT_EQ(widths.size(), sizes.size());
+    }
+    EXPECT_EQ(over_cycles.size(), 5u * 2u * 2u * probes.size())
+        << "every scene x msaa x prepass x probe once over as many cycles as probes";
+    EXPECT_EQ(ds::app::probe_settings(SoakProbe::Counts).size(), 2u);
 }
 
 TEST(SoakRules, ResidentMemoryIsReadable) {

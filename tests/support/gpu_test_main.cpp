@@ -3,8 +3,8 @@
 // one the binary FAILS, saying no usable Vulkan device was found and why (a missing ICD, or
 // vkCreateInstance's VK_ERROR_INCOMPATIBLE_DRIVER from a driver that did not load), so a
 // broken driver install never looks like a passing suite. DEPTHSCOPE_ALLOW_NO_DEVICE=1 turns
-// that into a skip of every test, with the same reason. (Without this, a fixture's throwing
-// SetUpTestSuite is reported by GoogleTest as its tests being skipped.)
+// that into a skip, with the same reason. (Left to GoogleTest, a throwing SetUpTestSuite or a
+// failing global environment is reported as every test skipped.)
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -32,27 +32,29 @@ bool skipping_allowed() {
     return env && std::strcmp(env, "1") == 0;
 }
 
-class VulkanDevice : public ::testing::Environment {
-  public:
-    void SetUp() override {
-        const std::string why = probe_device();
-        if (why.empty()) return;
-        const std::string message = "no usable Vulkan device found: " + why;
-        if (skipping_allowed()) {
-            // GoogleTest prints a global skip without its [  SKIPPED ] tag; ctest's skip
-            // pattern (gtest_discover_tests) needs the tag to report the test as skipped.
-            std::printf("[  SKIPPED ] %s (DEPTHSCOPE_ALLOW_NO_DEVICE=1)\n", message.c_str());
-            GTEST_SKIP() << message;
-        }
-        GTEST_FAIL() << message
-                     << " (this test needs one; DEPTHSCOPE_ALLOW_NO_DEVICE=1 skips instead)";
-    }
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
-    ::testing::AddGlobalTestEnvironment(new VulkanDevice);  // GoogleTest owns it
+    // Listing the tests (gtest_discover_tests) needs no device.
+    if (!GTEST_FLAG_GET(list_tests)) {
+        const std::string why = probe_device();
+        if (!why.empty()) {
+            // Before any test: GoogleTest marks every test skipped after a failing global
+            // set-up (and ctest reports a test whose output says [  SKIPPED ] as skipped).
+            if (skipping_allowed()) {
+                std::printf(
+                    "[  SKIPPED ] no usable Vulkan device found: %s "
+                    "(DEPTHSCOPE_ALLOW_NO_DEVICE=1)\n",
+                    why.c_str());
+                return 0;
+            }
+            std::printf(
+                "[  FAILED  ] no usable Vulkan device found: %s (this binary needs one; "
+                "DEPTHSCOPE_ALLOW_NO_DEVICE=1 skips instead)\n",
+                why.c_str());
+            return 1;
+        }
+    }
     return RUN_ALL_TESTS();
 }

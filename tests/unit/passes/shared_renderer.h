@@ -58,7 +58,9 @@ class SharedRenderer : public ::testing::Test {
         if (!setup_error_.empty()) GTEST_FAIL() << "the suite's set-up failed: " << setup_error_;
     }
     void TearDown() override {
-        if (renderer_) EXPECT_EQ(renderer_->validation_message_count(), 0u);
+        if (renderer_) {
+            EXPECT_EQ(renderer_->validation_message_count(), 0u);
+        }
     }
 
     static void create_renderer() {
