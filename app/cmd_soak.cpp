@@ -137,14 +137,14 @@ SoakRun run_cycles(Renderer& renderer, const SoakPlan& plan, const Settings& bas
             render_step(renderer, plan.scenes[step.scene], base, step);
             ++run.frames;
         }
-        run.cycle_ends.push_back({seconds_since(start), resident_bytes()});
+        run.cycle_ends.push_back({seconds_since(start), resident_bytes(), heap_in_use_bytes()});
         const RssSample& s = run.cycle_ends.back();
         std::printf(
             "soak: cycle %zu%s: %zu frames in %.1f s (%.0f s, %llu frames in all), RSS "
-            "%.1f MiB\n",
+            "%.1f MiB, heap in use %.1f MiB\n",
             run.cycle_ends.size(), run.cycle_ends.size() <= plan.warmup_cycles ? " (warm-up)" : "",
             plan.frames_per_cycle, s.seconds - cycle_start, s.seconds,
-            static_cast<unsigned long long>(run.frames), mib(s.bytes));
+            static_cast<unsigned long long>(run.frames), mib(s.bytes), mib(s.heap_bytes));
         std::fflush(stdout);
     }
     run.seconds = seconds_since(start);
@@ -170,7 +170,10 @@ void print_verdict(const RssVerdict& v, const RssTolerance& tol, const SoakRun& 
 nlohmann::json soak_json(const RssVerdict& v, const RssTolerance& tol, const SoakRun& run,
                          const SoakPlan& plan) {
     nlohmann::json cycles = nlohmann::json::array();
-    for (const RssSample& s : run.cycle_ends) cycles.push_back({s.seconds, mib(s.bytes)});
+    for (const RssSample& s : run.cycle_ends)
+        cycles.push_back({{"seconds", s.seconds},
+                          {"rss_mib", mib(s.bytes)},
+                          {"heap_in_use_mib", mib(s.heap_bytes)}});
     nlohmann::json scenes = nlohmann::json::array();
     for (const auto& s : plan.scenes) scenes.push_back(s.name);
     return {{"seconds", run.seconds},

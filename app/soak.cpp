@@ -1,5 +1,6 @@
 #include "app/soak.h"
 
+#include <malloc.h>
 #include <unistd.h>
 #include <cstdio>
 
@@ -64,6 +65,11 @@ uint64_t resident_bytes() {
     if (f) std::fclose(f);
     if (!ok) throw Error("soak: cannot read /proc/self/statm (resident memory)");
     return resident * uint64_t(sysconf(_SC_PAGESIZE));
+}
+
+uint64_t heap_in_use_bytes() {
+    const struct mallinfo2 info = mallinfo2();
+    return uint64_t(info.uordblks) + uint64_t(info.hblkhd);
 }
 
 double mib(uint64_t bytes) {

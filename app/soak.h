@@ -44,10 +44,15 @@ std::vector<SoakStep> soak_cycle(size_t scenes, std::span<const Size> sizes,
 // Resident memory of this process in bytes (/proc/self/statm); throws ds::Error without it.
 uint64_t resident_bytes();
 
+// Bytes malloc has handed out and not had back (glibc's mallinfo2: uordblks + hblkhd): beside
+// RSS it tells a leak (this grows) from fragmentation or driver mappings (only RSS does).
+uint64_t heap_in_use_bytes();
+
 // RSS at the end of a cycle.
 struct RssSample {
     double seconds = 0;  // since the soak's first frame
     uint64_t bytes = 0;
+    uint64_t heap_bytes = 0;  // heap_in_use_bytes() then
 };
 
 // The tolerance: growth from the end of warm-up to the end counts only when it is above both.

@@ -22,7 +22,7 @@ constexpr uint64_t kMiB = 1 << 20;
 TEST(Soak, SixtySecondsKeepResidentMemoryFlatWithoutValidationMessages) {
     const auto json_path = ds::test::fresh_dir("soak") / "soak.json";
     const auto r = run_depthscope(
-        "bench --soak 60 --validate --size 256x144 --json " + json_path.string(), 600);
+        "bench --soak 60 --validate --size 160x90 --json " + json_path.string(), 600);
     std::printf("%s", r.out.c_str());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
