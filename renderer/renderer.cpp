@@ -122,7 +122,8 @@ struct Renderer::Impl {
     void check_memory(const FrameMemory& frame, const FrameShape& shape) const;
     void begin(VkExtent2D size, vk::Frame& frame);
     uint64_t record(Slot& slot, VkCommandBuffer cmd);
-    passes::FrameResources build_graph(const passes::FrameInputs& in, Slot& slot);
+    passes::FrameResources build_graph(const passes::FrameInputs& in, Slot& slot,
+                                       vk::DestroyList& retired);
     std::vector<std::string> skipped(const passes::FrameInputs& in) const;
     void write_uniforms(Slot& slot, const scene::Camera& camera, const passes::FrameInputs& in,
                         const passes::FrameResources& res);
@@ -215,7 +216,10 @@ Renderer::Impl::~Impl() {
     context.reset();  // device, messenger, instance last
 }
 
-passes::FrameResources Renderer::Impl::build_graph(const passes::FrameInputs& in, Slot& slot) {
+// The frame declared, its memory estimate checked, then the targets made for it: a refused
+// frame is never submitted, and the next begin_frame() starts over.
+passes::FrameResources Renderer::Impl::build_graph(const passes::FrameInputs& in, Slot& slot,
+                                                   vk::DestroyList& retired) {
     passes::FrameResources res;
     graph::ExternalBuffer uniforms;
     uniforms.buffer = slot.uniforms.handle();
@@ -235,6 +239,10 @@ passes::FrameResources Renderer::Impl::build_graph(const passes::FrameInputs& in
         pass->add(*graph, in, res);
         added.push_back({pass.get(), first, graph->passes().size()});
     }
+    const VkExtent2D size = graph->output_extent();
+    check_memory(frame_memory(graph->resources()), shape(size, in.options));
+    targets->ensure(size, in.options, retired);
+    targets->bind(*graph, res);
     return res;
 }
 
@@ -444,8 +452,7 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
     const bool inspect_final = !inspect.empty() && inspect[0].resource == kFinalImageName;
     if (inspect_final && read_back == ReadBack::No) read_back = ReadBack::Color;
     // Before anything is allocated: the size here, the frame's memory once it is declared.
-    const FrameShape shape = r.shape({width, height}, options);
-    check_frame_size(r.context->report().limits, shape);
+    check_frame_size(r.context->report().limits, r.shape({width, height}, options));
 
     const auto start = std::chrono::steady_clock::now();
     vk::Frame& frame = r.frames->begin();
@@ -460,12 +467,7 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
                                  .read_back = read_back,
                                  .inspect = {inspect.begin(), inspect.end()},
                                  .pixel = pixel};
-    const passes::FrameResources res = r.build_graph(in, slot);
-    // Before the targets and the graph's images are made: a refused frame is never submitted,
-    // and the next begin_frame() starts over.
-    r.check_memory(frame_memory(r.graph->resources()), shape);
-    r.targets->ensure({width, height}, options, frame.retired);
-    r.targets->bind(*r.graph, res);
+    const passes::FrameResources res = r.build_graph(in, slot, frame.retired);
     r.write_uniforms(slot, camera, in, res);
     r.graph->compile();
     const uint64_t graph_frame = r.record(slot, frame.cmd);
