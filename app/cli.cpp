@@ -163,6 +163,14 @@ CLI::App* add_bench_command(CLI::App& app, Options& o, std::optional<std::string
                     "the prepass advisor: each combination with prepass=on and off (counted "
                     "once, timed --frames times); overdraw, costs, predicted and measured "
                     "change, verdict");
+    bench
+        ->add_option("--soak", o.soak_seconds,
+                     "soak test: render every built-in scene (and --scene's file) at --size and "
+                     "two smaller sizes, every msaa count the device has, prepass on and off and "
+                     "each diagnostic, in cycles, for SECONDS (at least the warm-up and one cycle "
+                     "more); fails when resident memory grew after warm-up")
+        ->type_name("SECONDS")
+        ->check(CLI::Range(1, 7 * 24 * 3600));
     return bench;
 }
 

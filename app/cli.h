@@ -34,7 +34,8 @@ struct Options {
     int bench_frames = 20;
     int bench_warmup = 5;
     std::vector<std::string> matrix;  // "name=v1,v2"
-    bool advise = false;  // bench / capture --advise: the prepass advisor (prepass on and off)
+    bool advise = false;   // bench / capture --advise: the prepass advisor (prepass on and off)
+    int soak_seconds = 0;  // bench --soak SECONDS (0: no soak)
     // pixel: --at X,Y (checked against --size when the command runs); --json goes to `out`
     uint32_t at_x = 0, at_y = 0;
 };

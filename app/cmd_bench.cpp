@@ -251,6 +251,7 @@ nlohmann::json advise_combination(const Options& o, Renderer& renderer, const sc
 }  // namespace
 
 int run_bench(const Options& o) {
+    if (o.soak_seconds > 0) return run_soak(o);  // cmd_soak.cpp
     Settings base;
     for (const auto& assignment : o.sets) base.apply(assignment);
     const auto combinations = expand_matrix(o.matrix);
@@ -285,6 +286,7 @@ int run_bench(const Options& o) {
         runs_out = runs_json(runs, base);
     }
     if (!o.out.empty()) write_results(o, scene, runs_out);
+    ui.reset();  // it draws on the renderer's device: before the renderer's shutdown
     // No count line: bench never printed one (the messages themselves came as they were seen).
     return validation_exit_code(renderer, /*print_count=*/false);
 }

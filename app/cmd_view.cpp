@@ -2,6 +2,7 @@
 // offscreen forms of the same UI, `capture --ui` and `bench --ui` (see cmd_capture/cmd_bench).
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -161,28 +162,31 @@ int run_view(const Options& o) {
     scene::Scene scene = load_start_scene(o, start);
 
     Renderer renderer(window_renderer_options(o));
-    // After the renderer, so it goes first: the swapchain and surface before the device.
-    ui::Window window(o.window.width, o.window.height, "depthscope — " + scene.name);
-    window.attach(renderer.context());
+    // After the renderer, and destroyed before its shutdown: the swapchain and surface before
+    // the device.
+    auto window =
+        std::make_unique<ui::Window>(o.window.width, o.window.height, "depthscope — " + scene.name);
+    window->attach(renderer.context());
     print_session(scene, start.settings);
 
     ImGuiContext* imgui = ImGui::CreateContext();
     const bool persist = prepare_config_dir(files.dir);
     ImGui::GetIO().IniFilename = persist ? files.ini_file.c_str() : nullptr;
     ui::apply_style();
-    ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
+    ImGui_ImplGlfw_InitForVulkan(window->handle(), true);
     {
-        ui::Presenter presenter(renderer.context(), window.format());
+        ui::Presenter presenter(renderer.context(), window->format());
         ui::Inspector inspector(renderer, start.settings, std::move(scene), {});
-        const uint64_t frames = run_frames(o, window, presenter, inspector);
+        const uint64_t frames = run_frames(o, *window, presenter, inspector);
         presenter.wait_idle();
         if (persist) save_session(files, inspector);
-        const VkExtent2D last = window.framebuffer_size();
+        const VkExtent2D last = window->framebuffer_size();
         std::printf("depthscope: %llu frames (window %ux%u)\n",
                     static_cast<unsigned long long>(frames), last.width, last.height);
     }
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext(imgui);
+    window.reset();
     return validation_exit_code(renderer);
 }
 

@@ -4,7 +4,8 @@
 
 namespace ds::app {
 
-int validation_exit_code(const Renderer& renderer, bool print_count) {
+int validation_exit_code(Renderer& renderer, bool print_count) {
+    renderer.shutdown();
     const uint64_t messages = renderer.validation_message_count();
     if (messages == 0) return 0;
     if (print_count)

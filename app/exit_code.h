@@ -4,8 +4,10 @@
 
 namespace ds::app {
 
-// 3 when the renderer saw validation messages, else 0. The messages were printed as they came;
-// `print_count` adds "depthscope: N validation message(s)" on stderr after them.
-int validation_exit_code(const Renderer& renderer, bool print_count = true);
+// Shuts the renderer down first (Renderer::shutdown(): the layer's leak report at
+// vkDestroyDevice counts too), so nothing may use it afterwards; then 3 when it saw validation
+// messages, else 0. The messages were printed as they came; `print_count` adds
+// "depthscope: N validation message(s)" on stderr after them.
+int validation_exit_code(Renderer& renderer, bool print_count = true);
 
 }  // namespace ds::app

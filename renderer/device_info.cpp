@@ -34,10 +34,20 @@ std::string fragment_statistic_meaning(VkDriverId driver) {
 
 DeviceInfo device_info(const Renderer& renderer) {
     const vk::DeviceReport& d = renderer.device_report();
-    return {.name = d.candidate.name,
-            .driver = d.driver_name + " " + d.driver_info,
-            .api_version = vk::version_string(d.candidate.api_version),
-            .fragment_statistic = fragment_statistic_meaning(d.driver_id)};
+    DeviceInfo info;
+    info.name = d.candidate.name;
+    info.driver = d.driver_name + " " + d.driver_info;
+    info.api_version = vk::version_string(d.candidate.api_version);
+    info.fragment_statistic = fragment_statistic_meaning(d.driver_id);
+    // As Renderer::render checks them: colour and depth attachments both.
+    const VkSampleCountFlags samples = d.color_sample_counts & d.depth_sample_counts;
+    for (int n = 1; n <= 8; n *= 2)
+        if (samples & VkSampleCountFlags(n)) info.msaa_counts.push_back(n);
+    info.fragment_counts = d.fragment_stores_and_atomics;
+    info.draw_counts =
+        d.fragment_stores_and_atomics && d.occlusion_query_precise && d.geometry_shader;
+    info.surface_ids = d.geometry_shader;
+    return info;
 }
 
 std::vector<ListedDevice> list_devices(const std::string& request) {

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "renderer/common/error.h"
+#include "renderer/frame/frame_memory.h"
 #include "renderer/frame/frame_passes.h"
 #include "renderer/frame/frame_targets.h"
 #include "renderer/frame/frame_uniforms.h"
@@ -117,9 +118,12 @@ struct Renderer::Impl {
     explicit Impl(const RendererOptions& options);
     ~Impl();
     passes::FrameOptions options_for(const Settings& settings);
-    void begin(VkExtent2D size, const passes::FrameOptions& options, vk::Frame& frame);
+    FrameShape shape(VkExtent2D size, const passes::FrameOptions& options) const;
+    void check_memory(const FrameMemory& frame, const FrameShape& shape) const;
+    void begin(VkExtent2D size, vk::Frame& frame);
     uint64_t record(Slot& slot, VkCommandBuffer cmd);
-    passes::FrameResources build_graph(const passes::FrameInputs& in, Slot& slot);
+    passes::FrameResources build_graph(const passes::FrameInputs& in, Slot& slot,
+                                       vk::DestroyList& retired);
     std::vector<std::string> skipped(const passes::FrameInputs& in) const;
     void write_uniforms(Slot& slot, const scene::Camera& camera, const passes::FrameInputs& in,
                         const passes::FrameResources& res);
@@ -141,6 +145,7 @@ struct Renderer::Impl {
     std::vector<ResourceSummary> resources;                  // this frame's, before read-back
     std::unique_ptr<FrameTargets> targets;
     std::unique_ptr<GpuScene> scene;
+    uint64_t scene_bytes = 0;  // device memory set_scene() allocated (the memory check's share)
     scene::DirectionalLight sun;
     scene::Bounds scene_bounds;
     // Temporal state: last frame's view-projection, unless the next frame is a cut.
@@ -211,7 +216,10 @@ Renderer::Impl::~Impl() {
     context.reset();  // device, messenger, instance last
 }
 
-passes::FrameResources Renderer::Impl::build_graph(const passes::FrameInputs& in, Slot& slot) {
+// The frame declared, its memory estimate checked, then the targets made for it: a refused
+// frame is never submitted, and the next begin_frame() starts over.
+passes::FrameResources Renderer::Impl::build_graph(const passes::FrameInputs& in, Slot& slot,
+                                                   vk::DestroyList& retired) {
     passes::FrameResources res;
     graph::ExternalBuffer uniforms;
     uniforms.buffer = slot.uniforms.handle();
@@ -231,6 +239,10 @@ passes::FrameResources Renderer::Impl::build_graph(const passes::FrameInputs& in
         pass->add(*graph, in, res);
         added.push_back({pass.get(), first, graph->passes().size()});
     }
+    const VkExtent2D size = graph->output_extent();
+    check_memory(frame_memory(graph->resources()), shape(size, in.options));
+    targets->ensure(size, in.options, retired);
+    targets->bind(*graph, res);
     return res;
 }
 
@@ -291,54 +303,68 @@ void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::Fra
     if (result.msaa.resolved_depth.empty()) result.msaa.depth_samples.clear();
 }
 
-Renderer::Renderer(const RendererOptions& options) : impl_(std::make_unique<Impl>(options)) {}
+Renderer::Renderer(const RendererOptions& options)
+    : impl_(std::make_unique<Impl>(options)), validation_(impl_->context->validation_counter()) {}
+
+void Renderer::shutdown() {
+    impl_.reset();
+}
+
+Renderer::Impl& Renderer::live() const {
+    if (!impl_) throw Error("renderer: used after shutdown()");
+    return *impl_;
+}
 
 Renderer::~Renderer() = default;
 
 const vk::DeviceReport& Renderer::device_report() const {
-    return impl_->context->report();
+    return live().context->report();
 }
 
 std::string Renderer::graph_dump() const {
-    return impl_->graph->dump();
+    return live().graph->dump();
 }
 
 std::optional<SurfaceInfo> Renderer::describe_surface(uint32_t id) const {
-    if (!impl_->scene) return std::nullopt;
-    const SurfaceTable& table = impl_->scene->surfaces();
+    const Impl& r = live();
+    if (!r.scene) return std::nullopt;
+    const SurfaceTable& table = r.scene->surfaces();
     const std::optional<SurfaceRef> ref = table.find(id);
     if (!ref) return std::nullopt;
     return SurfaceInfo{table.name(ref->instance), ref->instance, ref->triangle};
 }
 
 uint64_t Renderer::validation_message_count() const {
-    return impl_->context->validation_message_count();
+    return validation_->load();
 }
 
 VkInstance Renderer::instance() const {
-    return impl_->context->instance();
+    return live().context->instance();
 }
 
 void Renderer::camera_cut() {
-    impl_->cut = true;
+    live().cut = true;
 }
 
 // Fail-safe per pass: a shader error stops here and leaves the later passes as they were.
 void Renderer::rebuild_pipelines() {
-    for (const std::unique_ptr<passes::FramePass>& pass : impl_->passes)
-        pass->rebuild_pipelines(impl_->frames->retire_list());
+    Impl& r = live();
+    for (const std::unique_ptr<passes::FramePass>& pass : r.passes)
+        pass->rebuild_pipelines(r.frames->retire_list());
 }
 
 vk::Context& Renderer::context() {
-    return *impl_->context;
+    return *live().context;
 }
 
 void Renderer::set_scene(const scene::Scene& scene) {
-    Impl& r = *impl_;
+    Impl& r = live();
     // Descriptor sets that in-flight frames use are rewritten below: let them finish first.
     r.context->wait_idle();
     r.scene.reset();
+    const uint64_t before = r.context->allocator().stats().used_bytes;
     r.scene = std::make_unique<GpuScene>(*r.context, scene, r.material_layout.handle());
+    r.scene_bytes = r.context->allocator().stats().used_bytes - before;
     r.sun = scene.sun;
     r.scene_bounds = scene.bounds;
     r.cut = true;
@@ -366,11 +392,22 @@ passes::FrameOptions Renderer::Impl::options_for(const Settings& settings) {
     return options;
 }
 
-// Targets, graph and read-back ready for a frame of `size` (a new size is a camera cut).
-void Renderer::Impl::begin(VkExtent2D size, const passes::FrameOptions& options, vk::Frame& frame) {
+FrameShape Renderer::Impl::shape(VkExtent2D size, const passes::FrameOptions& options) const {
+    return {context->report().candidate.name, size, options.samples};
+}
+
+// The budget is asked for each time: VK_EXT_memory_budget's changes with other processes.
+void Renderer::Impl::check_memory(const FrameMemory& frame, const FrameShape& shape) const {
+    const vk::DeviceLimits& limits = context->report().limits;
+    check_frame_memory(frame, scene_bytes, vk::heap_budget(context->physical_device(), limits),
+                       limits, shape);
+}
+
+// Graph and read-back ready for a frame of `size` (a new size is a camera cut); the targets
+// come once the declared frame's memory estimate passed.
+void Renderer::Impl::begin(VkExtent2D size, vk::Frame& frame) {
     if (size.width != last_size.width || size.height != last_size.height) cut = true;
     last_size = size;
-    targets->ensure(size, options, frame.retired);
     if (cut) graph->invalidate_history();
     graph->begin_frame(size, frame.retired);  // a new size invalidates history too
     readback->begin_frame(frame.retired);
@@ -398,7 +435,7 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
                              uint32_t width, uint32_t height, ReadBack read_back,
                              std::span<const InspectRequest> inspect,
                              const std::optional<PixelQuery>& pixel) {
-    Impl& r = *impl_;
+    Impl& r = live();
     if (!r.scene) throw Error("render: no scene (call set_scene first)");
     if (width == 0 || height == 0)
         throw Error("render: size " + std::to_string(width) + "x" + std::to_string(height) +
@@ -414,11 +451,13 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
     // "final" is read back as it is (sRGB-encoded); any other image through the inspect pass.
     const bool inspect_final = !inspect.empty() && inspect[0].resource == kFinalImageName;
     if (inspect_final && read_back == ReadBack::No) read_back = ReadBack::Color;
+    // Before anything is allocated: the size here, the frame's memory once it is declared.
+    check_frame_size(r.context->report().limits, r.shape({width, height}, options));
 
     const auto start = std::chrono::steady_clock::now();
     vk::Frame& frame = r.frames->begin();
     Impl::Slot& slot = r.slots[frame.number % vk::FrameRing::kFramesInFlight];
-    r.begin({width, height}, options, frame);
+    r.begin({width, height}, frame);
     const passes::FrameInputs in{.scene = r.scene.get(),
                                  .frame_set = slot.set,
                                  .options = options,
@@ -428,7 +467,7 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
                                  .read_back = read_back,
                                  .inspect = {inspect.begin(), inspect.end()},
                                  .pixel = pixel};
-    const passes::FrameResources res = r.build_graph(in, slot);
+    const passes::FrameResources res = r.build_graph(in, slot, frame.retired);
     r.write_uniforms(slot, camera, in, res);
     r.graph->compile();
     const uint64_t graph_frame = r.record(slot, frame.cmd);

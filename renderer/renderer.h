@@ -4,6 +4,7 @@
 // shadow -> depth_prepass -> (depth_resolve) -> gtao -> ao_spatial -> ao_temporal ->
 // contact_shadows -> forward -> skybox -> transparent -> tonemap, passes switched off by the
 // settings left out, then the read-backs the caller asked for (FrameResult, frame_result.h).
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -71,14 +72,22 @@ class Renderer {
     // The surface a surface_id texel names in the current scene (its instance's mesh,
     // material and node, and the triangle); none for 0 (nothing drawn) or an unknown id.
     std::optional<SurfaceInfo> describe_surface(uint32_t id) const;
+    // Validation messages so far; after shutdown(), every one, teardown's included.
     uint64_t validation_message_count() const;
+    // Waits for the device and destroys everything down to the instance now, so that what the
+    // validation layer reports at vkDestroyDevice (objects never destroyed) is counted before
+    // the caller decides its exit code. Afterwards only validation_message_count() may be
+    // called (render() and set_scene() throw); the destructor then does nothing more.
+    void shutdown();
     VkInstance instance() const;  // for RenderDoc's device pointer
     // The device, for the inspector's presentation layer (ui/), which draws on it.
     vk::Context& context();
 
   private:
     struct Impl;
+    Impl& live() const;  // throws ds::Error after shutdown()
     std::unique_ptr<Impl> impl_;
+    std::shared_ptr<const std::atomic<uint64_t>> validation_;  // outlives the device
 };
 
 }  // namespace ds

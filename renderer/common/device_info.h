@@ -2,6 +2,7 @@
 // The renderer's device as reports name it: plain data, so the capture layer can take it
 // without reaching up to the facade (renderer/device_info.h fills it).
 #include <string>
+#include <vector>
 
 namespace ds {
 
@@ -12,6 +13,12 @@ struct DeviceInfo {
     // What the pipeline statistic fragment_shader_invocations counts on this driver (the
     // report's and the Passes panel's label for it).
     std::string fragment_statistic;
+    // What the frame may ask of it (bench --soak's combinations): the msaa sample counts it
+    // supports, and whether count_fragments, count_draws and surface_id / zfight can run.
+    std::vector<int> msaa_counts;
+    bool fragment_counts = false;
+    bool draw_counts = false;
+    bool surface_ids = false;
 };
 
 }  // namespace ds

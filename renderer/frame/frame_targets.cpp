@@ -82,15 +82,15 @@ void FrameTargets::ensure(VkExtent2D size, const passes::FrameOptions& options,
 }
 
 void FrameTargets::import(graph::RenderGraph& graph, const passes::FrameOptions& options,
-                          passes::FrameResources& res) {
-    auto import_image = [&](const char* name, const vk::Image& image, graph::Semantic semantic,
-                            graph::ExternalState initial, graph::ExternalState final) {
-        graph::ExternalImage e;
-        e.image = image.handle();
-        e.view = image.view();
-        e.desc = {.format = image.format(),
-                  .size = graph::ImageSize::fixed(size_.width, size_.height),
-                  .samples = image.samples(),
+                          passes::FrameResources& res) const {
+    const VkExtent2D size = graph.output_extent();
+    auto import_image = [&](const char* name, VkFormat format, VkSampleCountFlagBits samples,
+                            graph::Semantic semantic, graph::ExternalState initial,
+                            graph::ExternalState final) {
+        graph::ExternalImage e;  // handles come with bind()
+        e.desc = {.format = format,
+                  .size = graph::ImageSize::fixed(size.width, size.height),
+                  .samples = samples,
                   .semantic = semantic};
         e.initial = initial;
         e.final = final;
@@ -99,17 +99,28 @@ void FrameTargets::import(graph::RenderGraph& graph, const passes::FrameOptions&
     const graph::Semantic depth_semantic =
         options.reverse_z ? graph::Semantic::ReverseZDepth : graph::Semantic::ForwardZDepth;
     const graph::ExternalState copied = graph::ExternalState::transfer_src();
+    const VkSampleCountFlagBits one = VK_SAMPLE_COUNT_1_BIT;
     res.final_image =
-        import_image("final", final_, graph::Semantic::LdrColor, after_copy(), copied);
-    res.depth = import_image("depth", depth_, depth_semantic, after_copy(), copied);
+        import_image("final", final_format_, one, graph::Semantic::LdrColor, after_copy(), copied);
+    res.depth =
+        import_image("depth", options.depth_format, one, depth_semantic, after_copy(), copied);
     if (options.msaa()) {
         // Last frame's probe read them; the contents are not needed.
         const graph::ExternalState unused = {
             VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE};
-        res.msaa_depth = import_image("msaa_depth", msaa_depth_, depth_semantic, unused, probed());
-        res.msaa_hdr =
-            import_image("msaa_hdr", msaa_hdr_, graph::Semantic::HdrColor, unused, probed());
+        res.msaa_depth = import_image("msaa_depth", options.depth_format, options.samples,
+                                      depth_semantic, unused, probed());
+        res.msaa_hdr = import_image("msaa_hdr", hdr_format_, options.samples,
+                                    graph::Semantic::HdrColor, unused, probed());
     }
+}
+
+void FrameTargets::bind(graph::RenderGraph& graph, const passes::FrameResources& res) const {
+    graph.bind_import(res.final_image, final_.handle(), final_.view());
+    graph.bind_import(res.depth, depth_.handle(), depth_.view());
+    if (res.msaa_depth.valid())
+        graph.bind_import(res.msaa_depth, msaa_depth_.handle(), msaa_depth_.view());
+    if (res.msaa_hdr.valid()) graph.bind_import(res.msaa_hdr, msaa_hdr_.handle(), msaa_hdr_.view());
 }
 
 void FrameTargets::reset() {

@@ -28,10 +28,13 @@ class FrameTargets {
     // format; replaced images go to `retired` (an earlier frame may still use
     // them).
     void ensure(VkExtent2D size, const passes::FrameOptions& options, vk::DestroyList& retired);
-    // Imports the final image, the depth and the multisampled images (msaa > 1). Fills
-    // res.final_image, res.depth and res.msaa_*.
+    // Imports the final image, the depth and the multisampled images (msaa > 1) at the graph's
+    // output size, as ensure() will make them, before they exist (the frame's memory estimate
+    // counts them first). Fills res.final_image, res.depth and res.msaa_*.
     void import(graph::RenderGraph& graph, const passes::FrameOptions& options,
-                passes::FrameResources& res);
+                passes::FrameResources& res) const;
+    // After ensure(): the imports' handles.
+    void bind(graph::RenderGraph& graph, const passes::FrameResources& res) const;
 
     // Releases everything (teardown, device idle).
     void reset();

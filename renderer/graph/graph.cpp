@@ -94,6 +94,14 @@ ImageHandle RenderGraph::import_image(const std::string& name, const ExternalIma
     return {index};
 }
 
+void RenderGraph::bind_import(ImageHandle image, VkImage handle, VkImageView view) {
+    require_declaring("bind_import");
+    if (resource(image.index, true, "bind_import").lifetime != Lifetime::External)
+        throw Error("render graph: bind_import on an image the graph owns");
+    bindings_[image.index].image = handle;
+    bindings_[image.index].view = view;
+}
+
 BufferHandle RenderGraph::import_buffer(const std::string& name, const ExternalBuffer& buffer) {
     ResourceInfo info;
     info.name = name;

@@ -132,6 +132,9 @@ class RenderGraph {
     void begin_frame(VkExtent2D output, vk::DestroyList& retired);
     ImageHandle import_image(const std::string& name, const ExternalImage& image);
     BufferHandle import_buffer(const std::string& name, const ExternalBuffer& buffer);
+    // An image imported before it existed (null handles: the frame's targets, made once the
+    // frame's memory estimate passed) gets its handles here, before compile().
+    void bind_import(ImageHandle image, VkImage handle, VkImageView view);
     // The role of the passes added from now on (begin_frame() resets it to Frame).
     void set_role(PassRole role) { role_ = role; }
 

@@ -1,6 +1,7 @@
 #include "renderer/vk/buffer.h"
 
 #include <cstring>
+#include <string>
 #include <utility>
 
 #include "renderer/common/error.h"
@@ -15,7 +16,10 @@ Buffer::Buffer(Context& context, const BufferDesc& desc) : context_(&context), s
     info.usage = desc.usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     VkDevice device = context.device();
-    check(vkCreateBuffer(device, &info, nullptr, &buffer_), "vkCreateBuffer");
+    check(vkCreateBuffer(device, &info, nullptr, &buffer_),
+          ("vkCreateBuffer for buffer '" + std::string(desc.name ? desc.name : "unnamed") + "' (" +
+           std::to_string(desc.size) + " bytes)")
+              .c_str());
 
     auto dedicated =
         make<VkMemoryDedicatedRequirements>(VK_STRUCTURE_TYPE_MEMORY_DEDICATED_REQUIREMENTS);
@@ -32,6 +36,7 @@ Buffer::Buffer(Context& context, const BufferDesc& desc) : context_(&context), s
     request.dedicated =
         dedicated.prefersDedicatedAllocation || dedicated.requiresDedicatedAllocation;
     request.buffer = buffer_;
+    request.name = desc.name;
     try {
         allocation_ = context.allocator().allocate(request);
         check(vkBindBufferMemory(device, buffer_, allocation_.memory, allocation_.offset),

@@ -203,6 +203,7 @@ DeviceReport probe_device(VkPhysicalDevice device, uint32_t index) {
     for (uint32_t i = 0; i < mem.memoryHeapCount; ++i)
         if (mem.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
             r.device_local_bytes += mem.memoryHeaps[i].size;
+    r.limits = probe_limits(device, r.candidate.api_version);
     return r;
 }
 
@@ -257,6 +258,14 @@ std::string format_report(const DeviceReport& r) {
     out << "  descriptor indexing:  " << yes(r.descriptor_indexing) << "\n";
     out << "  fragment quad ops:    " << yes(r.fragment_quad_operations) << "\n";
     out << "  device-local memory:  " << (r.device_local_bytes >> 20) << " MiB\n";
+    const DeviceLimits& l = r.limits;
+    out << "  image size limit:     " << l.max_image_dimension_2d << " (framebuffer "
+        << l.max_framebuffer_width << "x" << l.max_framebuffer_height << ")\n";
+    out << "  largest allocation:   "
+        << (l.max_memory_allocation_size ? bytes_text(l.max_memory_allocation_size) : "?") << "\n";
+    out << "  frame memory limit:   " << bytes_text(l.heap_bytes) << " (heap " << l.heap_index
+        << (l.memory_budget ? ", or VK_EXT_memory_budget's budget when lower" : "") << ")"
+        << (l.lowered ? " (lowered by DEPTHSCOPE_DEVICE_LIMITS)" : "") << "\n";
     return out.str();
 }
 

@@ -11,6 +11,7 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/format/format.h"
+#include "renderer/vk/device_limits.h"
 #include "renderer/vk/device_select.h"
 
 namespace ds::vk {
@@ -67,6 +68,7 @@ struct DeviceReport {
     // Quad subgroup operations in fragment shaders (count_fragments' quad counts).
     bool fragment_quad_operations = false;
     uint64_t device_local_bytes = 0;
+    DeviceLimits limits;  // image, framebuffer, allocation and heap (DEPTHSCOPE_DEVICE_LIMITS)
     uint32_t queue_family = UINT32_MAX;  // first graphics+compute family
 };
 

@@ -95,6 +95,8 @@ Context::~Context() {
     destroy();
 }
 
+// The messenger outlives the device: the validation layer reports objects still alive at
+// vkDestroyDevice, and those messages count like any other.
 void Context::destroy() {
     if (device_) vkDeviceWaitIdle(device_);  // teardown: an error here has nowhere to go
     allocator_.reset();
@@ -143,7 +145,7 @@ void Context::create_instance(const ContextOptions& options) {
     app.apiVersion = VK_API_VERSION_1_3;
 
     // The messenger in pNext also reports problems inside vkCreateInstance/vkDestroyInstance.
-    VkDebugUtilsMessengerCreateInfoEXT messenger = messenger_info(&validation_messages_);
+    VkDebugUtilsMessengerCreateInfoEXT messenger = messenger_info(validation_messages_.get());
     const VkValidationFeatureEnableEXT enables[] = {
         VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
     auto features =
@@ -193,6 +195,10 @@ void Context::pick_physical_device(const std::string& request) {
     VkPhysicalDeviceProperties props{};
     vkGetPhysicalDeviceProperties(physical_device_, &props);
     limits_ = props.limits;
+    // As probed, with DEPTHSCOPE_DEVICE_LIMITS applied: every check sees the same numbers.
+    limits_.maxImageDimension2D = report_.limits.max_image_dimension_2d;
+    limits_.maxFramebufferWidth = report_.limits.max_framebuffer_width;
+    limits_.maxFramebufferHeight = report_.limits.max_framebuffer_height;
 }
 
 void Context::create_device() {
@@ -249,7 +255,9 @@ void Context::create_device() {
     pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
     pool.queueFamilyIndex = report_.queue_family;
     check(vkCreateCommandPool(device_, &pool, nullptr, &once_pool_), "vkCreateCommandPool");
-    allocator_ = std::make_unique<Allocator>(physical_device_, device_);
+    allocator_ =
+        std::make_unique<Allocator>(physical_device_, device_, Allocator::kDefaultBlockSize,
+                                    report_.limits.max_memory_allocation_size);
 }
 
 VkFormatProperties Context::format_properties(VkFormat format) const {

@@ -1,7 +1,8 @@
 #pragma once
 // Instance, optional validation, device selection, logical device, queue and memory allocator:
-// everything every other vk object needs. Not movable: the debug messenger keeps a pointer to
-// the validation counter inside it.
+// everything every other vk object needs. The validation counter is shared: the messenger
+// counts into it until vkDestroyInstance, so whoever holds it reads what teardown reported
+// (objects still alive at vkDestroyDevice) after the Context is gone.
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -45,7 +46,11 @@ class Context {
     VkFormatProperties format_properties(VkFormat format) const;
 
     // Warning- and error-severity messages from the validation layer since creation.
-    uint64_t validation_message_count() const { return validation_messages_.load(); }
+    uint64_t validation_message_count() const { return validation_messages_->load(); }
+    // The same count, readable after this Context is destroyed (teardown's messages included).
+    std::shared_ptr<const std::atomic<uint64_t>> validation_counter() const {
+        return validation_messages_;
+    }
 
     template <typename Handle>
     void set_name(VkObjectType type, Handle handle, const char* name) const {
@@ -63,7 +68,8 @@ class Context {
     void create_device();
     void destroy();  // explicit teardown order; safe on a partly built context
 
-    std::atomic<uint64_t> validation_messages_{0};
+    std::shared_ptr<std::atomic<uint64_t>> validation_messages_ =
+        std::make_shared<std::atomic<uint64_t>>(0);
     bool swapchain_ = false;
     VkInstance instance_ = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;

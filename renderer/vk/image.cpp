@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <bit>
+#include <string>
 #include <utility>
 
+#include "renderer/common/error.h"
+#include "renderer/vk/capabilities.h"
 #include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
 
@@ -12,6 +15,48 @@ namespace ds::vk {
 uint32_t mip_level_count(uint32_t width, uint32_t height) {
     return uint32_t(std::bit_width(std::max({width, height, 1u})));
 }
+
+namespace {
+
+// "image 'hdr' 16384x16384 R16G16B16A16_SFLOAT x4": how an error names the image.
+std::string describe(const ImageDesc& desc) {
+    std::string text = std::string("image '") + (desc.name ? desc.name : "unnamed") + "' " +
+                       std::to_string(desc.width) + "x" + std::to_string(desc.height) + " " +
+                       format::name(desc.format);
+    if (desc.samples != VK_SAMPLE_COUNT_1_BIT) text += " x" + std::to_string(int(desc.samples));
+    return text;
+}
+
+// Before vkCreateImage, whose behaviour past these limits is undefined: the device's own
+// answer for this format, usage and sample count (maxExtent, sampleCounts, maxResourceSize)
+// and maxImageDimension2D as the context has it (DEPTHSCOPE_DEVICE_LIMITS lowers it).
+void check_image_limits(const Context& context, const VkImageCreateInfo& info,
+                        const ImageDesc& desc) {
+    VkImageFormatProperties props{};
+    const VkResult result = vkGetPhysicalDeviceImageFormatProperties(
+        context.physical_device(), info.format, info.imageType, info.tiling, info.usage, info.flags,
+        &props);
+    if (result != VK_SUCCESS)
+        throw Error(describe(desc) + ": the device cannot create it with this usage (" +
+                    result_name(result) + ")");
+    const uint32_t limit = std::min(
+        {props.maxExtent.width, props.maxExtent.height, context.limits().maxImageDimension2D});
+    if (desc.width > limit || desc.height > limit)
+        throw Error(describe(desc) + " exceeds the device's largest 2D image, " +
+                    std::to_string(limit) + "x" + std::to_string(limit) + " (maxImageDimension2D " +
+                    std::to_string(context.limits().maxImageDimension2D) + ")");
+    if (!(props.sampleCounts & desc.samples))
+        throw Error(describe(desc) + ": the device supports sample counts " +
+                    sample_counts_text(props.sampleCounts) + " for this format");
+    const uint64_t texels = uint64_t(desc.width) * desc.height * uint32_t(desc.samples);
+    const uint64_t bytes = texels * std::max(format::bytes_per_texel(desc.format), 1u);
+    if (bytes > props.maxResourceSize)
+        throw Error(describe(desc) + " needs " + bytes_text(bytes) +
+                    ", more than the device's maxResourceSize (" +
+                    bytes_text(props.maxResourceSize) + ")");
+}
+
+}  // namespace
 
 Image::Image(Context& context, const ImageDesc& desc) : context_(&context), desc_(desc) {
     auto info = make<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
@@ -26,7 +71,9 @@ Image::Image(Context& context, const ImageDesc& desc) : context_(&context), desc
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     VkDevice device = context.device();
-    check(vkCreateImage(device, &info, nullptr, &image_), "vkCreateImage");
+    check_image_limits(context, info, desc);
+    check(vkCreateImage(device, &info, nullptr, &image_),
+          ("vkCreateImage for " + describe(desc)).c_str());
     try {
         auto dedicated =
             make<VkMemoryDedicatedRequirements>(VK_STRUCTURE_TYPE_MEMORY_DEDICATED_REQUIREMENTS);
@@ -42,6 +89,7 @@ Image::Image(Context& context, const ImageDesc& desc) : context_(&context), desc
         request.dedicated =
             dedicated.prefersDedicatedAllocation || dedicated.requiresDedicatedAllocation;
         request.image = image_;
+        request.name = desc.name;
         allocation_ = context.allocator().allocate(request);
         check(vkBindImageMemory(device, image_, allocation_.memory, allocation_.offset),
               "vkBindImageMemory");

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "renderer/common/error.h"
 #include "renderer/vk/check.h"
+#include "renderer/vk/device_limits.h"
 
 namespace ds::vk {
 namespace {
@@ -39,10 +41,19 @@ const char* usage_name(MemoryUsage usage) {
     return "?";
 }
 
+// "image 'hdr' (2147483648 bytes)": what an allocation error names.
+std::string describe(const AllocationRequest& request) {
+    const char* kind = request.image ? "image" : request.buffer ? "buffer" : "memory";
+    return std::string(kind) + " '" + (request.name ? request.name : "unnamed") + "' (" +
+           std::to_string(request.requirements.size) + " bytes, " +
+           bytes_text(request.requirements.size) + ")";
+}
+
 }  // namespace
 
-Allocator::Allocator(VkPhysicalDevice physical_device, VkDevice device, VkDeviceSize block_size)
-    : device_(device), block_size_(block_size) {
+Allocator::Allocator(VkPhysicalDevice physical_device, VkDevice device, VkDeviceSize block_size,
+                     VkDeviceSize max_allocation)
+    : device_(device), block_size_(block_size), max_allocation_(max_allocation) {
     vkGetPhysicalDeviceMemoryProperties(physical_device, &props_);
     VkPhysicalDeviceProperties props{};
     vkGetPhysicalDeviceProperties(physical_device, &props);
@@ -80,13 +91,21 @@ uint32_t Allocator::choose_memory_type(uint32_t type_bits, MemoryUsage usage) co
     return uint32_t(best);
 }
 
-VkDeviceMemory Allocator::allocate_memory(VkDeviceSize size, uint32_t type, const void* next) {
+VkDeviceMemory Allocator::allocate_memory(VkDeviceSize size, uint32_t type, const void* next,
+                                          const AllocationRequest& request) {
     auto info = make<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
     info.pNext = next;
     info.allocationSize = size;
     info.memoryTypeIndex = type;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    check(vkAllocateMemory(device_, &info, nullptr, &memory), "vkAllocateMemory");
+    // One line that says what was being allocated: VK_ERROR_OUT_OF_DEVICE_MEMORY alone does not.
+    const VkResult result = vkAllocateMemory(device_, &info, nullptr, &memory);
+    if (result != VK_SUCCESS) {
+        const std::string what = "vkAllocateMemory of " + bytes_text(size) +
+                                 (size == request.requirements.size ? "" : " (a block)") + " for " +
+                                 describe(request);
+        check(result, what.c_str());
+    }
     return memory;
 }
 
@@ -110,7 +129,7 @@ Allocation Allocator::allocate_dedicated(const AllocationRequest& request, uint3
     const bool has_target = request.buffer || request.image;
     Allocation a;
     a.size = request.requirements.size;
-    a.memory = allocate_memory(a.size, type, has_target ? &dedicated : nullptr);
+    a.memory = allocate_memory(a.size, type, has_target ? &dedicated : nullptr, request);
     a.mapped = map_if_host_visible(a.memory, type);
     a.memory_type = type;
     a.coherent = props_.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
@@ -134,6 +153,9 @@ Allocator::Pool& Allocator::pool_for(uint32_t type, ResourceKind kind, int32_t& 
 
 Allocation Allocator::allocate(const AllocationRequest& request) {
     const VkMemoryRequirements& req = request.requirements;
+    if (max_allocation_ && req.size > max_allocation_)
+        throw Error(describe(request) + " is larger than the device's maxMemoryAllocationSize (" +
+                    bytes_text(max_allocation_) + ")");
     const uint32_t type = choose_memory_type(req.memoryTypeBits, request.usage);
     // Anything over half a block would waste most of a block: give it its own memory.
     if (request.dedicated || req.size > block_size_ / 2) return allocate_dedicated(request, type);
@@ -143,7 +165,7 @@ Allocation Allocator::allocate(const AllocationRequest& request) {
     std::optional<SubAllocation> sub = pool.blocks.try_allocate(req.size, req.alignment);
     if (!sub) {
         // Create the memory first so a failure leaves the pool unchanged.
-        VkDeviceMemory memory = allocate_memory(block_size_, type, nullptr);
+        VkDeviceMemory memory = allocate_memory(block_size_, type, nullptr, request);
         std::byte* mapped = map_if_host_visible(memory, type);
         pool.memories.push_back(memory);
         pool.mapped.push_back(mapped);

@@ -30,6 +30,7 @@ struct AllocationRequest {
     bool dedicated = false;            // VkMemoryDedicatedRequirements said prefers/requires
     VkBuffer buffer = VK_NULL_HANDLE;  // the resource, for VkMemoryDedicatedAllocateInfo
     VkImage image = VK_NULL_HANDLE;
+    const char* name = nullptr;  // the resource's name, for the error when memory runs out
 };
 
 struct Allocation {
@@ -56,14 +57,18 @@ class Allocator {
   public:
     static constexpr VkDeviceSize kDefaultBlockSize = 64ull << 20;
 
+    // `max_allocation`: the device's maxMemoryAllocationSize (0: unknown); a larger request is
+    // refused before vkAllocateMemory.
     Allocator(VkPhysicalDevice physical_device, VkDevice device,
-              VkDeviceSize block_size = kDefaultBlockSize);
+              VkDeviceSize block_size = kDefaultBlockSize, VkDeviceSize max_allocation = 0);
     ~Allocator();
     Allocator(const Allocator&) = delete;
     Allocator& operator=(const Allocator&) = delete;
 
-    Allocation allocate(const AllocationRequest& request);  // throws ds::Error
-    void free(Allocation& allocation);                      // resets it; null is a no-op
+    // Throws ds::Error naming the resource (name, buffer or image, bytes) and the VkResult
+    // (VK_ERROR_OUT_OF_DEVICE_MEMORY...) or the limit it ran into.
+    Allocation allocate(const AllocationRequest& request);
+    void free(Allocation& allocation);  // resets it; null is a no-op
     // No-ops for coherent memory; otherwise the range is widened to nonCoherentAtomSize.
     void flush(const Allocation& allocation) const;
     void invalidate(const Allocation& allocation) const;
@@ -81,7 +86,8 @@ class Allocator {
     };
 
     uint32_t choose_memory_type(uint32_t type_bits, MemoryUsage usage) const;
-    VkDeviceMemory allocate_memory(VkDeviceSize size, uint32_t type, const void* next);
+    VkDeviceMemory allocate_memory(VkDeviceSize size, uint32_t type, const void* next,
+                                   const AllocationRequest& request);
     std::byte* map_if_host_visible(VkDeviceMemory memory, uint32_t type);
     Allocation allocate_dedicated(const AllocationRequest& request, uint32_t type);
     Pool& pool_for(uint32_t type, ResourceKind kind, int32_t& index);
@@ -90,6 +96,7 @@ class Allocator {
     VkDevice device_;
     VkDeviceSize block_size_;
     VkDeviceSize atom_size_;
+    VkDeviceSize max_allocation_;
     VkPhysicalDeviceMemoryProperties props_{};
     std::vector<std::unique_ptr<Pool>> pools_;
     uint32_t dedicated_count_ = 0;

@@ -30,6 +30,11 @@ class GraphVk : public ::testing::Test {
         graph_.reset();
         frames_.reset();
         EXPECT_EQ(context_->validation_message_count(), 0u);
+        // The device's destruction too: the layer reports objects still alive there.
+        const auto counter = context_->validation_counter();
+        const uint64_t before = *counter;
+        context_.reset();
+        EXPECT_EQ(*counter, before) << "validation messages at device destruction";
     }
 
     // Runs one frame at `size` with the passes `declare` adds; returns the id for collect().

@@ -20,6 +20,7 @@ class GraphReadback : public GraphVk {
     void TearDown() override {
         context_->wait_idle();
         readback_.reset();
+        retired_.flush();  // before the device goes, in GraphVk::TearDown
         GraphVk::TearDown();
     }
     // One frame; `declare` runs after the read-back's begin_frame.

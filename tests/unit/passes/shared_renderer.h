@@ -42,15 +42,45 @@ inline size_t differing_pixels(const FrameResult& a, const FrameResult& b, int t
 
 class SharedRenderer : public ::testing::Test {
   protected:
-    static void SetUpTestSuite() {
+    static void SetUpTestSuite() { guarded(create_renderer); }
+    // The renderer's shutdown runs the validation layer's leak check (objects never
+    // destroyed, reported at vkDestroyDevice): a message there fails the suite.
+    static void TearDownTestSuite() {
+        if (renderer_) {
+            renderer_->shutdown();
+            EXPECT_EQ(renderer_->validation_message_count(), 0u)
+                << "validation messages at teardown (printed above)";
+        }
+        renderer_.reset();
+        setup_error_.clear();
+    }
+    void SetUp() override {
+        if (!setup_error_.empty()) GTEST_FAIL() << "the suite's set-up failed: " << setup_error_;
+    }
+    void TearDown() override {
+        if (renderer_) {
+            EXPECT_EQ(renderer_->validation_message_count(), 0u);
+        }
+    }
+
+    static void create_renderer() {
         RendererOptions options;
         options.validate = true;
         renderer_ = std::make_unique<Renderer>(options);
     }
-    static void TearDownTestSuite() { renderer_.reset(); }
-    void TearDown() override { EXPECT_EQ(renderer_->validation_message_count(), 0u); }
+    // A throwing SetUpTestSuite makes GoogleTest report the suite's tests as skipped: a
+    // fixture's set-up runs in here instead, and every test then fails with the error.
+    template <typename SetUpFn>
+    static void guarded(SetUpFn&& set_up) {
+        try {
+            set_up();
+        } catch (const std::exception& e) {
+            setup_error_ = e.what();
+        }
+    }
 
     static inline std::unique_ptr<Renderer> renderer_;
+    static inline std::string setup_error_;
 };
 
 // SharedRenderer with one scene for the whole suite: SetUpTestSuite() of a fixture calls
@@ -58,9 +88,11 @@ class SharedRenderer : public ::testing::Test {
 class SharedScene : public SharedRenderer {
   protected:
     static void set_up_with(const char* name) {
-        SharedRenderer::SetUpTestSuite();
-        scene_ = std::make_unique<scene::Scene>(scene::load_scene(name, Settings{}));
-        renderer_->set_scene(*scene_);
+        guarded([name] {
+            create_renderer();
+            scene_ = std::make_unique<scene::Scene>(scene::load_scene(name, Settings{}));
+            renderer_->set_scene(*scene_);
+        });
     }
     static void TearDownTestSuite() {
         scene_.reset();

@@ -24,9 +24,11 @@ constexpr uint32_t kWidth = 240, kHeight = 135;
 class Alpha : public test::SharedRenderer {
   protected:
     static void SetUpTestSuite() {
-        SharedRenderer::SetUpTestSuite();
-        foliage_ = new scene::Scene(scene::load_scene("foliage", Settings{}));
-        renderer_->set_scene(*foliage_);
+        guarded([] {
+            create_renderer();
+            foliage_ = new scene::Scene(scene::load_scene("foliage", Settings{}));
+            renderer_->set_scene(*foliage_);
+        });
     }
     static void TearDownTestSuite() {
         delete foliage_;

@@ -27,9 +27,11 @@ constexpr uint32_t kWidth = 240, kHeight = 135;
 class Msaa : public test::SharedRenderer {
   protected:
     static void SetUpTestSuite() {
-        SharedRenderer::SetUpTestSuite();
-        edges_ = new scene::Scene(scene::load_scene("edges", Settings{}));
-        atrium_ = new scene::Scene(scene::load_scene("atrium", Settings{}));
+        guarded([] {
+            create_renderer();
+            edges_ = new scene::Scene(scene::load_scene("edges", Settings{}));
+            atrium_ = new scene::Scene(scene::load_scene("atrium", Settings{}));
+        });
     }
     static void TearDownTestSuite() {
         delete edges_;
