@@ -15,6 +15,7 @@
 #include "app/commands.h"
 #include "app/exit_code.h"
 #include "app/soak.h"
+#include "renderer/capture/file_output.h"
 #include "renderer/capture/report.h"
 #include "renderer/common/error.h"
 #include "renderer/device_info.h"
@@ -196,6 +197,7 @@ int run_soak(const Options& o) {
     check_soak_usage(o);
     Settings base;
     for (const auto& assignment : o.sets) base.apply(assignment);
+    if (!o.out.empty()) capture::check_output_file("--json", o.out);  // before any frame
     SoakPlan plan;
     plan.scenes = soak_scenes(o, base);
     RendererOptions renderer_options;
@@ -219,7 +221,7 @@ int run_soak(const Options& o) {
     if (!o.out.empty()) {
         nlohmann::json out = soak_json(verdict, tolerance, run, plan);
         out["validation_messages"] = renderer.validation_message_count();
-        capture::write_json_atomically(o.out, {{"soak", out}});
+        capture::write_json_atomically("--json", o.out, {{"soak", out}});
         std::printf("soak: wrote %s\n", o.out.c_str());
     }
     if (verdict.growing) {
