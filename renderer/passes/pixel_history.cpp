@@ -267,8 +267,9 @@ void PixelHistoryReplay::collect(const FrameCollect& c, std::span<const HistoryP
     uint32_t count = 0;
     std::memcpy(&count, bytes.data(), sizeof count);
     std::vector<HistoryRecord> records(std::min(count, kCapacity));
-    std::memcpy(records.data(), bytes.data() + kHeaderBytes,
-                records.size() * sizeof(HistoryRecord));
+    if (!records.empty())  // data() may be null then: memcpy(null, …, 0) is undefined
+        std::memcpy(records.data(), bytes.data() + kHeaderBytes,
+                    records.size() * sizeof(HistoryRecord));
     if (!frame.pixel_history) frame.pixel_history = PixelHistory{c.in.pixel->x, c.in.pixel->y};
     frame.pixel_history->dropped += count - records.size();
     for (PixelFragment& f : simulate(pass_.c_str(), records, log_, pipelines, rules))

@@ -175,7 +175,10 @@ void ZfightPass::collect(const FrameCollect& c, std::span<PassResult> own, Frame
     std::memcpy(&appended, bytes.data(), sizeof appended);
     const uint32_t kept = std::min(appended, capacity_);
     std::vector<ZfightRecord> records(kept);
-    std::memcpy(records.data(), bytes.data() + kHeaderBytes, kept * sizeof(ZfightRecord));
+    // An empty vector's data() may be null, and memcpy from or to null is undefined even for 0
+    // bytes (UBSan's nonnull-attribute check, on a frame without a single near-tie).
+    if (kept > 0)
+        std::memcpy(records.data(), bytes.data() + kHeaderBytes, kept * sizeof(ZfightRecord));
     ZfightResult result = zfight_pairs(records, c.in.scene->surfaces());
     result.steps = c.in.options.zfight_steps;
     result.dropped = appended - kept;

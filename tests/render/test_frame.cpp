@@ -244,3 +244,21 @@ TEST(Frame, ZfightReportNamesThePairs) {
     Capture off = capture("zfight-off", "zfight", "320x180");
     EXPECT_FALSE(off.report.contains("zfight"));
 }
+
+// Every diagnostic of one frame at once through the real executable, validation on (the
+// sanitizer stage's pass over them, tests/sanitize/tests.txt): each reaches report.json, and
+// the pixel history replays the same frame. Foliage: cut-outs to discard, and no near-ties
+// (an empty zfight record list, which once made a memcpy from null).
+TEST(Frame, EveryDiagnosticAtOnce) {
+    const std::string all =
+        "--set count_fragments=on --set count_discards=on --set count_draws=on --set zfight=on "
+        "--set equal_check=on --set depth_precision=on";
+    Capture c = capture("every-diagnostic", "foliage", "160x90", all);
+    for (const char* key : {"coverage", "masked_discards", "draws", "zfight", "equal_check"})
+        EXPECT_TRUE(c.report.contains(key)) << key;
+    for (const char* pass : {"depth_precision", "zfight", "equal_check"})
+        EXPECT_EQ(find_pass(c.report, pass)["kind"], "frame") << pass;
+    auto r = run_depthscope("pixel --validate --scene foliage --size 160x90 --at 80,45 " + all);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_FALSE(r.out.empty());
+}

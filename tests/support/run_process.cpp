@@ -46,6 +46,16 @@ ProcessResult run_command(const std::string& command, int timeout_s) {
     r.err = read_file(io.string() + ".err");
     fs::remove(io.string() + ".out");
     fs::remove(io.string() + ".err");
+    // A sanitizer report in the child fails the test even where the test expects a nonzero exit
+    // (the sanitizer stage: ./dev test --sanitize, tests/sanitize/env.sh).
+    for (const char* mark :
+         {"ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "AddressSanitizer:DEADLYSIGNAL",
+          ": runtime error: ", "SUMMARY: UndefinedBehaviorSanitizer"}) {
+        if (r.err.find(mark) != std::string::npos) {
+            ADD_FAILURE() << "depthscope " << args << ": sanitizer report\n" << r.err;
+            break;
+        }
+    }
     return r;
 }
 

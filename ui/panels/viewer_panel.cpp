@@ -239,7 +239,7 @@ void hover(PanelIo& io, bool hovered, ImVec2 scale) {
     const bool click =
         drag.x * drag.x + drag.y * drag.y <= imgui.MouseDragThreshold * imgui.MouseDragThreshold;
     if (pick && click && ImGui::IsMouseReleased(ImGuiMouseButton_Left))
-        io.actions.emplace_back(std::in_place_type<PickPixel>, (*texel)[0], (*texel)[1]);
+        io.actions.emplace_back(PickPixel{(*texel)[0], (*texel)[1]});
 }
 
 // The readout lines under the image.

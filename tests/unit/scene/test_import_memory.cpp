@@ -227,7 +227,8 @@ TEST(ImportMemory, MaterialFactors) {
     src.emissiveFactor = {1, 2, 3};
     src.alphaCutoff = 0.3;
     b.add_node(b.add_quad_mesh(m));
-    const Material& got = import_model(b.model, "t", "mem:t").materials[0];
+    const Scene s = import_model(b.model, "t", "mem:t");
+    const Material& got = s.materials[0];
     EXPECT_EQ(got.base_color_factor, glm::vec4(0.5f, 0.25f, 1.0f, 0.75f));
     EXPECT_FLOAT_EQ(got.metallic_factor, 0.2f);
     EXPECT_FLOAT_EQ(got.roughness_factor, 0.7f);
