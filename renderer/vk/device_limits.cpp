@@ -10,21 +10,10 @@
 
 #include "renderer/common/error.h"
 #include "renderer/vk/check.h"
+#include "renderer/vk/features.h"
 
 namespace ds::vk {
 namespace {
-
-bool has_device_extension(VkPhysicalDevice device, const char* name) {
-    uint32_t count = 0;
-    if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr) != VK_SUCCESS)
-        return false;
-    std::vector<VkExtensionProperties> exts(count);
-    if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, exts.data()) != VK_SUCCESS)
-        return false;
-    return std::any_of(exts.begin(), exts.end(), [&](const VkExtensionProperties& e) {
-        return std::strcmp(e.extensionName, name) == 0;
-    });
-}
 
 template <typename T>
 void lower(T& value, uint64_t to, bool& lowered) {

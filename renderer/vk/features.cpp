@@ -19,18 +19,21 @@ FeatureChain::FeatureChain() {
     synchronization2.pNext = &extended_dynamic_state;
 }
 
-bool has_promoted_extensions(VkPhysicalDevice device) {
+bool has_device_extension(VkPhysicalDevice device, const char* name) {
     uint32_t count = 0;
     if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr) != VK_SUCCESS)
         return false;
     std::vector<VkExtensionProperties> exts(count);
     if (vkEnumerateDeviceExtensionProperties(device, nullptr, &count, exts.data()) != VK_SUCCESS)
         return false;
-    return std::all_of(kPromotedExtensions.begin(), kPromotedExtensions.end(), [&](const char* n) {
-        return std::any_of(exts.begin(), exts.end(), [&](const VkExtensionProperties& e) {
-            return std::strcmp(e.extensionName, n) == 0;
-        });
+    return std::any_of(exts.begin(), exts.end(), [&](const VkExtensionProperties& e) {
+        return std::strcmp(e.extensionName, name) == 0;
     });
+}
+
+bool has_promoted_extensions(VkPhysicalDevice device) {
+    return std::all_of(kPromotedExtensions.begin(), kPromotedExtensions.end(),
+                       [&](const char* name) { return has_device_extension(device, name); });
 }
 
 }  // namespace ds::vk

@@ -24,6 +24,8 @@ struct FeatureChain {
     FeatureChain& operator=(const FeatureChain&) = delete;
 };
 
+// True when the device offers the extension `name`.
+bool has_device_extension(VkPhysicalDevice device, const char* name);
 // True when the device offers every extension in kPromotedExtensions.
 bool has_promoted_extensions(VkPhysicalDevice device);
 
