@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "renderer/common/error.h"
+#include "renderer/common/quoted.h"
 
 namespace ds::scene::detail {
 
@@ -42,12 +43,10 @@ inline std::string one_line(std::string_view text) {
 }
 
 // A name for the start of a message ("PATH: WHAT"): a path may hold any byte but '/' and NUL,
-// so control characters become '?' to keep the message on one line.
+// so control characters are escaped as everywhere else (renderer/common/quoted.h), keeping the
+// message on one line.
 inline std::string printable(std::string_view text) {
-    std::string out(text);
-    for (char& c : out)
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-    return out;
+    return escaped(text);
 }
 
 // A value from the file, quoted for a message: one line, at most 200 characters shown (a uri

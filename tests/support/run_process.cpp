@@ -52,7 +52,7 @@ ProcessResult run_command(const std::string& command, int timeout_s) {
          {"ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "AddressSanitizer:DEADLYSIGNAL",
           ": runtime error: ", "SUMMARY: UndefinedBehaviorSanitizer"}) {
         if (r.err.find(mark) != std::string::npos) {
-            ADD_FAILURE() << "depthscope " << args << ": sanitizer report\n" << r.err;
+            ADD_FAILURE() << command << ": sanitizer report\n" << r.err;
             break;
         }
     }

@@ -64,20 +64,20 @@ TEST(FuzzRegressions, MemoryLoadReadsNamedFilesOnly) {
     }
 }
 
-// A name (a path) with control characters stays one line: they show as '?' (found by the
-// fuzzer as a NUL that cut the message short; a newline in a path would split it).
-TEST(FuzzRegressions, ControlCharactersInTheNameShowAsQuestionMarks) {
+// A name (a path) with control characters stays one line: they are escaped like every echoed
+// value (found by the fuzzer as a NUL that cut the message short; a newline would split it).
+TEST(FuzzRegressions, ControlCharactersInTheNameAreEscaped) {
     try {
         load_gltf_memory("{", {}, "a\nb\tc.gltf");
         FAIL() << "loaded";
     } catch (const InputError& e) {
-        EXPECT_EQ(std::string(e.what()).rfind("a?b?c.gltf: byte ", 0), 0u) << e.what();
+        EXPECT_EQ(std::string(e.what()).rfind("a\\nb\\tc.gltf: byte ", 0), 0u) << e.what();
     }
     try {
         load_gltf(std::string("/nonexistent/x\ny.gltf"));
         FAIL() << "loaded";
     } catch (const InputError& e) {
-        EXPECT_STREQ(e.what(), "/nonexistent/x?y.gltf: no such file");
+        EXPECT_STREQ(e.what(), "/nonexistent/x\\ny.gltf: no such file");
     }
 }
 
