@@ -60,6 +60,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
 
 void Buffer::reset() {
     if (!context_) return;
+    if (buffer_) context_->clear_name(VK_OBJECT_TYPE_BUFFER, buffer_);
     if (buffer_) vkDestroyBuffer(context_->device(), buffer_, nullptr);
     context_->allocator().free(allocation_);
     buffer_ = VK_NULL_HANDLE;

@@ -56,6 +56,10 @@ class Context {
     void set_name(VkObjectType type, Handle handle, const char* name) const {
         debug_.set_name(device_, type, handle, name);
     }
+    template <typename Handle>
+    void clear_name(VkObjectType type, Handle handle) const {
+        debug_.clear_name(device_, type, reinterpret_cast<uint64_t>(handle));
+    }
 
     // Records `record` into a one-time command buffer, submits it and waits on its fence
     // (uploads, layout set-up). Not for per-frame work.

@@ -38,4 +38,15 @@ void DebugUtils::set_name(VkDevice device, VkObjectType type, uint64_t handle,
     check(set_name_(device, &info), "vkSetDebugUtilsObjectNameEXT");
 }
 
+void DebugUtils::clear_name(VkDevice device, VkObjectType type, uint64_t handle) const {
+    if (!set_name_ || !handle) return;
+    auto info =
+        make<VkDebugUtilsObjectNameInfoEXT>(VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT);
+    info.objectType = type;
+    info.objectHandle = handle;
+    info.pObjectName = nullptr;  // "any previously set name is removed"
+    // Called on destruction paths (noexcept): a failure leaves a stale name, nothing worse.
+    (void)set_name_(device, &info);
+}
+
 }  // namespace ds::vk

@@ -22,6 +22,9 @@ class DebugUtils {
     void set_name(VkDevice device, VkObjectType type, Handle handle, const char* name) const {
         set_name(device, type, reinterpret_cast<uint64_t>(handle), name);
     }
+    // Removes a name before its object is destroyed. The validation layer keeps every name in a
+    // map until it is removed; objects recreated every frame (the soak) would grow it forever.
+    void clear_name(VkDevice device, VkObjectType type, uint64_t handle) const;
 
   private:
     PFN_vkCmdBeginDebugUtilsLabelEXT begin_label_ = nullptr;

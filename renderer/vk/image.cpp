@@ -125,6 +125,8 @@ Image& Image::operator=(Image&& other) noexcept {
 void Image::reset() {
     if (!context_) return;
     VkDevice device = context_->device();
+    if (view_) context_->clear_name(VK_OBJECT_TYPE_IMAGE_VIEW, view_);
+    if (image_) context_->clear_name(VK_OBJECT_TYPE_IMAGE, image_);
     if (view_) vkDestroyImageView(device, view_, nullptr);
     if (image_) vkDestroyImage(device, image_, nullptr);
     context_->allocator().free(allocation_);
