@@ -4,6 +4,8 @@
 #include <climits>
 #include <cstring>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "renderer/scene/import_limits.h"
 #include "renderer/scene/import_util.h"
@@ -35,11 +37,44 @@ uint32_t be32(const unsigned char* p) {
     return uint32_t{p[0]} << 24 | uint32_t{p[1]} << 16 | uint32_t{p[2]} << 8 | p[3];
 }
 
+bool is_png(const unsigned char* bytes, int size) {
+    static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    return size >= 8 && std::memcmp(bytes, kPng, 8) == 0;
+}
+
+// A PNG's chunks, walked before stb sees them. stb copies each IDAT chunk into a buffer it
+// allocates on the first non-empty one, so an empty IDAT before any data is a memcpy to null
+// (undefined behaviour, found by UBSan). Empty IDAT chunks carry nothing: when there are any,
+// `cleaned` receives the file without them. A PNG with no IDAT bytes at all is refused here; a
+// chunk that runs past the end counts what is there and stb reports the truncation.
+void check_png_chunks(const unsigned char* bytes, int size, std::string& cleaned) {
+    const size_t total = size_t(size);
+    uint64_t idat_bytes = 0;
+    std::vector<size_t> empty_idats;  // where each empty IDAT chunk starts
+    for (size_t pos = 8; pos + 12 <= total;) {
+        const size_t len = be32(bytes + pos);
+        const unsigned char* type = bytes + pos + 4;
+        const size_t room = total - pos - 12;
+        const bool idat = std::memcmp(type, "IDAT", 4) == 0;
+        if (idat) idat_bytes += std::min(len, room);
+        if (idat && len == 0) empty_idats.push_back(pos);
+        if (len > room || std::memcmp(type, "IEND", 4) == 0) break;
+        pos += 12 + len;
+    }
+    if (idat_bytes == 0) fail("PNG has no image data (no IDAT bytes)");
+    const auto* chars = reinterpret_cast<const char*>(bytes);
+    size_t from = 0;
+    for (const size_t at : empty_idats) {
+        cleaned.append(chars + from, at - from);
+        from = at + 12;
+    }
+    if (!empty_idats.empty()) cleaned.append(chars + from, total - from);
+}
+
 // Width and height from the header. A PNG's are read here directly: stbi_info refuses a PNG
 // whose decoded size passes 1 GiB with a reason that names no size.
 bool read_header(const unsigned char* bytes, int size, int& w, int& h) {
-    static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    if (size >= 24 && std::memcmp(bytes, kPng, 8) == 0 && std::memcmp(bytes + 12, "IHDR", 4) == 0) {
+    if (size >= 24 && is_png(bytes, size) && std::memcmp(bytes + 12, "IHDR", 4) == 0) {
         const uint32_t width = be32(bytes + 16);
         const uint32_t height = be32(bytes + 20);
         w = int(std::min<uint32_t>(width, INT32_MAX));
@@ -53,6 +88,12 @@ bool read_header(const unsigned char* bytes, int size, int& w, int& h) {
 void decode(tinygltf::Image& image, int req_width, int req_height, const unsigned char* bytes,
             int size, ImageBudget& budget) {
     if (size <= 0) fail("empty image");
+    std::string cleaned;
+    if (is_png(bytes, size)) check_png_chunks(bytes, size, cleaned);
+    if (!cleaned.empty()) {
+        bytes = reinterpret_cast<const unsigned char*>(cleaned.data());
+        size = int(cleaned.size());
+    }
     int w = 0;
     int h = 0;
     if (!read_header(bytes, size, w, h))
