@@ -88,12 +88,6 @@ bool read_header(const unsigned char* bytes, int size, int& w, int& h) {
 void decode(tinygltf::Image& image, int req_width, int req_height, const unsigned char* bytes,
             int size, ImageBudget& budget) {
     if (size <= 0) fail("empty image");
-    std::string cleaned;
-    if (is_png(bytes, size)) check_png_chunks(bytes, size, cleaned);
-    if (!cleaned.empty()) {
-        bytes = reinterpret_cast<const unsigned char*>(cleaned.data());
-        size = int(cleaned.size());
-    }
     int w = 0;
     int h = 0;
     if (!read_header(bytes, size, w, h))
@@ -113,6 +107,12 @@ void decode(tinygltf::Image& image, int req_width, int req_height, const unsigne
         fail("image is " + std::to_string(w) + "x" + std::to_string(h) + " but declares " +
              std::to_string(req_width) + "x" + std::to_string(req_height));
 
+    std::string cleaned;
+    if (is_png(bytes, size)) check_png_chunks(bytes, size, cleaned);
+    if (!cleaned.empty()) {
+        bytes = reinterpret_cast<const unsigned char*>(cleaned.data());
+        size = int(cleaned.size());
+    }
     int dw = 0;
     int dh = 0;
     int comp = 0;
