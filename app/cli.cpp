@@ -108,7 +108,9 @@ void add_view_options(CLI::App& cmd, Options& o, std::optional<std::string>& win
 
 CLI::App* add_capture_command(CLI::App& app, Options& o, std::optional<std::string>& size_text) {
     auto* capture = app.add_subcommand(
-        "capture", "render one frame headless; write DIR/final.png and DIR/report.json");
+        "capture",
+        "render one frame headless; write DIR/final.png, DIR/report.json and every graph "
+        "image in DIR/resources/");
     add_render_options(*capture, o, /*with_scene=*/true);
     add_text_option(*capture, "--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)")
         ->type_name("WxH");
@@ -124,6 +126,12 @@ CLI::App* add_capture_command(CLI::App& app, Options& o, std::optional<std::stri
                       "offscreen; --size is the UI's size");
     capture->add_option("--view", o.view_resource,
                         "with --ui: the graph resource the viewer shows (default final)");
+    capture
+        ->add_option("--resources", o.resources,
+                     "graph images written to DIR/resources/ as NAME.png (as the viewer "
+                     "shows them) and NAME.exr (raw values): all (default), none or "
+                     "NAME,NAME,…")
+        ->type_name("LIST");
     capture->add_flag("--dump-graph", o.dump_graph,
                       "print the compiled render graph: passes, resources, barriers");
     capture->add_flag("--advise", o.advise,

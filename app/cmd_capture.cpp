@@ -10,6 +10,7 @@
 #include "renderer/capture/output_dir.h"
 #include "renderer/capture/renderdoc.h"
 #include "renderer/capture/report.h"
+#include "renderer/capture/resource_capture.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 #include "renderer/device_info.h"
@@ -113,16 +114,36 @@ capture::Advice advise(const Options& o, Renderer& renderer, const Settings& set
     return advice;
 }
 
+// --resources: the selected graph images into resources/, from the frame rendered again
+// (from a camera cut, as the written frame was) in batches. With --ui the written frame is the
+// inspector's third, so a fresh frame is the reference the batches must equal.
+nlohmann::json write_resources(const Options& o, Renderer& renderer, const Settings& settings,
+                               const scene::Scene& scene, const FrameResult& frame,
+                               const capture::ResourceSelection& selection,
+                               const capture::OutputDir& out) {
+    const auto render = [&](std::span<const InspectRequest> requests) {
+        renderer.camera_cut();
+        return renderer.render(scene.camera, settings, o.size.width, o.size.height, ReadBack::Color,
+                               requests);
+    };
+    if (!o.ui)
+        return capture::capture_resources(frame, selection, render, out.staging_path("resources"));
+    FrameResult reference = render({});
+    reference.resources = frame.resources;
+    return capture::capture_resources(reference, selection, render, out.staging_path("resources"));
+}
+
 void write_report(const Renderer& renderer, const scene::Scene& scene, const Settings& settings,
-                  const FrameResult& frame, const capture::Advice* advice,
+                  const FrameResult& frame, const capture::Advice* advice, nlohmann::json resources,
                   const capture::OutputDir& out) {
-    const nlohmann::json report =
+    nlohmann::json report =
         capture::frame_report({.device = device_info(renderer),
                                .scene = scene,
                                .settings = settings,
                                .frame = frame,
                                .validation_messages = renderer.validation_message_count(),
                                .advice = advice});
+    report["resources"] = std::move(resources);
     capture::write_json(out.staging_path("report.json"), report);
 }
 
@@ -130,6 +151,7 @@ void write_report(const Renderer& renderer, const scene::Scene& scene, const Set
 
 int run_capture(const Options& o) {
     const Settings settings = settings_from(o);
+    const capture::ResourceSelection selection = capture::parse_resource_selection(o.resources);
     // Input first: a bad file fails before any Vulkan work, and before output exists.
     const scene::Scene scene = scene::load_scene(o.scene, settings);
     for (const auto& w : scene.warnings) {
@@ -148,11 +170,14 @@ int run_capture(const Options& o) {
                            out.staging_path("frame")};
     const FrameResult frame = o.ui ? capture_ui_frame(o, renderer, settings, scene, out, rdc)
                                    : capture_plain_frame(o, renderer, settings, scene, out, rdc);
+    const std::string graph = o.dump_graph ? renderer.graph_dump() : std::string();
     // Before anything is committed: a failure here leaves no capture folder.
+    nlohmann::json resources = write_resources(o, renderer, settings, scene, frame, selection, out);
     std::optional<capture::Advice> advice;
     if (o.advise) advice = advise(o, renderer, settings, scene);
-    write_report(renderer, scene, settings, frame, advice ? &*advice : nullptr, out);
-    if (o.dump_graph) std::printf("%s\n", renderer.graph_dump().c_str());
+    write_report(renderer, scene, settings, frame, advice ? &*advice : nullptr,
+                 std::move(resources), out);
+    if (o.dump_graph) std::printf("%s\n", graph.c_str());
     const std::string warning = out.commit();
     if (!warning.empty()) std::fprintf(stderr, "depthscope: warning: %s\n", warning.c_str());
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());

@@ -24,9 +24,23 @@ namespace {
     throw Error(escaped(path.string()) + ": " + what + ": " + std::strerror(error));
 }
 
+// A capture's resources/ folder: a real folder of *.png and *.exr files only.
+bool is_resources_dir(const fs::directory_entry& entry) {
+    std::error_code ec;
+    if (entry.path().filename() != "resources" || !entry.is_directory(ec) || entry.is_symlink(ec))
+        return false;
+    for (fs::directory_iterator it(entry.path(), ec), end; !ec && it != end; it.increment(ec)) {
+        const fs::path ext = it->path().extension();
+        if (!it->is_regular_file(ec) || it->is_symlink(ec) || (ext != ".png" && ext != ".exr"))
+            return false;
+    }
+    return !ec;
+}
+
 // What a capture writes; an existing folder holding only these may be replaced.
 bool is_capture_file(const fs::directory_entry& entry) {
     std::error_code ec;
+    if (is_resources_dir(entry)) return true;
     if (!entry.is_regular_file(ec) || entry.is_symlink(ec)) return false;
     const std::string name = entry.path().filename().string();
     return name == "final.png" || name == "report.json" || entry.path().extension() == ".rdc";
