@@ -71,6 +71,50 @@ void check_png_chunks(const unsigned char* bytes, int size, std::string& cleaned
     if (!empty_idats.empty()) cleaned.append(chars + from, total - from);
 }
 
+bool is_jpeg(const unsigned char* bytes, int size) {
+    return size >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff;
+}
+
+// One DHT segment's tables (`data`, `length` bytes after the length field): each is a class/id
+// byte, 16 code counts and as many symbols. stb_image 2.27 builds a table into 257 entries
+// without checking the counts' sum (an out-of-bounds write for more than 256 codes, found by
+// the fuzzer; stb 2.28 refuses it), so such a table is refused here.
+void check_huffman_tables(const unsigned char* data, size_t length) {
+    size_t at = 0;
+    while (at < length) {
+        if (length - at < 17) fail("JPEG Huffman table is cut short");
+        size_t codes = 0;
+        for (size_t i = 1; i <= 16; ++i) codes += data[at + i];
+        if (codes > 256)
+            fail("JPEG Huffman table declares " + std::to_string(codes) + " codes (at most 256)");
+        at += 17 + codes;
+    }
+}
+
+// A JPEG's marker segments, walked before stb decodes: every DHT checked (above). Entropy-coded
+// data after SOS is skipped to the next marker (0xFF followed by neither 0x00 nor RSTn), so the
+// tables between a progressive JPEG's scans are checked too. Stops at EOI or the end.
+void check_jpeg_segments(const unsigned char* bytes, int size) {
+    const size_t total = size_t(size);
+    size_t at = 2;
+    while (at + 4 <= total) {
+        if (bytes[at] != 0xff) {  // entropy-coded data: find the next marker
+            ++at;
+            continue;
+        }
+        const unsigned char marker = bytes[at + 1];
+        if (marker == 0xff || marker == 0x00 || (marker >= 0xd0 && marker <= 0xd7)) {
+            ++at;  // fill byte, stuffed 0xFF, restart marker
+            continue;
+        }
+        if (marker == 0xd9) return;  // EOI
+        const size_t length = size_t(bytes[at + 2]) << 8 | bytes[at + 3];
+        if (length < 2 || at + 2 + length > total) return;  // stb reports the truncation
+        if (marker == 0xc4) check_huffman_tables(bytes + at + 4, length - 2);
+        at += 2 + length;
+    }
+}
+
 // Width and height from the header. A PNG's are read here directly: stbi_info refuses a PNG
 // whose decoded size passes 1 GiB with a reason that names no size.
 bool read_header(const unsigned char* bytes, int size, int& w, int& h) {
@@ -88,6 +132,8 @@ bool read_header(const unsigned char* bytes, int size, int& w, int& h) {
 void decode(tinygltf::Image& image, int req_width, int req_height, const unsigned char* bytes,
             int size, ImageBudget& budget) {
     if (size <= 0) fail("empty image");
+    // Before stb reads the header: stbi_info already builds the tables it meets before SOF.
+    if (is_jpeg(bytes, size)) check_jpeg_segments(bytes, size);
     int w = 0;
     int h = 0;
     if (!read_header(bytes, size, w, h))

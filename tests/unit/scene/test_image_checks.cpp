@@ -1,6 +1,7 @@
-// PNG files whose chunk lists stb_image mishandles, checked before it decodes them
-// (renderer/scene/gltf_image.cpp): an empty IDAT chunk is dropped (stb would memcpy to null),
-// a PNG with no image data at all is refused with one line.
+// Image files stb_image mishandles, checked before it reads them (renderer/scene/gltf_image.cpp):
+// a PNG's empty IDAT chunk is dropped (stb would memcpy to null), a PNG with no image data at
+// all is refused with one line, and so is a JPEG Huffman table of more than 256 codes (stb 2.27
+// writes past its table).
 #include <array>
 #include <cstdint>
 #include <string>
@@ -88,6 +89,22 @@ TEST(PngChunks, NoImageDataIsRefusedWithOneLine) {
             EXPECT_STREQ(e.what(),
                          "m.gltf: images[0] (\"a.png\"): PNG has no image data (no IDAT bytes)");
         }
+    }
+}
+
+TEST(JpegSegments, AHuffmanTableOfMoreThan256CodesIsRefused) {
+    std::string dht(1, '\0');                 // class 0, id 0
+    dht += std::string(15, char(20)) + '\0';  // 15 lengths with 20 codes each: 300
+    dht += std::string(300, '\x01');
+    const std::string length = {char((dht.size() + 2) >> 8), char((dht.size() + 2) & 0xff)};
+    const std::string jpeg = std::string("\xff\xd8\xff\xc4", 4) + length + dht + "\xff\xd9";
+    try {
+        load_gltf_memory(kDocument, {{"a.bin", buffer()}, {"a.png", jpeg}}, "m.gltf");
+        FAIL() << "loaded";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(),
+                     "m.gltf: images[0] (\"a.png\"): JPEG Huffman table declares 300 "
+                     "codes (at most 256)");
     }
 }
 
