@@ -19,6 +19,7 @@ struct Subcommands {
     CLI::App* export_cmd = nullptr;
     CLI::App* bench = nullptr;
     CLI::App* pixel = nullptr;
+    CLI::App* replay = nullptr;
 };
 
 // --size texts, parsed once the command is known: the window's (view) or the render's. Unset
@@ -196,6 +197,24 @@ CLI::App* add_pixel_command(CLI::App& app, Options& o, SizeTexts& texts) {
     return pixel;
 }
 
+CLI::App* add_replay_command(CLI::App& app, Options& o) {
+    auto* replay = app.add_subcommand(
+        "replay",
+        "render a capture again from its report.json (scene, camera, settings, size) "
+        "into a new capture folder, and say whether final.png is bit-identical");
+    replay->add_option("DIR", o.capture_in, "the capture folder")->required();
+    add_render_options(*replay, o, /*with_scene=*/false);
+    add_path_option(*replay, "--out", o.out, "output folder (default DIR-replay)");
+    replay
+        ->add_option("--resources", o.resources,
+                     "graph images to write, as for capture (default all)")
+        ->type_name("LIST");
+    replay->add_flag("--force", o.force,
+                     "replay a capture of another depthscope version, or of a scene file that "
+                     "changed since");
+    return replay;
+}
+
 // Every subcommand in help order; the top level takes the inspector's options too.
 Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     Subcommands c;
@@ -212,6 +231,7 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     c.export_cmd = add_export_scene_command(app, o);
     c.bench = add_bench_command(app, o, sizes.render);
     c.pixel = add_pixel_command(app, o, sizes);
+    c.replay = add_replay_command(app, o);
     return c;
 }
 
@@ -236,6 +256,7 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
     if (c.export_cmd->parsed()) o.command = Command::ExportScene;
     if (c.bench->parsed()) o.command = Command::Bench;
     if (c.pixel->parsed()) o.command = Command::Pixel;
+    if (c.replay->parsed()) o.command = Command::Replay;
     if (sizes.at) parse_at(*sizes.at, o.at_x, o.at_y);
     if (sizes.render) o.size = parse_size(*sizes.render);
     if (sizes.window) {

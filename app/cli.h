@@ -7,7 +7,18 @@
 
 namespace ds::app {
 
-enum class Command { Default, View, Info, Scenes, Settings, Capture, ExportScene, Bench, Pixel };
+enum class Command {
+    Default,
+    View,
+    Info,
+    Scenes,
+    Settings,
+    Capture,
+    ExportScene,
+    Bench,
+    Pixel,
+    Replay
+};
 
 struct Size {
     uint32_t width = 1280;
@@ -26,6 +37,8 @@ struct Options {
     bool renderdoc = false;
     bool dump_graph = false;
     std::string resources = "all";  // capture --resources: all, none or NAME,NAME,…
+    std::string capture_in;         // replay: the capture folder to render again
+    bool force = false;             // replay --force: another version or a changed scene file
     // view: the window's size and how many frames before it closes (0: until closed)
     Size window{1600, 900};
     int view_frames = 0;

@@ -4,6 +4,7 @@
 
 #include <renderdoc_app.h>
 
+#include "app/capture_job.h"
 #include "app/commands.h"
 #include "app/exit_code.h"
 #include "renderer/capture/image_writer.h"
@@ -35,8 +36,8 @@ Settings settings_from(const Options& o) {
     return settings;
 }
 
-std::filesystem::path capture_dir(const Options& o, const scene::Scene& scene) {
-    if (!o.out.empty()) return o.out;
+std::filesystem::path capture_dir(const std::filesystem::path& out, const scene::Scene& scene) {
+    if (!out.empty()) return out;
     return capture::default_capture_dir(DS_CAPTURE_ROOT, scene.name);
 }
 
@@ -133,32 +134,29 @@ nlohmann::json write_resources(const Options& o, Renderer& renderer, const Setti
     return capture::capture_resources(reference, selection, render, out.staging_path("resources"));
 }
 
-void write_report(const Renderer& renderer, const scene::Scene& scene, const Settings& settings,
-                  const FrameResult& frame, const capture::Advice* advice, nlohmann::json resources,
-                  const capture::OutputDir& out) {
+void write_report(const Renderer& renderer, const CaptureJob& job, const FrameResult& frame,
+                  const capture::Advice* advice, const nlohmann::json& graph,
+                  nlohmann::json resources, const capture::OutputDir& out) {
     nlohmann::json report =
         capture::frame_report({.device = device_info(renderer),
-                               .scene = scene,
-                               .settings = settings,
+                               .scene = job.scene,
+                               .settings = job.settings,
                                .frame = frame,
                                .validation_messages = renderer.validation_message_count(),
-                               .advice = advice});
+                               .advice = advice,
+                               .camera = &job.scene.camera,
+                               .graph = &graph});
     report["resources"] = std::move(resources);
     capture::write_json(out.staging_path("report.json"), report);
 }
 
 }  // namespace
 
-int run_capture(const Options& o) {
-    const Settings settings = settings_from(o);
-    const capture::ResourceSelection selection = capture::parse_resource_selection(o.resources);
-    // Input first: a bad file fails before any Vulkan work, and before output exists.
-    const scene::Scene scene = scene::load_scene(o.scene, settings);
-    for (const auto& w : scene.warnings) {
-        std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
-    }
+int write_capture(const Options& o, const CaptureJob& job) {
+    const Settings& settings = job.settings;
+    const scene::Scene& scene = job.scene;
     const std::unique_ptr<capture::RenderDoc> renderdoc = attach_renderdoc(o);
-    capture::OutputDir out(capture_dir(o, scene));
+    capture::OutputDir out(capture_dir(job.out, scene));
 
     RendererOptions renderer_options;
     renderer_options.validate = o.validate;
@@ -170,18 +168,33 @@ int run_capture(const Options& o) {
                            out.staging_path("frame")};
     const FrameResult frame = o.ui ? capture_ui_frame(o, renderer, settings, scene, out, rdc)
                                    : capture_plain_frame(o, renderer, settings, scene, out, rdc);
-    const std::string graph = o.dump_graph ? renderer.graph_dump() : std::string();
+    const std::string graph_text = o.dump_graph ? renderer.graph_dump() : std::string();
+    const nlohmann::json graph = renderer.graph_json();
     // Before anything is committed: a failure here leaves no capture folder.
-    nlohmann::json resources = write_resources(o, renderer, settings, scene, frame, selection, out);
+    nlohmann::json resources =
+        write_resources(o, renderer, settings, scene, frame, job.resources, out);
     std::optional<capture::Advice> advice;
     if (o.advise) advice = advise(o, renderer, settings, scene);
-    write_report(renderer, scene, settings, frame, advice ? &*advice : nullptr,
-                 std::move(resources), out);
-    if (o.dump_graph) std::printf("%s\n", graph.c_str());
+    write_report(renderer, job, frame, advice ? &*advice : nullptr, graph, std::move(resources),
+                 out);
+    if (o.dump_graph) std::printf("%s\n", graph_text.c_str());
     const std::string warning = out.commit();
     if (!warning.empty()) std::fprintf(stderr, "depthscope: warning: %s\n", warning.c_str());
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());
     return validation_exit_code(renderer);
+}
+
+int run_capture(const Options& o) {
+    CaptureJob job;
+    job.settings = settings_from(o);
+    job.resources = capture::parse_resource_selection(o.resources);
+    job.out = o.out;
+    // Input first: a bad file fails before any Vulkan work, and before output exists.
+    job.scene = scene::load_scene(o.scene, job.settings);
+    for (const auto& w : job.scene.warnings) {
+        std::fprintf(stderr, "depthscope: warning: %s: %s\n", job.scene.source.c_str(), w.c_str());
+    }
+    return write_capture(o, job);
 }
 
 int run_export_scene(const Options& o) {

@@ -12,6 +12,7 @@ int run_export_scene(const Options& options);
 int run_bench(const Options& options);
 int run_soak(const Options& options);  // bench --soak
 int run_pixel(const Options& options);
+int run_replay(const Options& options);
 int run_view(const Options& options);
 bool display_available();  // $DISPLAY or $WAYLAND_DISPLAY set
 

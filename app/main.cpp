@@ -28,6 +28,8 @@ int dispatch(const ds::app::Options& o) {
             return ds::app::run_bench(o);
         case Command::Pixel:
             return ds::app::run_pixel(o);
+        case Command::Replay:
+            return ds::app::run_replay(o);
         case Command::View:
             return ds::app::run_view(o);
         case Command::Default:

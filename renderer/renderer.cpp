@@ -4,6 +4,8 @@
 #include <array>
 #include <chrono>
 
+#include <nlohmann/json.hpp>
+
 #include "renderer/common/error.h"
 #include "renderer/frame/frame_memory.h"
 #include "renderer/frame/frame_passes.h"
@@ -323,6 +325,10 @@ const vk::DeviceReport& Renderer::device_report() const {
 
 std::string Renderer::graph_dump() const {
     return live().graph->dump();
+}
+
+nlohmann::json Renderer::graph_json() const {
+    return live().graph->dump_json();
 }
 
 std::optional<SurfaceInfo> Renderer::describe_surface(uint32_t id) const {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <vulkan/vulkan.h>
+#include <nlohmann/json_fwd.hpp>
 
 #include "renderer/graph/types.h"
 #include "renderer/passes/frame_result.h"
@@ -69,6 +70,8 @@ class Renderer {
     // The last frame's compiled graph as text (passes, resources, barriers); built on demand,
     // so frames that nobody dumps do not pay for the formatting.
     std::string graph_dump() const;
+    // The same as JSON (graph/dump_json.h): report.json's "graph".
+    nlohmann::json graph_json() const;
     // The surface a surface_id texel names in the current scene (its instance's mesh,
     // material and node, and the triangle); none for 0 (nothing drawn) or an unknown id.
     std::optional<SurfaceInfo> describe_surface(uint32_t id) const;

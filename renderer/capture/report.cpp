@@ -5,7 +5,9 @@
 #include <string>
 
 #include "renderer/capture/file_output.h"
+#include "renderer/capture/replay_info.h"
 #include "renderer/common/error.h"
+#include "renderer/common/version.h"
 #include "renderer/format/format.h"
 
 namespace ds::capture {
@@ -199,6 +201,7 @@ nlohmann::json frame_report(const ReportInput& in) {
     const FrameResult& f = in.frame;
     nlohmann::json json = {
         {"tool", "depthscope"},
+        {"version", version()},
         {"device",
          {{"name", in.device.name}, {"driver", in.device.driver}, {"api", in.device.api_version}}},
         {"scene", scene_summary(in.scene)},
@@ -229,6 +232,8 @@ nlohmann::json frame_report(const ReportInput& in) {
                                                             : f.draws_visible_note}};
     }
     if (in.advice) json["advice"] = advice_json(*in.advice);
+    if (in.camera) json["replay"] = replay_json(in.scene, *in.camera, in.settings);
+    if (in.graph) json["graph"] = *in.graph;
     return json;
 }
 

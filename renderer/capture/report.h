@@ -26,6 +26,10 @@ struct ReportInput {
     const FrameResult& frame;
     uint64_t validation_messages = 0;
     const Advice* advice = nullptr;  // capture --advise: report.json's `advice`
+    // Captures: the camera the frame was seen from (report.json's "replay", replay_info.h)
+    // and the compiled graph (Renderer::graph_json, report.json's "graph").
+    const scene::Camera* camera = nullptr;
+    const nlohmann::json* graph = nullptr;
 };
 
 // report.json's object.

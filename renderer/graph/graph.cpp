@@ -6,6 +6,7 @@
 #include "renderer/common/error.h"
 #include "renderer/format/format.h"
 #include "renderer/graph/dump.h"
+#include "renderer/graph/dump_json.h"
 #include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/debug.h"
@@ -269,6 +270,10 @@ void RenderGraph::invalidate_history() {
 
 std::string RenderGraph::dump() const {
     return dump_graph(output_, resources_, passes_, plan_);
+}
+
+nlohmann::json RenderGraph::dump_json() const {
+    return graph_json(output_, resources_, passes_, plan_);
 }
 
 ImageHandle RenderGraph::find_image(std::string_view name) const {

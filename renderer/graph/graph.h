@@ -36,6 +36,7 @@
 #include <vector>
 
 #include <vulkan/vulkan.h>
+#include <nlohmann/json_fwd.hpp>
 
 #include "renderer/graph/access.h"
 #include "renderer/graph/cache.h"
@@ -168,6 +169,7 @@ class RenderGraph {
 
     // The compiled frame, for dump(), the inspector and the capture layer.
     std::string dump() const;
+    nlohmann::json dump_json() const;  // graph/dump_json.h
     VkExtent2D output_extent() const { return output_; }
     std::span<const ResourceInfo> resources() const { return resources_; }
     std::span<const PassInfo> passes() const { return passes_; }

@@ -51,7 +51,8 @@ TEST(StrictInput, SizesAndPixelsAreDigitsOnlyWithoutWrapAround) {
          {"' 64x64'", "'64x64 '", "+64x64", "-1x5", "64X64", "64x", "x64", "0x40x40", "64x64x1",
           "16385x1", "1x16385", "4294967296x4294967296", "0x10", "1e2x1e2", "'64\tx64'"})
         expect_refused(std::string("--size ") + size, "--size expects WIDTHxHEIGHT");
-    for (const char* at : {"4294967296,0", "0,4294967297", "16384,0", "-0,1", "1,", "'1;2'", "''"}) {
+    for (const char* at :
+         {"4294967296,0", "0,4294967297", "16384,0", "-0,1", "1,", "'1;2'", "''"}) {
         const auto r = run_depthscope(std::string("pixel --scene overdraw --size 8x8 --at ") + at);
         EXPECT_EQ(r.exit_code, 2) << at << "\n" << r.err;
         EXPECT_EQ(count_lines(r.err), 1u) << at << "\n" << r.err;

@@ -1,0 +1,112 @@
+// replay (issue 13 part 3): a capture rendered again from its report.json alone.
+#include <fstream>
+#include <sstream>
+
+#include "tests/render/capture_helpers.h"
+
+namespace ds::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> builtin_scenes() {
+    const ProcessResult r = run_depthscope("scenes");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    std::vector<std::string> names;
+    std::istringstream in(r.out);
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty()) names.push_back(line.substr(0, line.find(' ')));
+    return names;
+}
+
+ProcessResult replay(const fs::path& dir, const std::string& extra = "") {
+    return run_depthscope("replay " + dir.string() + " --validate --resources none " + extra);
+}
+
+void expect_identical_replay(const fs::path& dir) {
+    const ProcessResult r = replay(dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("final.png is bit-identical to " + dir.string()), std::string::npos)
+        << r.out;
+    const fs::path again = dir.string() + "-replay";
+    EXPECT_EQ(read_file(again / "final.png"), read_file(dir / "final.png"));
+    // The replay's own report replays the same frame: same camera, settings and size.
+    const auto a = nlohmann::json::parse(read_file(dir / "report.json"));
+    const auto b = nlohmann::json::parse(read_file(again / "report.json"));
+    EXPECT_EQ(a["replay"], b["replay"]);
+    EXPECT_EQ(a["settings"], b["settings"]);
+    EXPECT_EQ(a["graph"], b["graph"]);
+}
+
+TEST(Replay, EveryBuiltinSceneReplaysBitIdentical) {
+    const std::vector<std::string> scenes = builtin_scenes();
+    ASSERT_GE(scenes.size(), 5u);
+    for (const std::string& scene : scenes) {
+        SCOPED_TRACE(scene);
+        const Capture c = capture("replay-" + scene, scene, "96x54");
+        ASSERT_FALSE(c.report.is_discarded());
+        EXPECT_FALSE(c.report["version"].get<std::string>().empty());
+        EXPECT_EQ(c.report["replay"]["scene"]["builtin"], scene);
+        EXPECT_TRUE(c.report["graph"]["passes"].is_array());
+        expect_identical_replay(c.dir);
+    }
+}
+
+TEST(Replay, AGltfFileReplaysAndAChangedFileIsRefusedWithoutForce) {
+    const fs::path dir = fresh_dir("replay-gltf");
+    const fs::path gltf = dir / "foliage.gltf";
+    ASSERT_EQ(run_depthscope("export-scene foliage " + gltf.string()).exit_code, 0);
+    const Capture c = capture("replay-gltf-cap", gltf.string(), "96x54");
+    ASSERT_FALSE(c.report.is_discarded());
+    EXPECT_EQ(c.report["replay"]["scene"]["file"], fs::absolute(gltf).string());
+    EXPECT_EQ(c.report["replay"]["scene"]["sha256"].get<std::string>().size(), 64u);
+    expect_identical_replay(c.dir);
+
+    std::ofstream(gltf, std::ios::app) << "\n";  // same scene, another file
+    fs::remove_all(c.dir.string() + "-replay");
+    const ProcessResult refused = replay(c.dir);
+    EXPECT_EQ(refused.exit_code, 1);
+    EXPECT_EQ(count_lines(refused.err), 1u) << refused.err;
+    EXPECT_NE(refused.err.find("changed since the capture"), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(c.dir.string() + "-replay"));
+    const ProcessResult forced = replay(c.dir, "--force");
+    EXPECT_EQ(forced.exit_code, 0) << forced.err;
+    EXPECT_NE(forced.out.find("bit-identical"), std::string::npos) << forced.out;
+}
+
+TEST(Replay, SetOverridesMakeAnABPairFromOneCamera) {
+    const Capture c = capture("replay-ab", "atrium", "96x54");
+    const fs::path b = fresh_dir("replay-ab-b") / "b";
+    const ProcessResult r = replay(c.dir, "--set exposure=4 --out " + b.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("differs from"), std::string::npos) << r.out;
+    const auto report = nlohmann::json::parse(read_file(b / "report.json"));
+    EXPECT_EQ(report["settings"]["exposure"], "4");
+    EXPECT_EQ(report["replay"]["camera"], c.report["replay"]["camera"]);
+}
+
+TEST(Replay, BadCapturesAreOneLineAndWriteNothing) {
+    const Capture c = capture("replay-bad", "overdraw", "32x32");
+    const fs::path out = fresh_dir("replay-bad-out") / "r";
+    const auto expect_refused = [&](const fs::path& dir, const std::string& why) {
+        const ProcessResult r = run_depthscope("replay " + dir.string() + " --out " + out.string());
+        EXPECT_EQ(r.exit_code, 1) << why;
+        EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+        EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(out));
+    };
+    expect_refused(fresh_dir("replay-empty"), "report.json: no such file");
+    const std::string report = read_file(c.dir / "report.json");
+    std::ofstream(c.dir / "report.json") << report.substr(0, report.size() / 2);
+    expect_refused(c.dir, "report.json: not JSON");
+    auto json = nlohmann::json::parse(report);
+    json["version"] = "v0.0.0-other";
+    std::ofstream(c.dir / "report.json") << json.dump();
+    expect_refused(c.dir, "captured by depthscope 'v0.0.0-other'");
+    json.erase("replay");
+    std::ofstream(c.dir / "report.json") << json.dump();
+    expect_refused(c.dir, "no replay information");
+}
+
+}  // namespace
+}  // namespace ds::test
