@@ -38,8 +38,8 @@ struct Advice {
     double predicted_change_ms = 0;      // prepass - ns/fragment (off) x fragments saved
     double measured_change_ms = 0;       // (depth + forward) on - (depth + forward) off
     double frame_change_ms = 0;          // whole frame on - off (+ the prepass-fed passes)
-    bool keep = false;  // it spares forward fragments and the measured change is < 0
-    bool rule_keep = false;              // overdraw > 2.0
+    bool keep = false;       // it spares forward fragments and the measured change is < 0
+    bool rule_keep = false;  // overdraw > 2.0
     bool agrees() const { return keep == rule_keep; }
 };
 

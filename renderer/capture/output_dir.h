@@ -16,7 +16,8 @@ class RemoveOnSignal;
 class OutputDir {
   public:
     // Throws ds::Error ("DIR: …") when the staging folder cannot be made, when DIR exists and
-    // is no folder, or when it holds anything but a capture's files (final.png, report.json, resources/,
+    // is no folder, or when it holds anything but a capture's files (final.png, report.json,
+    // resources/,
     // *.rdc): a capture replaces its folder whole, and must never take a user's other files.
     explicit OutputDir(std::filesystem::path final_dir);
     ~OutputDir();
