@@ -320,7 +320,8 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
         "depthscope: see inside a depth-prepass Vulkan renderer.\n"
         "Without a command it opens the inspector (`view`) when there is a display, else it "
         "renders a headless capture of the default scene.\n"
-        "Exit codes: 0 ok, 1 runtime or input error, 2 usage error, 3 validation messages seen."};
+        "Exit codes: 0 ok, 1 runtime or input error, 2 usage error, 3 validation messages seen "
+        "(diff: 0 same, 1 differs, 2 trouble)."};
     app.require_subcommand(0, 1);
     SizeTexts sizes;
     const Subcommands commands = add_commands(app, o, sizes);
