@@ -20,6 +20,7 @@ struct Subcommands {
     CLI::App* bench = nullptr;
     CLI::App* pixel = nullptr;
     CLI::App* replay = nullptr;
+    CLI::App* diff = nullptr;
 };
 
 // --size texts, parsed once the command is known: the window's (view) or the render's. Unset
@@ -215,6 +216,39 @@ CLI::App* add_replay_command(CLI::App& app, Options& o) {
     return replay;
 }
 
+// "0.1" -> 0.1: decimal digits with one optional point, 0..100; throws UsageError.
+double parse_percent(const std::string& option, const std::string& text) {
+    double value = -1;
+    const bool plain = !text.empty() && text.find_first_not_of("0123456789.") == std::string::npos;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (!plain || ec != std::errc() || ptr != text.data() + text.size() || value > 100)
+        throw UsageError(option + " expects a percentage in 0..100, got " + quote(text));
+    return value;
+}
+
+CLI::App* add_diff_command(CLI::App& app, Options& o) {
+    auto* diff = app.add_subcommand(
+        "diff",
+        "compare two captures: % of pixels over the threshold per image, the passes' GPU ms "
+        "and counters; exit 0 when final.png's % is at most --max-percent, 1 beyond, 2 on "
+        "error");
+    diff->add_option("a", o.diff_a, "capture folder A (the baseline)")->required();
+    diff->add_option("b", o.diff_b, "capture folder B")->required();
+    add_count_option(*diff, "--threshold", o.diff_threshold, 1, 255,
+                     "8-bit data: a channel differs by at least N/255 (default 8)");
+    diff->add_option_function<std::string>(
+            "--max-percent",
+            [&o](const std::string& text) {
+                o.diff_max_percent = parse_percent("--max-percent", text);
+            },
+            "final.png may differ in at most P % of its pixels (default 0.1)")
+        ->type_name("P");
+    add_path_option(*diff, "--out", o.out,
+                    "also write a heat-map PNG per compared image and diff.json into DIR (a new "
+                    "folder)");
+    return diff;
+}
+
 // Every subcommand in help order; the top level takes the inspector's options too.
 Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     Subcommands c;
@@ -232,6 +266,7 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     c.bench = add_bench_command(app, o, sizes.render);
     c.pixel = add_pixel_command(app, o, sizes);
     c.replay = add_replay_command(app, o);
+    c.diff = add_diff_command(app, o);
     return c;
 }
 
@@ -257,6 +292,7 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
     if (c.bench->parsed()) o.command = Command::Bench;
     if (c.pixel->parsed()) o.command = Command::Pixel;
     if (c.replay->parsed()) o.command = Command::Replay;
+    if (c.diff->parsed()) o.command = Command::Diff;
     if (sizes.at) parse_at(*sizes.at, o.at_x, o.at_y);
     if (sizes.render) o.size = parse_size(*sizes.render);
     if (sizes.window) {
@@ -305,7 +341,8 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
         "depthscope: see inside a depth-prepass Vulkan renderer.\n"
         "Without a command it opens the inspector (`view`) when there is a display, else it "
         "renders a headless capture of the default scene.\n"
-        "Exit codes: 0 ok, 1 runtime or input error, 2 usage error, 3 validation messages seen."};
+        "Exit codes: 0 ok, 1 runtime or input error, 2 usage error, 3 validation messages seen "
+        "(diff: 0 same, 1 differs, 2 trouble)."};
     app.require_subcommand(0, 1);
     SizeTexts sizes;
     const Subcommands commands = add_commands(app, o, sizes);

@@ -17,7 +17,8 @@ enum class Command {
     ExportScene,
     Bench,
     Pixel,
-    Replay
+    Replay,
+    Diff
 };
 
 struct Size {
@@ -52,6 +53,10 @@ struct Options {
     int soak_seconds = 0;  // bench --soak SECONDS (0: no soak)
     // pixel: --at X,Y (checked against --size when the command runs); --json goes to `out`
     uint32_t at_x = 0, at_y = 0;
+    // diff A B [--threshold N] [--max-percent P] [--out DIR]: two capture folders
+    std::string diff_a, diff_b;
+    int diff_threshold = 8;         // of 255, 1..255
+    double diff_max_percent = 0.1;  // 0..100
 };
 
 // Parses argv. Returns the exit code to use right away (help printed: 0), or nullopt to run.

@@ -32,6 +32,8 @@ int dispatch(const ds::app::Options& o) {
             return ds::app::run_replay(o);
         case Command::View:
             return ds::app::run_view(o);
+        case Command::Diff:
+            return ds::app::run_diff(o);
         case Command::Default:
             // The inspector where there is a display; a headless capture where there is none.
             if (ds::app::display_available()) return ds::app::run_view(o);
