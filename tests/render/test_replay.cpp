@@ -85,6 +85,20 @@ TEST(Replay, SetOverridesMakeAnABPairFromOneCamera) {
     EXPECT_EQ(report["replay"]["camera"], c.report["replay"]["camera"]);
 }
 
+// Seed 004's acceptance from one capture: replay it without the prepass and diff the pair.
+TEST(Replay, ThenDiffShowsWhatChanged) {
+    const Capture c = capture("replay-diff", "atrium", "160x90",
+                              "--resources all --set gtao=off --set contact_shadows=off");
+    const fs::path b = fresh_dir("replay-diff-b") / "b";
+    const ProcessResult r =
+        run_depthscope("replay " + c.dir.string() + " --set prepass=off --out " + b.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const ProcessResult d = run_depthscope("diff " + c.dir.string() + " " + b.string());
+    EXPECT_EQ(d.exit_code, 0) << d.out << d.err;
+    EXPECT_NE(d.out.find("depth_prepass"), std::string::npos) << d.out;  // in A only
+    EXPECT_NE(d.out.find("final"), std::string::npos) << d.out;
+}
+
 TEST(Replay, BadCapturesAreOneLineAndWriteNothing) {
     const Capture c = capture("replay-bad", "overdraw", "32x32");
     const fs::path out = fresh_dir("replay-bad-out") / "r";
