@@ -25,6 +25,7 @@ struct Options {
     std::vector<std::string> sets;  // "name=value"
     bool renderdoc = false;
     bool dump_graph = false;
+    std::string trace;              // capture / bench --trace FILE.json: Chrome trace-event JSON
     std::string resources = "all";  // capture --resources: all, none or NAME,NAME,…
     // view: the window's size and how many frames before it closes (0: until closed)
     Size window{1600, 900};

@@ -6,11 +6,13 @@
 
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "renderer/capture/file_output.h"
 #include "renderer/capture/image_writer.h"
 #include "renderer/capture/output_dir.h"
 #include "renderer/capture/renderdoc.h"
 #include "renderer/capture/report.h"
 #include "renderer/capture/resource_capture.h"
+#include "renderer/capture/trace.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 #include "renderer/device_info.h"
@@ -147,9 +149,28 @@ void write_report(const Renderer& renderer, const scene::Scene& scene, const Set
     capture::write_json(out.staging_path("report.json"), report);
 }
 
+// --trace: the written frame's passes (capture/trace.h), written before the capture is
+// committed, so that a failure leaves neither.
+void write_trace(const Options& o, const Renderer& renderer, const scene::Scene& scene,
+                 const Settings& settings, const FrameResult& frame) {
+    capture::write_trace(
+        o.trace, {.command = "capture",
+                  .scene = scene.name,
+                  .width = frame.width,
+                  .height = frame.height,
+                  .device = device_info(renderer).name,
+                  .runs = {{.name = "capture " + scene.name + " " + std::to_string(frame.width) +
+                                    "x" + std::to_string(frame.height),
+                            .settings = settings.values(),
+                            .frames = {frame.passes}}}});
+    std::printf("depthscope: wrote %s\n", o.trace.c_str());
+}
+
 }  // namespace
 
 int run_capture(const Options& o) {
+    // --trace's target before any work: a directory or a device node there is refused now.
+    if (!o.trace.empty()) capture::check_output_file("--trace", o.trace);
     const Settings settings = settings_from(o);
     const capture::ResourceSelection selection = capture::parse_resource_selection(o.resources);
     // Input first: a bad file fails before any Vulkan work, and before output exists.
@@ -164,6 +185,10 @@ int run_capture(const Options& o) {
     renderer_options.validate = o.validate;
     renderer_options.device = o.device;
     Renderer renderer(renderer_options);
+    if (!o.trace.empty()) {
+        capture::check_trace_outside(o.trace, out.final_dir());
+        capture::check_trace_device(o.trace, device_info(renderer));
+    }
     renderer.set_scene(scene);
     const FrameCapture rdc{renderdoc.get(),
                            RENDERDOC_DEVICEPOINTER_FROM_VKINSTANCE(renderer.instance()),
@@ -178,6 +203,7 @@ int run_capture(const Options& o) {
     write_report(renderer, scene, settings, frame, advice ? &*advice : nullptr,
                  std::move(resources), out);
     if (o.dump_graph) std::printf("%s\n", graph.c_str());
+    if (!o.trace.empty()) write_trace(o, renderer, scene, settings, frame);
     const std::string warning = out.commit();
     if (!warning.empty()) std::fprintf(stderr, "depthscope: warning: %s\n", warning.c_str());
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());
