@@ -180,15 +180,13 @@ int run_capture(const Options& o) {
     }
     const std::unique_ptr<capture::RenderDoc> renderdoc = attach_renderdoc(o);
     capture::OutputDir out(capture_dir(o, scene));
+    if (!o.trace.empty()) capture::check_trace_outside(o.trace, out.final_dir());
 
     RendererOptions renderer_options;
     renderer_options.validate = o.validate;
     renderer_options.device = o.device;
     Renderer renderer(renderer_options);
-    if (!o.trace.empty()) {
-        capture::check_trace_outside(o.trace, out.final_dir());
-        capture::check_trace_device(o.trace, device_info(renderer));
-    }
+    if (!o.trace.empty()) capture::check_trace_device(o.trace, device_info(renderer));
     renderer.set_scene(scene);
     const FrameCapture rdc{renderdoc.get(),
                            RENDERDOC_DEVICEPOINTER_FROM_VKINSTANCE(renderer.instance()),

@@ -59,10 +59,8 @@ class ProcessEvents {
     void add_run(const TraceRun& run) {
         events_.push_back(metadata("process_name", pid_, 1, {{"name", run.name}}));
         events_.push_back(metadata("process_sort_index", pid_, 1, {{"sort_index", pid_}}));
-        for (size_t f = 0; f < run.frames.size(); ++f) {
-            const int first = add_frame(run.frames[f], f);
-            if (f == 0) add_settings(run, first);
-        }
+        add_settings(run, /*tid=*/1);  // the first frame's first track, made next
+        for (size_t f = 0; f < run.frames.size(); ++f) add_frame(run.frames[f], f);
     }
 
   private:
@@ -90,8 +88,8 @@ class ProcessEvents {
     // A frame's passes onto its tracks: each on the first one whose last span has ended by its
     // start (in execution order), a new track when none has. A start 1 ns before that end is
     // rounding (a tick period of no whole ns: start and start + gpu_ms round apart) and moves to
-    // it. Returns the frame's first track.
-    int add_frame(const std::vector<PassResult>& passes, size_t frame) {
+    // it.
+    void add_frame(const std::vector<PassResult>& passes, size_t frame) {
         const std::string track =
             in_.track_per_frame ? "frame " + std::to_string(frame + 1) : "graphics queue";
         std::vector<int64_t> track_end{INT64_MIN};
@@ -112,7 +110,6 @@ class ProcessEvents {
         }
         for (const Placed& s : placed) add_span(s, frame);
         add_counters(placed, frame, tids.front());
-        return tids.front();
     }
 
     void add_span(const Placed& s, size_t frame) {
