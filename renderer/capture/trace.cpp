@@ -19,8 +19,13 @@ namespace fs = std::filesystem;
 int64_t to_ns(double ms) {
     return std::llround(ms * 1e6);
 }
+// µs for whole ns: the nearest double, or the next one up where that times 1000 falls short of
+// NS, since Perfetto's importer truncates µs × 1000 (2086.423 would read as 2086422 ns). A reader
+// that rounds gets NS either way.
 double to_us(int64_t ns) {
-    return double(ns) / 1000.0;
+    double us = double(ns) / 1000.0;
+    while (static_cast<int64_t>(us * 1000.0) < ns) us = std::nextafter(us, HUGE_VAL);
+    return us;
 }
 constexpr int64_t kRoundingNs = 1;
 
@@ -86,9 +91,9 @@ class ProcessEvents {
     }
 
     // A frame's passes onto its tracks: each on the first one whose last span has ended by its
-    // start (in execution order), a new track when none has. A start 1 ns before that end is
-    // rounding (a tick period of no whole ns: start and start + gpu_ms round apart) and moves to
-    // it.
+    // start (in execution order), a new track when none has. A start within 1 ns of that end is
+    // rounding (start and start + gpu_ms are rounded apart; with a tick period of no whole ns
+    // they can disagree by one) and becomes that end, so passes that touch on the GPU touch.
     void add_frame(const std::vector<PassResult>& passes, size_t frame) {
         const std::string track =
             in_.track_per_frame ? "frame " + std::to_string(frame + 1) : "graphics queue";
@@ -104,7 +109,8 @@ class ProcessEvents {
                 track_end.push_back(INT64_MIN);
                 tids.push_back(new_track(track + " overlap " + std::to_string(t + 1)));
             }
-            begin = std::clamp(track_end[t], begin, end);
+            if (track_end[t] != INT64_MIN && begin - track_end[t] <= kRoundingNs)
+                begin = std::min(track_end[t], end);
             track_end[t] = end;
             placed.push_back({&p, begin, end, tids[t]});
         }

@@ -42,7 +42,8 @@ std::string meta_name(const json& trace, const char* what, int pid, int tid) {
 }
 
 // What every event of the format needs (dur for complete events), and spans that a viewer can
-// nest: on each track, in whole ns, a span either ends by the next one's start or holds it.
+// nest: on each track, in whole ns as Perfetto reads them, a span ends by the next one's start
+// or holds it.
 void expect_well_formed(const json& trace) {
     ASSERT_TRUE(trace.is_object());
     ASSERT_TRUE(trace["traceEvents"].is_array());
@@ -63,9 +64,10 @@ void expect_well_formed(const json& trace) {
         ASSERT_TRUE(e["dur"].is_number()) << e.dump();
         EXPECT_GE(e["ts"].get<double>(), 0.0) << e.dump();
         EXPECT_GE(e["dur"].get<double>(), 0.0) << e.dump();
-        const int64_t ts = std::llround(e["ts"].get<double>() * 1000);
+        // As Perfetto's importer reads them: µs × 1000, truncated.
+        const int64_t ts = static_cast<int64_t>(e["ts"].get<double>() * 1000.0);
         tracks[{e["pid"], e["tid"]}].push_back(
-            {ts, ts + std::llround(e["dur"].get<double>() * 1000)});
+            {ts, ts + static_cast<int64_t>(e["dur"].get<double>() * 1000.0)});
     }
     for (auto& [track, spans] : tracks) {
         std::sort(spans.begin(), spans.end());

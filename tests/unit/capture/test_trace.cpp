@@ -56,8 +56,9 @@ std::vector<nlohmann::json> of_phase(const nlohmann::json& trace, const std::str
     return out;
 }
 
+// A time in whole ns as Perfetto's JSON importer reads µs: times 1000, truncated.
 int64_t ns(const nlohmann::json& us) {
-    return std::llround(us.get<double>() * 1000.0);
+    return static_cast<int64_t>(us.get<double>() * 1000.0);
 }
 
 // The name a thread_name (or process_name) metadata event gives pid/tid.
@@ -177,8 +178,27 @@ TEST(Trace, PassesThatTouchOnTheGpuStayOnOneTrack) {
     for (size_t i = 0; i < spans.size(); ++i) {
         EXPECT_EQ(spans[i]["tid"], 1) << i;
         EXPECT_NEAR(spans[i]["dur"].get<double>(), passes[i].gpu_ms * 1000.0, 1e-3) << i;
-        if (i > 0) {  // in whole ns, as a viewer reads them
+        if (i > 0) {  // in whole ns, as Perfetto reads them
             EXPECT_EQ(ns(spans[i]["ts"]), ns(spans[i - 1]["ts"]) + ns(spans[i - 1]["dur"]));
+        }
+    }
+}
+
+// Every ts and dur reads back as the same whole ns whether a viewer truncates µs × 1000
+// (Perfetto) or rounds it, so spans that touch touch there too.
+TEST(Trace, TimesReadBackAsWholeNanosecondsTruncatedOrRounded) {
+    std::vector<PassResult> passes;
+    for (int i = 0; i < 3000; ++i) passes.push_back(pass("p", i * 0.0123457, 0.0123457));
+    const auto spans = of_phase(trace_json(capture_input(passes)), "X");
+    ASSERT_EQ(spans.size(), passes.size());
+    for (size_t i = 0; i < spans.size(); ++i) {
+        for (const char* field : {"ts", "dur"}) {
+            const double us = spans[i][field].get<double>();
+            ASSERT_EQ(ns(spans[i][field]), std::llround(us * 1000.0)) << field << " " << us;
+        }
+        EXPECT_EQ(spans[i]["tid"], 1);
+        if (i > 0) {
+            ASSERT_EQ(ns(spans[i]["ts"]), ns(spans[i - 1]["ts"]) + ns(spans[i - 1]["dur"])) << i;
         }
     }
 }
