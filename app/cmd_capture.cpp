@@ -150,7 +150,7 @@ void write_report(const Renderer& renderer, const scene::Scene& scene, const Set
 }
 
 // --trace: the written frame's passes (capture/trace.h), written before the capture is
-// committed, so that a failure leaves neither.
+// committed, so that a trace that cannot be written leaves no capture folder either.
 void write_trace(const Options& o, const Renderer& renderer, const scene::Scene& scene,
                  const Settings& settings, const FrameResult& frame) {
     capture::write_trace(

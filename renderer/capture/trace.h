@@ -9,10 +9,10 @@
 //   measured frame ("frame N"), every frame from ts 0, so frames lie one under another;
 // - per pass a complete event ("ph":"X"): name = the pass, cat = its role (frame, clear,
 //   readback, measure, history), ts = its start after the frame's first timestamp, dur = its
-//   gpu_ms, both in µs (three decimals: whole ns, so back-to-back passes touch exactly and dur
-//   is gpu_ms to 1 ns); args: gpu_ms and the pass's counters. A pass that begins before the
-//   one before it ended (a GPU that overlaps passes) goes on a further track of its frame
-//   ("… overlap 2"), as the viewers need spans on one track to nest;
+//   gpu_ms, both in µs (whole ns, read back alike by viewers that truncate or round µs × 1000,
+//   so back-to-back passes touch exactly; dur is gpu_ms to 2 ns); args: gpu_ms and the pass's
+//   counters. A pass that begins before the one before it ended (a GPU that overlaps passes)
+//   goes on a further track of its frame ("… overlap 2"): viewers nest the spans of a track;
 // - a process-scoped instant event "settings" at ts 0 whose args are every setting;
 // - count_fragments=on: a counter ("ph":"C") "fragments", series "shaded": a pass's shaded
 //   fragments from its start, 0 after its end (bench: one counter per frame, "id" "frame N").
