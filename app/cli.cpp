@@ -134,6 +134,9 @@ CLI::App* add_capture_command(CLI::App& app, Options& o, std::optional<std::stri
                      "shows them) and NAME.exr (raw values): all (default), none or "
                      "NAME,NAME,…")
         ->type_name("LIST");
+    add_path_option(*capture, "--trace", o.trace,
+                    "also write the frame's passes as Chrome trace-event JSON to FILE (GPU "
+                    "timestamps; opens in ui.perfetto.dev and chrome://tracing)");
     capture->add_flag("--dump-graph", o.dump_graph,
                       "print the compiled render graph: passes, resources, barriers");
     capture->add_flag("--advise", o.advise,
@@ -167,6 +170,9 @@ CLI::App* add_bench_command(CLI::App& app, Options& o, std::optional<std::string
         ->type_name("NAME=V1,V2");
     add_path_option(*bench, "--json", o.out,
                     "also write the results as JSON to FILE (a new file or a regular one)");
+    add_path_option(*bench, "--trace", o.trace,
+                    "also write every measured frame's passes as Chrome trace-event JSON to "
+                    "FILE: a process per run, a track per frame");
     bench->add_flag("--ui", o.ui,
                     "draw the inspector offscreen every frame (its cost is measured)");
     bench->add_flag("--advise", o.advise,

@@ -37,6 +37,7 @@ struct Options {
     std::vector<std::string> sets;  // "name=value"
     bool renderdoc = false;
     bool dump_graph = false;
+    std::string trace;              // capture / bench --trace FILE.json: Chrome trace-event JSON
     std::string resources = "all";  // capture --resources: all, none or NAME,NAME,…
     std::string capture_in;         // replay: the capture folder to render again
     bool force = false;             // replay --force: another version or a changed scene file

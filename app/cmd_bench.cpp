@@ -14,6 +14,7 @@
 #include "renderer/capture/advice.h"
 #include "renderer/capture/file_output.h"
 #include "renderer/capture/report.h"
+#include "renderer/capture/trace.h"
 #include "renderer/common/error.h"
 #include "renderer/device_info.h"
 #include "renderer/renderer.h"
@@ -32,6 +33,7 @@ struct RunResult {
     std::vector<Summary> pass_ms;    // GPU, one per pass
     std::vector<std::string> skipped;
     bool ui = false;  // the inspector drawn over each frame (bench --ui)
+    std::vector<std::vector<PassResult>> traced;  // --trace: each measured frame's passes
 };
 
 // One measured frame: the renderer's result and, with --ui, the UI composite's GPU ms.
@@ -64,6 +66,7 @@ std::vector<RunResult> measure(const std::vector<FrameSource>& sources, const Op
         std::vector<PassResult> order;
         std::map<std::string, std::vector<double>> pass_ms;
         std::vector<std::string> skipped;
+        std::vector<std::vector<PassResult>> traced;
         void add(const PassResult& pass, double ms) {
             if (!pass_ms.count(pass.name)) order.push_back(pass);
             pass_ms[pass.name].push_back(ms);
@@ -84,6 +87,11 @@ std::vector<RunResult> measure(const std::vector<FrameSource>& sources, const Op
             s.beyond_ms.push_back(s.wall_ms.back() - m.frame->gpu_ms);
             s.skipped = m.frame->skipped;
             for (const PassResult& p : m.frame->passes) s.add(p, p.gpu_ms);
+            if (!o.trace.empty()) {
+                s.traced.emplace_back();
+                for (const PassResult& p : m.frame->passes)
+                    s.traced.back().push_back(capture::trace_pass(p));
+            }
             if (m.ui_gpu_ms) s.add(ui_pass(), *m.ui_gpu_ms);
         }
     }
@@ -98,17 +106,23 @@ std::vector<RunResult> measure(const std::vector<FrameSource>& sources, const Op
         for (const PassResult& p : run.passes)
             run.pass_ms.push_back(summarize(samples[k].pass_ms[p.name]));
         run.ui = k > 0;
+        run.traced = std::move(samples[k].traced);
         runs.push_back(std::move(run));
     }
     return runs;
 }
 
-void print_run(const RunResult& run, size_t index) {
+// "run 2: prepass=off + inspector"
+std::string run_label(const RunResult& run, size_t index) {
     std::string label;
     for (const auto& [name, value] : run.assignments) label += " " + name + "=" + value;
     if (label.empty()) label = " (defaults)";
     if (run.ui) label += " + inspector";
-    std::printf("\nrun %zu:%s\n", index + 1, label.c_str());
+    return "run " + std::to_string(index + 1) + ":" + label;
+}
+
+void print_run(const RunResult& run, size_t index) {
+    std::printf("\n%s\n", run_label(run, index).c_str());
     std::printf("  %-18s %9s %9s %9s   (GPU ms)\n", "pass", "median", "min", "max");
     for (size_t i = 0; i < run.passes.size(); ++i) {
         const Summary& s = run.pass_ms[i];
@@ -200,6 +214,25 @@ void write_results(const Options& o, const scene::Scene& scene, const nlohmann::
     std::printf("\nbench: wrote %s\n", o.out.c_str());
 }
 
+// --trace: every run a process, every measured frame a track (capture/trace.h). The
+// inspector's composite (bench's "ui" row) is a graph of its own and not in the trace.
+void write_trace(const Options& o, const scene::Scene& scene, const Renderer& renderer,
+                 const Settings& base, std::vector<RunResult>& runs) {
+    capture::TraceInput trace{.command = "bench",
+                              .scene = scene.name,
+                              .width = o.size.width,
+                              .height = o.size.height,
+                              .device = device_info(renderer).name,
+                              .track_per_frame = true,
+                              .runs = {}};
+    for (size_t i = 0; i < runs.size(); ++i)
+        trace.runs.push_back({.name = run_label(runs[i], i),
+                              .settings = combined(base, runs[i].assignments).values(),
+                              .frames = std::move(runs[i].traced)});
+    capture::write_trace(o.trace, trace);
+    std::printf("\nbench: wrote %s\n", o.trace.c_str());
+}
+
 // --advise: the advisor owns the prepass knob, so a matrix over it (or --ui) is refused.
 void check_advise(const Options& o, const std::vector<std::vector<Assignment>>& combinations) {
     if (!o.advise) return;
@@ -251,6 +284,9 @@ nlohmann::json advise_combination(const Options& o, Renderer& renderer, const sc
 }  // namespace
 
 int run_bench(const Options& o) {
+    if (!o.trace.empty() && (o.soak_seconds > 0 || o.advise))
+        throw UsageError("--trace and --" + std::string(o.advise ? "advise" : "soak") +
+                         ": one at a time");
     if (o.soak_seconds > 0) return run_soak(o);  // cmd_soak.cpp
     Settings base;
     for (const auto& assignment : o.sets) base.apply(assignment);
@@ -261,11 +297,13 @@ int run_bench(const Options& o) {
     // --json's target before any frame: a directory or a device node there is refused now,
     // not after the whole benchmark.
     if (!o.out.empty()) capture::check_output_file("--json", o.out);
+    if (!o.trace.empty()) capture::check_output_file("--trace", o.trace);
     const scene::Scene scene = scene::load_scene(o.scene, base);
     RendererOptions renderer_options;
     renderer_options.validate = o.validate;
     renderer_options.device = o.device;
     Renderer renderer(renderer_options);
+    if (!o.trace.empty()) capture::check_trace_device(o.trace, device_info(renderer));
     renderer.set_scene(scene);
     print_header(o, scene, renderer);
     // --ui: the inspector at --size over a scene frame of --size, drawn every frame.
@@ -284,6 +322,7 @@ int run_bench(const Options& o) {
         for (const auto& combination : combinations)
             bench_combination(o, renderer, scene, ui.get(), base, combination, runs);
         runs_out = runs_json(runs, base);
+        if (!o.trace.empty()) write_trace(o, scene, renderer, base, runs);
     }
     if (!o.out.empty()) write_results(o, scene, runs_out);
     ui.reset();  // it draws on the renderer's device: before the renderer's shutdown

@@ -7,11 +7,13 @@
 #include "app/capture_job.h"
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "renderer/capture/file_output.h"
 #include "renderer/capture/image_writer.h"
 #include "renderer/capture/output_dir.h"
 #include "renderer/capture/renderdoc.h"
 #include "renderer/capture/report.h"
 #include "renderer/capture/resource_capture.h"
+#include "renderer/capture/trace.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 #include "renderer/device_info.h"
@@ -150,18 +152,39 @@ void write_report(const Renderer& renderer, const CaptureJob& job, const FrameRe
     capture::write_json(out.staging_path("report.json"), report);
 }
 
+// --trace: the written frame's passes (capture/trace.h), written before the capture is
+// committed, so that a trace that cannot be written leaves no capture folder either.
+void write_trace(const Options& o, const Renderer& renderer, const scene::Scene& scene,
+                 const Settings& settings, const FrameResult& frame) {
+    capture::write_trace(
+        o.trace, {.command = "capture",
+                  .scene = scene.name,
+                  .width = frame.width,
+                  .height = frame.height,
+                  .device = device_info(renderer).name,
+                  .runs = {{.name = "capture " + scene.name + " " + std::to_string(frame.width) +
+                                    "x" + std::to_string(frame.height),
+                            .settings = settings.values(),
+                            .frames = {frame.passes}}}});
+    std::printf("depthscope: wrote %s\n", o.trace.c_str());
+}
+
 }  // namespace
 
 int write_capture(const Options& o, const CaptureJob& job) {
+    // --trace's target before any work: a directory or a device node there is refused now.
+    if (!o.trace.empty()) capture::check_output_file("--trace", o.trace);
     const Settings& settings = job.settings;
     const scene::Scene& scene = job.scene;
     const std::unique_ptr<capture::RenderDoc> renderdoc = attach_renderdoc(o);
     capture::OutputDir out(capture_dir(job.out, scene));
+    if (!o.trace.empty()) capture::check_trace_outside(o.trace, out.final_dir());
 
     RendererOptions renderer_options;
     renderer_options.validate = o.validate;
     renderer_options.device = o.device;
     Renderer renderer(renderer_options);
+    if (!o.trace.empty()) capture::check_trace_device(o.trace, device_info(renderer));
     renderer.set_scene(scene);
     const FrameCapture rdc{renderdoc.get(),
                            RENDERDOC_DEVICEPOINTER_FROM_VKINSTANCE(renderer.instance()),
@@ -178,6 +201,7 @@ int write_capture(const Options& o, const CaptureJob& job) {
     write_report(renderer, job, frame, advice ? &*advice : nullptr, graph, std::move(resources),
                  out);
     if (o.dump_graph) std::printf("%s\n", graph_text.c_str());
+    if (!o.trace.empty()) write_trace(o, renderer, scene, settings, frame);
     const std::string warning = out.commit();
     if (!warning.empty()) std::fprintf(stderr, "depthscope: warning: %s\n", warning.c_str());
     std::printf("depthscope: wrote %s\n", out.final_dir().c_str());

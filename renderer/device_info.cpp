@@ -47,6 +47,7 @@ DeviceInfo device_info(const Renderer& renderer) {
     info.draw_counts =
         d.fragment_stores_and_atomics && d.occlusion_query_precise && d.geometry_shader;
     info.surface_ids = d.geometry_shader;
+    info.timestamps = d.timestamps && d.timestamp_valid_bits > 0;  // as the graph's profiler
     return info;
 }
 

@@ -78,6 +78,7 @@ PassResult pass_result(const graph::PassResult& g, const graph::PassInfo& info,
     p.name = g.name;
     p.role = info.role;
     p.gpu_ms = g.gpu_ms;
+    p.gpu_start_ms = g.gpu_start_ms;
     p.vertex_shader_invocations = g.vertex_invocations;
     p.fragment_shader_invocations = g.fragment_invocations;
     p.clipping_primitives = g.clipping_primitives;

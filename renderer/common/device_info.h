@@ -19,6 +19,9 @@ struct DeviceInfo {
     bool fragment_counts = false;
     bool draw_counts = false;
     bool surface_ids = false;
+    // Whether passes are timed (timestamps on the graphics queue): without, every gpu_ms and
+    // gpu_start_ms is 0 and --trace is refused.
+    bool timestamps = false;
 };
 
 }  // namespace ds

@@ -20,13 +20,26 @@ constexpr uint32_t kStatisticCount = 4;
 
 }  // namespace
 
+std::vector<PassTime> pass_times(std::span<const uint64_t> ticks, uint32_t valid_bits,
+                                 double period_ns) {
+    const uint64_t mask = valid_bits >= 64 ? ~0ull : (1ull << valid_bits) - 1;
+    const auto ms = [&](uint64_t from, uint64_t to) {
+        return double(((to & mask) - (from & mask)) & mask) * period_ns * 1e-6;
+    };
+    std::vector<PassTime> times(ticks.size() / 2);
+    for (size_t i = 0; i < times.size(); ++i) {
+        times[i].start_ms = ms(ticks[0], ticks[2 * i]);
+        times[i].gpu_ms = ms(ticks[2 * i], ticks[2 * i + 1]);
+    }
+    return times;
+}
+
 PassProfiler::PassProfiler(vk::Context& context) : context_(context) {
     const vk::DeviceReport& report = context.report();
     timestamps_ = report.timestamps && report.timestamp_valid_bits > 0;
     statistics_ = report.pipeline_statistics;  // the context enables the feature when present
     period_ns_ = report.timestamp_period_ns;
-    const uint32_t bits = report.timestamp_valid_bits;
-    mask_ = bits >= 64 ? ~0ull : (1ull << bits) - 1;
+    valid_bits_ = report.timestamp_valid_bits;
 }
 
 void PassProfiler::begin_frame(VkCommandBuffer cmd, uint64_t frame,
@@ -84,9 +97,10 @@ std::vector<PassResult> PassProfiler::collect(uint64_t frame) const {
         const std::vector<uint64_t> ticks = slot.timestamps.results(2 * passes, 1);
         if (ticks.empty())
             throw Error("render graph: timestamps not ready (collect before fence?)");
+        const std::vector<PassTime> times = pass_times(ticks, valid_bits_, period_ns_);
         for (uint32_t i = 0; i < passes; ++i) {
-            const uint64_t delta = ((ticks[2 * i + 1] & mask_) - (ticks[2 * i] & mask_)) & mask_;
-            results[i].gpu_ms = double(delta) * period_ns_ * 1e-6;
+            results[i].gpu_start_ms = times[i].start_ms;
+            results[i].gpu_ms = times[i].gpu_ms;
         }
     }
     if (statistics_) {

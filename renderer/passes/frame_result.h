@@ -34,6 +34,10 @@ struct PassResult {
     // (graph::PassRole); reports and the Passes panel group by it.
     graph::PassRole role = graph::PassRole::Frame;
     double gpu_ms = 0;  // from two timestamps around the pass
+    // When the pass began, after the frame's first timestamp (the first pass starts at 0): the
+    // same ticks as gpu_ms, so [gpu_start_ms, gpu_start_ms + gpu_ms] is the pass on the GPU's
+    // clock (--trace). Both 0 when the device has no timestamps.
+    double gpu_start_ms = 0;
     // Pipeline statistics (0 without the device feature). Lavapipe counts fragment shader
     // invocations per rasterized 4x4 block before the depth test: not what a prepass saves.
     uint64_t vertex_shader_invocations = 0;

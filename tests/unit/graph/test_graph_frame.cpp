@@ -126,6 +126,11 @@ TEST_F(GraphVk, ThreePassesClearSampleReadBack) {
             for (const PassResult& r : results) EXPECT_GE(r.gpu_ms, 0.0) << r.name;
             EXPECT_GT(results[1].gpu_ms, 0.0);
             EXPECT_LT(results[1].gpu_ms, 10000.0);
+            // Starts from the frame's first timestamp, in recording order (one queue, one
+            // command buffer: top-of-pipe timestamps do not run backwards).
+            EXPECT_EQ(results[0].gpu_start_ms, 0.0);
+            for (size_t i = 1; i < results.size(); ++i)
+                EXPECT_GE(results[i].gpu_start_ms, results[i - 1].gpu_start_ms) << results[i].name;
         }
         if (graph_->has_statistics()) {
             EXPECT_GE(results[1].vertex_invocations, 3u);
