@@ -25,6 +25,9 @@ void write_png_rgba8(const std::filesystem::path& path, uint32_t width, uint32_t
         static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
     };
     const int stride = int(width * 4);
+    // stb's default level (8) searches hard for little gain; 4 writes a 2048² map about twice
+    // as fast for files a few percent larger.
+    stbi_write_png_compression_level = 4;
     if (!stbi_write_png_to_func(append, &png, int(width), int(height), 4, rgba8.data(), stride)) {
         throw Error(escaped(path.string()) + ": cannot encode PNG");
     }
