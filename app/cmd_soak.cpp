@@ -166,6 +166,12 @@ void print_verdict(const RssVerdict& v, const RssTolerance& tol, const SoakRun& 
         "  %-10s %+9.1f MiB   (%+.2f %%; slope %+.3f MiB/min over the cycle ends; "
         "tolerance: %.0f MiB and %.0f %%)\n",
         "growth", v.growth_mib, v.growth_percent, v.slope_mib_per_min, tol.mib, tol.percent);
+    std::printf(
+        "  %-10s %+9.1f MiB   (RSS over the second half after warm-up; a leak grows "
+        "there, more than %.0f MiB)\n",
+        "late", v.late_growth_mib, tol.mib / 2.0);
+    std::printf("  %-10s %+9.1f MiB   (%+.2f %%: this process's own allocations)\n", "heap",
+                v.heap_growth_mib, v.heap_growth_percent);
 }
 
 nlohmann::json soak_json(const RssVerdict& v, const RssTolerance& tol, const SoakRun& run,
@@ -186,6 +192,11 @@ nlohmann::json soak_json(const RssVerdict& v, const RssTolerance& tol, const Soa
             {"growth_mib", v.growth_mib},
             {"growth_percent", v.growth_percent},
             {"slope_mib_per_min", v.slope_mib_per_min},
+            {"late_growth_mib", v.late_growth_mib},
+            {"heap_growth_mib", v.heap_growth_mib},
+            {"heap_growth_percent", v.heap_growth_percent},
+            {"rss_growing", v.rss_growing},
+            {"heap_growing", v.heap_growing},
             {"tolerance", {{"mib", tol.mib}, {"percent", tol.percent}}},
             {"cycle_ends", cycles},
             {"growing", v.growing}};
@@ -225,12 +236,21 @@ int run_soak(const Options& o) {
         std::printf("soak: wrote %s\n", o.out.c_str());
     }
     if (verdict.growing) {
-        char text[256];
-        std::snprintf(text, sizeof text,
-                      "soak: resident memory grew %.1f MiB (%.1f %%) after warm-up, from %.1f to "
-                      "%.1f MiB: above the tolerance (%.0f MiB and %.0f %%)",
-                      verdict.growth_mib, verdict.growth_percent, mib(verdict.warm),
-                      mib(verdict.end), tolerance.mib, tolerance.percent);
+        char text[320];
+        if (verdict.heap_growing)
+            std::snprintf(text, sizeof text,
+                          "soak: heap in use grew %.1f MiB (%.1f %%) after warm-up: above the "
+                          "tolerance (%.0f MiB and %.0f %%)",
+                          verdict.heap_growth_mib, verdict.heap_growth_percent, tolerance.mib,
+                          tolerance.percent);
+        else
+            std::snprintf(text, sizeof text,
+                          "soak: resident memory grew %.1f MiB (%.1f %%) after warm-up, from "
+                          "%.1f to %.1f MiB, %.1f MiB of it in the second half: above the "
+                          "tolerance (%.0f MiB and %.0f %%, still growing)",
+                          verdict.growth_mib, verdict.growth_percent, mib(verdict.warm),
+                          mib(verdict.end), verdict.late_growth_mib, tolerance.mib,
+                          tolerance.percent);
         throw Error(text);
     }
     std::printf("soak: resident memory flat after warm-up%s\n",

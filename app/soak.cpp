@@ -1,5 +1,7 @@
 #include "app/soak.h"
 
+#include <algorithm>
+
 #include <malloc.h>
 #include <unistd.h>
 #include <cstdio>
@@ -85,7 +87,20 @@ RssVerdict judge_rss(uint64_t start, std::span<const RssSample> ends,
     v.end = ends.back().bytes;
     v.growth_mib = mib(v.end) - mib(v.warm);
     v.growth_percent = v.warm ? 100.0 * v.growth_mib / mib(v.warm) : 0.0;
-    v.growing = v.growth_mib > tolerance.mib && v.growth_percent > tolerance.percent;
+    v.late_growth_mib = v.growth_mib;
+    if (ends.size() >= 3) {
+        const double middle = (ends.front().seconds + ends.back().seconds) / 2.0;
+        const auto mid = std::find_if(ends.begin(), ends.end(),
+                                      [&](const RssSample& s) { return s.seconds >= middle; });
+        v.late_growth_mib = mib(v.end) - mib(mid->bytes);
+    }
+    const uint64_t heap_warm = ends.front().heap_bytes;
+    v.heap_growth_mib = mib(ends.back().heap_bytes) - mib(heap_warm);
+    v.heap_growth_percent = heap_warm ? 100.0 * v.heap_growth_mib / mib(heap_warm) : 0.0;
+    v.rss_growing = v.growth_mib > tolerance.mib && v.growth_percent > tolerance.percent &&
+                    v.late_growth_mib > tolerance.mib / 2.0;
+    v.heap_growing = v.heap_growth_mib > tolerance.mib && v.heap_growth_percent > tolerance.percent;
+    v.growing = v.rss_growing || v.heap_growing;
     if (ends.size() < 2) return v;
     double st = 0, sm = 0, stt = 0, stm = 0;
     for (const RssSample& s : ends) {

@@ -65,11 +65,22 @@ struct RssVerdict {
     uint64_t start = 0, warm = 0, end = 0;  // before the first frame, after warm-up, at the end
     double growth_mib = 0, growth_percent = 0;
     double slope_mib_per_min = 0;  // least squares over the cycle ends from warm-up on
-    bool growing = false;          // growth above both tolerances
+    // RSS growth over the second half of the time after warm-up (all of it with fewer than
+    // three samples): a leak keeps growing there, a driver's pool that grew in steps and
+    // settled does not.
+    double late_growth_mib = 0;
+    double heap_growth_mib = 0, heap_growth_percent = 0;  // heap in use, warm-up to end
+    bool rss_growing = false;   // RSS above both tolerances and still growing late
+    bool heap_growing = false;  // heap in use above both tolerances
+    bool growing = false;       // either
 };
 
 // `cycle_ends`: the samples at the end of each cycle, the first being the end of warm-up.
 // Needs at least one; growth and slope stay 0 with only the warm-up sample.
+// Memory grows when the heap in use (this process's own allocations) grew above both
+// tolerances, or RSS did and at least half the MiB tolerance of it came in the second half of
+// the time: on NVIDIA's driver RSS rises in 4 MiB steps for a minute or two while the heap in
+// use stays flat (H200, 2026-12-02), which a tolerance on RSS alone takes for a leak.
 RssVerdict judge_rss(uint64_t start, std::span<const RssSample> cycle_ends,
                      const RssTolerance& tolerance = {});
 

@@ -70,6 +70,43 @@ TEST(SoakRules, GrowthCountsOnlyAboveBothTolerances) {
     EXPECT_FALSE(ds::app::judge_rss(0, shrinks, tolerance).growing);
 }
 
+// The H200's pattern (2026-12-02, 150 s): RSS rose in two 4 MiB steps within the first minute
+// after warm-up and stayed flat; the heap in use did not move. Not a leak. The same total
+// growth spread evenly is one, and so is heap growth under a flat RSS.
+TEST(SoakRules, StepsThatSettleAreNotALeakGrowthThatGoesOnIs) {
+    const ds::app::RssTolerance tolerance{.mib = 8.0, .percent = 3.0};
+    const uint64_t heap = 48 * kMiB;
+    const std::array<RssSample, 6> steps{{{2, 274 * kMiB + kMiB / 2, heap},
+                                          {21, 279 * kMiB, heap},
+                                          {57, 283 * kMiB + kMiB / 3, heap},
+                                          {80, 283 * kMiB + kMiB / 3, heap},
+                                          {110, 283 * kMiB + kMiB / 3, heap},
+                                          {150, 283 * kMiB + kMiB / 3, heap}}};
+    const ds::app::RssVerdict settled = ds::app::judge_rss(210 * kMiB, steps, tolerance);
+    EXPECT_GT(settled.growth_mib, 8.0);
+    EXPECT_GT(settled.growth_percent, 3.0);
+    EXPECT_DOUBLE_EQ(settled.late_growth_mib, 0.0);
+    EXPECT_FALSE(settled.growing);
+
+    std::array<RssSample, 6> even = steps;
+    for (RssSample& s : even)  // 9 MiB at an even rate over the 148 s
+        s.bytes = 274 * kMiB + uint64_t((s.seconds - 2.0) / 148.0 * 9.0 * double(kMiB));
+    const ds::app::RssVerdict leak = ds::app::judge_rss(210 * kMiB, even, tolerance);
+    EXPECT_GT(leak.late_growth_mib, 4.0);
+    EXPECT_TRUE(leak.rss_growing);
+    EXPECT_TRUE(leak.growing);
+
+    std::array<RssSample, 6> heap_leak = steps;
+    for (size_t i = 0; i < heap_leak.size(); ++i) {
+        heap_leak[i].bytes = 274 * kMiB;
+        heap_leak[i].heap_bytes = heap + i * 2 * kMiB;  // +10 MiB, 21 %
+    }
+    const ds::app::RssVerdict own = ds::app::judge_rss(210 * kMiB, heap_leak, tolerance);
+    EXPECT_FALSE(own.rss_growing);
+    EXPECT_TRUE(own.heap_growing);
+    EXPECT_TRUE(own.growing);
+}
+
 TEST(SoakRules, EachCycleRendersEveryMsaaPrepassProbeCombinationOnce) {
     using ds::app::SoakProbe;
     const std::array<ds::app::Size, 3> sizes{{{64, 36}, {32, 18}, {25, 13}}};
