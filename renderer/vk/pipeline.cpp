@@ -33,16 +33,22 @@ void PipelineLayout::reset() {
     layout_ = VK_NULL_HANDLE;
 }
 
+Pipeline::Pipeline(const Context& context, VkPipeline pipeline)
+    : context_(&context), pipeline_(pipeline) {}
+
 Pipeline& Pipeline::operator=(Pipeline&& other) noexcept {
     if (this == &other) return *this;
     reset();
-    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    context_ = std::exchange(other.context_, nullptr);
     pipeline_ = std::exchange(other.pipeline_, VK_NULL_HANDLE);
     return *this;
 }
 
 void Pipeline::reset() {
-    if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
+    if (pipeline_) {
+        context_->clear_name(VK_OBJECT_TYPE_PIPELINE, pipeline_);
+        vkDestroyPipeline(context_->device(), pipeline_, nullptr);
+    }
     pipeline_ = VK_NULL_HANDLE;
 }
 
@@ -241,7 +247,7 @@ Pipeline GraphicsPipelineBuilder::build(Context& context, const char* name) cons
     check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
           "vkCreateGraphicsPipelines");
     context.set_name(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
-    return Pipeline(device, pipeline);
+    return Pipeline(context, pipeline);
 }
 
 Pipeline create_compute_pipeline(Context& context, VkPipelineLayout layout,
@@ -266,7 +272,7 @@ Pipeline create_compute_pipeline(Context& context, VkPipelineLayout layout,
     vkDestroyShaderModule(device, module, nullptr);  // the pipeline keeps what it needs
     check(result, "vkCreateComputePipelines");
     context.set_name(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
-    return Pipeline(device, pipeline);
+    return Pipeline(context, pipeline);
 }
 
 }  // namespace ds::vk

@@ -36,7 +36,10 @@ class PipelineLayout {
 class Pipeline {
   public:
     Pipeline() = default;
-    Pipeline(VkDevice device, VkPipeline pipeline) : device_(device), pipeline_(pipeline) {}
+    // `context` (kept) removes the pipeline's debug-utils name before it is destroyed: the
+    // validation layer keeps a name until then, and pipelines are rebuilt whenever a knob
+    // invalidates them (a soak's probes do every cycle).
+    Pipeline(const Context& context, VkPipeline pipeline);
     ~Pipeline() { reset(); }
     Pipeline(Pipeline&& other) noexcept { *this = std::move(other); }
     Pipeline& operator=(Pipeline&& other) noexcept;
@@ -48,7 +51,7 @@ class Pipeline {
     VkPipeline handle() const { return pipeline_; }
 
   private:
-    VkDevice device_ = VK_NULL_HANDLE;
+    const Context* context_ = nullptr;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 
