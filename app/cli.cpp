@@ -106,6 +106,13 @@ void add_view_options(CLI::App& cmd, Options& o, std::optional<std::string>& win
                      "close the window after N frames (0: never)");
     add_text_option(cmd, "--size", window_text, "window size WIDTHxHEIGHT (default 1600x900)")
         ->type_name("WxH");
+    add_path_option(cmd, "--capture", o.capture_in,
+                    "open a capture folder: its scene, camera, settings (then --set) and size, "
+                    "pinned for the compare view")
+        ->type_name("DIR");
+    cmd.add_flag("--force", o.force,
+                 "with --capture: a capture of another depthscope version, or of a scene file "
+                 "that changed since");
 }
 
 CLI::App* add_capture_command(CLI::App& app, Options& o, std::optional<std::string>& size_text) {
@@ -280,7 +287,8 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
 // command they would be lost or merged by surprise, so they must follow it.
 void reject_options_before_command(const CLI::App& app) {
     if (app.get_subcommands().size() != 1) return;
-    for (const char* name : {"--validate", "--device", "--scene", "--set", "--frames", "--size"})
+    for (const char* name : {"--validate", "--device", "--scene", "--set", "--frames", "--size",
+                             "--capture", "--force"})
         if (app.count(name))
             throw UsageError(std::string(name) + " before the command '" +
                              app.get_subcommands().front()->get_name() +
@@ -307,6 +315,9 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
     }
     for (CLI::App* cmd : {&app, c.view, c.capture, c.bench, c.pixel})
         if (cmd->count("--scene")) o.scene_given = true;
+    const bool inspector = o.command == Command::View || o.command == Command::Default;
+    if (inspector && !o.capture_in.empty() && o.scene_given)
+        throw UsageError("--scene with --capture: the capture names its scene");
 }
 
 }  // namespace

@@ -39,8 +39,8 @@ struct Options {
     bool dump_graph = false;
     std::string trace;              // capture / bench --trace FILE.json: Chrome trace-event JSON
     std::string resources = "all";  // capture --resources: all, none or NAME,NAME,…
-    std::string capture_in;         // replay: the capture folder to render again
-    bool force = false;             // replay --force: another version or a changed scene file
+    std::string capture_in;  // replay: the capture folder to render again; view --capture: to open
+    bool force = false;  // replay / view --capture --force: another version or a changed scene file
     // view: the window's size and how many frames before it closes (0: until closed)
     Size window{1600, 900};
     int view_frames = 0;

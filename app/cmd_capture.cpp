@@ -11,9 +11,9 @@
 #include "renderer/capture/image_writer.h"
 #include "renderer/capture/output_dir.h"
 #include "renderer/capture/renderdoc.h"
-#include "renderer/capture/report.h"
 #include "renderer/capture/resource_capture.h"
 #include "renderer/capture/trace.h"
+#include "renderer/capture_writer.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 #include "renderer/device_info.h"
@@ -93,12 +93,11 @@ FrameResult capture_ui_frame(const Options& o, Renderer& renderer, const Setting
     return frame;
 }
 
-// The frame alone, read back and written as final.png.
-FrameResult capture_plain_frame(const Options& o, Renderer& renderer, const Settings& settings,
-                                const scene::Scene& scene, const capture::OutputDir& out,
-                                const FrameCapture& rdc) {
+// The frame alone (from a camera cut, renderer/capture_writer.h), written as final.png.
+FrameResult capture_plain_frame(Renderer& renderer, const CaptureSpec& spec,
+                                const capture::OutputDir& out, const FrameCapture& rdc) {
     rdc.start();
-    FrameResult frame = renderer.render(scene.camera, settings, o.size.width, o.size.height);
+    FrameResult frame = render_capture_frame(renderer, spec);
     rdc.end();
     capture::write_png_rgba8(out.staging_path("final.png"), frame.width, frame.height, frame.rgba8);
     return frame;
@@ -117,39 +116,15 @@ capture::Advice advise(const Options& o, Renderer& renderer, const Settings& set
     return advice;
 }
 
-// --resources: the selected graph images into resources/, from the frame rendered again
-// (from a camera cut, as the written frame was) in batches. With --ui the written frame is the
-// inspector's third, so a fresh frame is the reference the batches must equal.
-nlohmann::json write_resources(const Options& o, Renderer& renderer, const Settings& settings,
-                               const scene::Scene& scene, const FrameResult& frame,
-                               const capture::ResourceSelection& selection,
-                               const capture::OutputDir& out) {
-    const auto render = [&](std::span<const InspectRequest> requests) {
-        renderer.camera_cut();
-        return renderer.render(scene.camera, settings, o.size.width, o.size.height, ReadBack::Color,
-                               requests);
-    };
-    if (!o.ui)
-        return capture::capture_resources(frame, selection, render, out.staging_path("resources"));
-    FrameResult reference = render({});
+// --resources: the selected graph images (renderer/capture_writer.h). With --ui the written
+// frame is the inspector's third, so a fresh frame from a cut is the reference the batches
+// must equal.
+nlohmann::json write_resources(const Options& o, Renderer& renderer, const CaptureSpec& spec,
+                               const FrameResult& frame, const capture::OutputDir& out) {
+    if (!o.ui) return write_capture_resources(renderer, spec, frame, out);
+    FrameResult reference = render_capture_frame(renderer, spec);
     reference.resources = frame.resources;
-    return capture::capture_resources(reference, selection, render, out.staging_path("resources"));
-}
-
-void write_report(const Renderer& renderer, const CaptureJob& job, const FrameResult& frame,
-                  const capture::Advice* advice, const nlohmann::json& graph,
-                  nlohmann::json resources, const capture::OutputDir& out) {
-    nlohmann::json report =
-        capture::frame_report({.device = device_info(renderer),
-                               .scene = job.scene,
-                               .settings = job.settings,
-                               .frame = frame,
-                               .validation_messages = renderer.validation_message_count(),
-                               .advice = advice,
-                               .camera = &job.scene.camera,
-                               .graph = &graph});
-    report["resources"] = std::move(resources);
-    capture::write_json(out.staging_path("report.json"), report);
+    return write_capture_resources(renderer, spec, reference, out);
 }
 
 // --trace: the written frame's passes (capture/trace.h), written before the capture is
@@ -189,17 +164,18 @@ int write_capture(const Options& o, const CaptureJob& job) {
     const FrameCapture rdc{renderdoc.get(),
                            RENDERDOC_DEVICEPOINTER_FROM_VKINSTANCE(renderer.instance()),
                            out.staging_path("frame")};
+    const CaptureSpec spec{scene,        scene.camera,  settings,
+                           o.size.width, o.size.height, job.resources};
     const FrameResult frame = o.ui ? capture_ui_frame(o, renderer, settings, scene, out, rdc)
-                                   : capture_plain_frame(o, renderer, settings, scene, out, rdc);
+                                   : capture_plain_frame(renderer, spec, out, rdc);
     const std::string graph_text = o.dump_graph ? renderer.graph_dump() : std::string();
     const nlohmann::json graph = renderer.graph_json();
     // Before anything is committed: a failure here leaves no capture folder.
-    nlohmann::json resources =
-        write_resources(o, renderer, settings, scene, frame, job.resources, out);
+    nlohmann::json resources = write_resources(o, renderer, spec, frame, out);
     std::optional<capture::Advice> advice;
     if (o.advise) advice = advise(o, renderer, settings, scene);
-    write_report(renderer, job, frame, advice ? &*advice : nullptr, graph, std::move(resources),
-                 out);
+    write_capture_report(renderer, spec, frame, graph, std::move(resources),
+                         advice ? &*advice : nullptr, out);
     if (o.dump_graph) std::printf("%s\n", graph_text.c_str());
     if (!o.trace.empty()) write_trace(o, renderer, scene, settings, frame);
     const std::string warning = out.commit();

@@ -3,20 +3,27 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
+#include "app/capture_source.h"
 #include "app/commands.h"
 #include "app/exit_code.h"
 #include "renderer/common/error.h"
+#include "renderer/common/quoted.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 #include "ui/config.h"
 #include "ui/inspector.h"
 #include "ui/presenter.h"
 #include "ui/window.h"
+
+#ifndef DS_CAPTURE_ROOT
+#define DS_CAPTURE_ROOT "captures"
+#endif
 
 namespace ds::app {
 namespace {
@@ -38,6 +45,34 @@ Start start_state(const Options& o, const ui::SavedState& saved) {
 std::string scene_spec(const scene::Scene& scene) {
     const std::string prefix = "builtin:";
     return scene.source.rfind(prefix, 0) == 0 ? scene.source.substr(prefix.size()) : scene.source;
+}
+
+// view --capture DIR: the capture's settings (then --set), scene seen from its camera, and
+// final.png for the compare view, all read before any window opens.
+struct OpenedCapture {
+    std::filesystem::path dir;
+    Settings settings;
+    scene::Scene scene;
+    ui::PinnedCapture pinned;
+};
+
+OpenedCapture open_capture(const Options& o) {
+    const CaptureSource source = read_capture_source(o.capture_in, o.sets, o.force);
+    ui::PinnedCapture pinned = ui::read_pinned_capture(source.dir);
+    const capture::Rgba8Image& shot = pinned.final_image;
+    if (shot.width != source.info.width || shot.height != source.info.height)
+        throw Error(escaped((source.dir / "final.png").string()) + ": " +
+                    std::to_string(shot.width) + "x" + std::to_string(shot.height) +
+                    ", but report.json says " + std::to_string(source.info.width) + "x" +
+                    std::to_string(source.info.height));
+    scene::Scene scene = load_captured_scene(source.info, source.settings, o.force);
+    return {source.dir, source.settings, std::move(scene), std::move(pinned)};
+}
+
+// Where F12 writes: $DEPTHSCOPE_CAPTURE_DIR, else the captures/ folder `capture` uses.
+std::filesystem::path capture_root() {
+    const char* dir = std::getenv("DEPTHSCOPE_CAPTURE_DIR");
+    return dir && *dir ? std::filesystem::path(dir) : std::filesystem::path(DS_CAPTURE_ROOT);
 }
 
 // Where the inspector keeps its state between sessions; all empty without a config folder.
@@ -107,10 +142,21 @@ bool prepare_config_dir(const std::filesystem::path& dir) {
     return true;
 }
 
+// The capture pinned for the compare view, and the live frame at its size: the first frame is
+// the captured one.
+void open_in(ui::Inspector& inspector, OpenedCapture& opened) {
+    const capture::Rgba8Image& shot = opened.pinned.final_image;
+    std::printf("depthscope: inspector: capture %s (%ux%u)\n", opened.dir.c_str(), shot.width,
+                shot.height);
+    inspector.pin(std::move(opened.pinned));
+    inspector.viewer().compare.match_size = true;
+}
+
 // Frames until the window closes or --frames are drawn; returns the count drawn.
 uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& presenter,
                     ui::Inspector& inspector) {
     uint64_t frames = 0;
+    size_t written = 0;  // captures reported so far
     while (!window.should_close() && (o.view_frames == 0 || frames < uint64_t(o.view_frames))) {
         window.poll_events();
         const VkExtent2D fb = window.framebuffer_size();
@@ -126,6 +172,7 @@ uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& present
             continue;
         }
         if (changed) presenter.forget_targets();
+        for (int key : window.take_pressed_keys()) inspector.key_pressed(key);  // F12
         ImGui_ImplGlfw_NewFrame();  // input, then the frame
         ImDrawData* draw = inspector.run_frame();
         presenter.present({target.image, target.view, target.extent}, inspector.viewer_blit(), draw,
@@ -133,14 +180,20 @@ uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& present
         window.present(target, changed);
         if (changed) presenter.forget_targets();
         ++frames;
+        for (; written < inspector.captures_written().size(); ++written) {  // F12
+            std::printf("depthscope: wrote %s\n", inspector.captures_written()[written].c_str());
+            std::fflush(stdout);
+        }
     }
     return frames;
 }
 
-// Scene, settings and window layout for the next session; a failed save is a warning.
-void save_session(const ConfigFiles& files, const ui::Inspector& inspector) {
+// Scene, settings and window layout for the next session; a failed save is a warning. A
+// session on a capture keeps the layout only: the capture's state is not the user's.
+void save_session(const ConfigFiles& files, const ui::Inspector& inspector, bool state) {
     try {
-        ui::save_state(files.state_file, scene_spec(inspector.scene()), inspector.settings());
+        if (state)
+            ui::save_state(files.state_file, scene_spec(inspector.scene()), inspector.settings());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "depthscope: warning: %s\n", e.what());
     }
@@ -157,9 +210,17 @@ bool display_available() {
 
 int run_view(const Options& o) {
     const ConfigFiles files = config_files();
-    const ui::SavedState saved = load_saved_state(files.state_file);
-    Start start = start_state(o, saved);
-    scene::Scene scene = load_start_scene(o, start);
+    std::optional<OpenedCapture> opened;
+    Start start;
+    scene::Scene scene;
+    if (!o.capture_in.empty()) {  // the capture's state wins over the saved one
+        opened = open_capture(o);
+        start.settings = opened->settings;
+        scene = std::move(opened->scene);
+    } else {
+        start = start_state(o, load_saved_state(files.state_file));
+        scene = load_start_scene(o, start);
+    }
 
     Renderer renderer(window_renderer_options(o));
     // After the renderer, and destroyed before its shutdown: the swapchain and surface before
@@ -176,10 +237,13 @@ int run_view(const Options& o) {
     ImGui_ImplGlfw_InitForVulkan(window->handle(), true);
     {
         ui::Presenter presenter(renderer.context(), window->format());
-        ui::Inspector inspector(renderer, start.settings, std::move(scene), {});
+        ui::Inspector::Options options;
+        options.capture_root = capture_root();
+        ui::Inspector inspector(renderer, start.settings, std::move(scene), options);
+        if (opened) open_in(inspector, *opened);
         const uint64_t frames = run_frames(o, *window, presenter, inspector);
         presenter.wait_idle();
-        if (persist) save_session(files, inspector);
+        if (persist) save_session(files, inspector, /*state=*/!opened);
         const VkExtent2D last = window->framebuffer_size();
         std::printf("depthscope: %llu frames (window %ux%u)\n",
                     static_cast<unsigned long long>(frames), last.width, last.height);

@@ -36,7 +36,8 @@ int dispatch(const ds::app::Options& o) {
             return ds::app::run_diff(o);
         case Command::Default:
             // The inspector where there is a display; a headless capture where there is none.
-            if (ds::app::display_available()) return ds::app::run_view(o);
+            // --capture opens the inspector: without a display it fails there, not as a capture.
+            if (ds::app::display_available() || !o.capture_in.empty()) return ds::app::run_view(o);
             std::fprintf(stderr, "depthscope: no display: rendering a headless capture of '%s'\n",
                          o.scene.c_str());
             return ds::app::run_capture(o);

@@ -54,6 +54,7 @@ std::vector<uint8_t> HeadlessUi::frame(const HeadlessInput& input) {
     std::fill(std::begin(io.KeysDown), std::end(io.KeysDown), false);
     for (int k : input.keys)
         if (k >= 0 && k < int(IM_ARRAYSIZE(io.KeysDown))) io.KeysDown[k] = true;
+    for (int k : input.pressed) inspector_->key_pressed(k);
 
     ImDrawData* draw = inspector_->run_frame();
     return presenter_->render_offscreen(size_, inspector_->viewer_blit(), draw, &stats_);

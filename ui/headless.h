@@ -26,6 +26,7 @@ struct HeadlessInput {
     bool ctrl = false, shift = false;
     std::vector<int> keys;  // held, by ImGui 1.86 key index (GLFW codes: ASCII for letters)
     float dt = 1.0f / 60.0f;
+    std::vector<int> pressed;  // pressed since the last frame, as the window's callback reports
 };
 
 class HeadlessUi {

@@ -14,6 +14,7 @@ namespace ds::ui {
 namespace {
 
 constexpr const char* kZfightImage = "zfight";  // shown as a heat map over the frame
+constexpr int kKeyF12 = 301;                    // GLFW_KEY_F12
 
 template <class... Ts>
 struct Overloaded : Ts... {
@@ -100,6 +101,10 @@ void Inspector::set_scene(scene::Scene scene) {
 }
 
 VkExtent2D Inspector::render_size() const {
+    if (viewer_.compare.match_size && compare_.pinned()) {
+        const capture::Rgba8Image& shot = compare_.pinned()->final_image;
+        return {shot.width, shot.height};
+    }
     if (options_.render_size) return *options_.render_size;
     float w = viewer_.w, h = viewer_.h;
     if (w < 1 || h < 1) {
@@ -126,6 +131,10 @@ ImDrawData* Inspector::run_frame() {
     return ImGui::GetDrawData();
 }
 
+void Inspector::key_pressed(int key) {
+    if (key == kCaptureKey) pending_.push_back(CaptureFrame{});  // anywhere in the window
+}
+
 void Inspector::draw() {
     const ImGuiIO& io = ImGui::GetIO();
     const PanelLayout layout{io.DisplaySize.x, io.DisplaySize.y};
@@ -140,6 +149,7 @@ void Inspector::draw() {
     draws_panel(panel, layout);
     overlays_panel(panel, layout);
     pixel_panel(panel, layout);
+    compare_panel(panel, layout);
     viewer_panel(panel, layout);  // last: it takes the camera input the others left
 }
 
@@ -202,6 +212,8 @@ void Inspector::apply(const Action& action) {
                            std::swap(viewer_.overlays[a.index], viewer_.overlays[size_t(to)]);
                    },
                    [&](const PickPixel& a) { pick_pixel(a); },
+                   [&](const CaptureFrame&) { capture_frame(); },
+                   [&](const PinCapture& a) { pin_capture(a.dir); },
                },
                action);
 }
@@ -242,8 +254,11 @@ void Inspector::render() {
     // The shown image, the overlays and what they are derived from and scaled by, by the
     // names the last frame had.
     const std::vector<InspectRequest> request = ViewComposer::request(viewer_, frame_.resources);
-    // The Z-fight heat map is drawn over the dimmed final image: read that back too.
-    const ReadBack read_back = viewer_.resource == kZfightImage ? ReadBack::Color : ReadBack::No;
+    // The Z-fight heat map is drawn over the dimmed final image, the compare view compares it:
+    // read that back too.
+    const ReadBack read_back = viewer_.resource == kZfightImage || compare_.active(viewer_.compare)
+                                   ? ReadBack::Color
+                                   : ReadBack::No;
     try {
         frame_ = renderer_.render(camera_.camera(), settings_, size.width, size.height, read_back,
                                   request);
@@ -267,6 +282,7 @@ void Inspector::render() {
         view::overlay_counts(view_, *shown_, frame_.rgba8, 0.3f, selected_pair_pixels());
     composer_.stack_overlays(frame_, viewer_, view_);
     if (shown_) view::highlight(view_, selected_draw_pixels(), 0.25f);  // over every overlay
+    compare_.compose(frame_, viewer_.compare);
 }
 
 // Both configurations through the inspector's renderer, camera, size and settings; the next
@@ -373,9 +389,10 @@ std::string Inspector::overlay_text(uint32_t x, uint32_t y) const {
 ViewerBlit Inspector::viewer_blit() const {
     ViewerBlit b;
     if (view_.rgba8.empty() || viewer_.w < 1 || viewer_.h < 1) return b;
-    b.rgba8 = &view_.rgba8;
-    b.width = view_.width;
-    b.height = view_.height;
+    const bool compared = !compare_.rgba8().empty();  // the compare view replaces the image
+    b.rgba8 = compared ? &compare_.rgba8() : &view_.rgba8;
+    b.width = compared ? compare_.width() : view_.width;
+    b.height = compared ? compare_.height() : view_.height;
     b.dst_x = viewer_.x;
     b.dst_y = viewer_.y;
     b.dst_w = viewer_.w;
@@ -383,8 +400,8 @@ ViewerBlit Inspector::viewer_blit() const {
     const float zoom = std::max(viewer_.zoom, 1e-3f);
     b.src_w = viewer_.w / zoom;
     b.src_h = viewer_.h / zoom;
-    b.src_x = viewer_.centre.x * float(view_.width) - 0.5f * b.src_w;
-    b.src_y = viewer_.centre.y * float(view_.height) - 0.5f * b.src_h;
+    b.src_x = viewer_.centre.x * float(b.width) - 0.5f * b.src_w;
+    b.src_y = viewer_.centre.y * float(b.height) - 0.5f * b.src_h;
     b.nearest = zoom >= 1.0f;
     return b;
 }

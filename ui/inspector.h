@@ -26,6 +26,7 @@
 #include "renderer/view/decode.h"
 #include "renderer/view/readout.h"
 #include "ui/camera_controller.h"
+#include "ui/compare.h"
 #include "ui/shader_watch.h"
 #include "ui/view_composer.h"
 #include "ui/viewer_blit.h"
@@ -73,9 +74,16 @@ struct MoveOverlay {
 struct PickPixel {
     uint32_t x = 0, y = 0;
 };
-using Action =
-    std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders, SetAutoReload,
-                 ResetSettings, MeasureAdvice, AddOverlay, RemoveOverlay, MoveOverlay, PickPixel>;
+// F12 or the Capture button: a capture of the current frame (camera, settings, render size)
+// into the capture root, through the live renderer; pinned for the compare view afterwards.
+struct CaptureFrame {};
+// The compare view's capture: a capture folder's final.png (an empty path unpins).
+struct PinCapture {
+    std::filesystem::path dir;
+};
+using Action = std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders,
+                            SetAutoReload, ResetSettings, MeasureAdvice, AddOverlay, RemoveOverlay,
+                            MoveOverlay, PickPixel, CaptureFrame, PinCapture>;
 
 enum class MouseTarget : uint8_t { Camera, Image, Pick };
 
@@ -99,6 +107,7 @@ struct ViewerState {
     int draw = -1;         // the Draws panel's selected draw group: its pixels stay, the rest dims
     std::vector<Overlay> overlays;   // blended in order: the last on top
     bool shared_count_scale = true;  // a pass's count images share one heat scale and legend
+    CompareState compare;            // the live frame against a pinned capture
     // Filled by the viewer panel.
     float x = 0, y = 0, w = 0, h = 0;  // the image area, in framebuffer pixels
     std::optional<view::Readout> hover;
@@ -131,7 +140,8 @@ class Inspector {
     struct Options {
         uint32_t fallback_width = 1280, fallback_height = 720;  // before the first layout
         bool watch_shaders = true;
-        std::optional<VkExtent2D> render_size;  // fixed scene size (bench --ui)
+        std::optional<VkExtent2D> render_size;            // fixed scene size (bench --ui)
+        std::filesystem::path capture_root = "captures";  // where F12 writes (a folder each)
     };
     Inspector(Renderer& renderer, Settings settings, scene::Scene scene, Options options);
 
@@ -140,6 +150,11 @@ class Inspector {
     void update();            // after draw(): actions, camera, one rendered frame, decode
     void apply(const Action& action);
     void queue(Action action) { pending_.push_back(std::move(action)); }
+    // A key press, by GLFW key code, from the window's key callback (or HeadlessUi): F12
+    // captures. Presses come from the driver, not ImGui 1.86, which sees only keys held down
+    // at a frame's start.
+    static constexpr int kCaptureKey = 301;  // GLFW_KEY_F12
+    void key_pressed(int key);
 
     // What the presenter draws under ImGui.
     ViewerBlit viewer_blit() const;
@@ -180,8 +195,17 @@ class Inspector {
     uint64_t pixel_picks() const { return pixel_picks_; }  // PickPixel actions applied so far
     const scene::Camera& camera() const { return camera_.camera(); }
     CameraInput& camera_input() { return camera_input_; }
-    // The render size the next frame uses: the viewer's area times render_scale.
+    // The render size the next frame uses: the viewer's area times render_scale (the pinned
+    // capture's size with compare.match_size).
     VkExtent2D render_size() const;
+    // Captures (F12): the folder the last one wrote ("" none yet) and its error ("" none),
+    // every folder written this session, the compare view.
+    const std::filesystem::path& capture_path() const { return capture_path_; }
+    const std::string& capture_error() const { return capture_error_; }
+    const std::vector<std::filesystem::path>& captures_written() const { return captures_; }
+    const CaptureCompare& compare() const { return compare_; }
+    // Pins a capture read beforehand (view --capture); PinCapture reads one itself.
+    void pin(PinnedCapture capture) { compare_.pin(std::move(capture)); }
     // Hover readout of the shown resource at image texel (x, y).
     std::optional<view::Readout> readout_at(uint32_t x, uint32_t y) const;
     std::vector<uint8_t> selected_pair_pixels() const;
@@ -196,6 +220,7 @@ class Inspector {
     struct PanelState {
         std::array<char, 512> scene_path{};
         std::array<char, 128> draw_filter{};  // the Draws panel's filter (mesh/material/node)
+        std::array<char, 512> pin_path{};     // the Compare panel's capture folder field
         std::vector<size_t> draw_rows;        // the Draws panel's rows as last drawn
         uint64_t pixel_picks_shown = 0;       // the Pixel panel opens on a new pick
     };
@@ -209,6 +234,8 @@ class Inspector {
     void render();
     void measure_advice();
     void pick_pixel(const PickPixel& pick);
+    void capture_frame();  // inspector_capture.cpp
+    void pin_capture(const std::filesystem::path& dir);
 
     Renderer& renderer_;
     DeviceInfo device_;  // what the panels say of the device's counters
@@ -239,6 +266,10 @@ class Inspector {
     std::optional<DepthResult> pixel_depth_;
     std::string pixel_label_, pixel_error_;
     uint64_t pixel_picks_ = 0;
+    std::filesystem::path capture_path_;
+    std::string capture_error_;
+    std::vector<std::filesystem::path> captures_;
+    CaptureCompare compare_;
     mutable PanelState panel_state_;
 };
 

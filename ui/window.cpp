@@ -39,6 +39,18 @@ Window::Window(uint32_t width, uint32_t height, const std::string& title) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     window_ = glfwCreateWindow(int(width), int(height), title.c_str(), nullptr, nullptr);
     if (!window_) throw Error("cannot open a window: " + glfw_error());
+    // Before ImGui's GLFW backend installs its callback, which then calls this one too.
+    glfwSetWindowUserPointer(window_, this);
+    glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
+        if (action == GLFW_PRESS)
+            static_cast<Window*>(glfwGetWindowUserPointer(w))->pressed_.push_back(key);
+    });
+}
+
+std::vector<int> Window::take_pressed_keys() {
+    std::vector<int> keys;
+    keys.swap(pressed_);
+    return keys;
 }
 
 Window::~Window() {

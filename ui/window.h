@@ -33,6 +33,10 @@ class Window {
     void poll_events() const;
     void wait_events() const;  // while minimised
     VkExtent2D framebuffer_size() const;
+    // Keys pressed since the last call (GLFW codes), each press once. ImGui 1.86 sees a key
+    // only while it is down at a frame's start, so a press shorter than a slow frame (lavapipe)
+    // would be lost there.
+    std::vector<int> take_pressed_keys();
 
     // After the Renderer's context exists: the surface and a first swapchain.
     void attach(vk::Context& context);
@@ -56,6 +60,7 @@ class Window {
     void destroy_swapchain();
 
     GLFWwindow* window_ = nullptr;
+    std::vector<int> pressed_;  // by the key callback, during poll_events
     vk::Context* context_ = nullptr;
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
     VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;

@@ -23,10 +23,11 @@ struct PanelLayout {
     // Side columns: 340 and 460 at 1600 wide, narrower in a small window.
     float left() const { return std::min(340.0f, 0.22f * width); }
     float right() const { return std::min(460.0f, 0.29f * width); }
-    // The panels that open over the lower viewer (Draws, Depth, Advisor, Overlays, Pixel)
+    // The panels that open over the lower viewer (Draws, Depth, Advisor, Overlays, Pixel,
+    // Compare)
     // start collapsed, their title bars stacked from 55% of the height down, one per slot;
     // opened, each spans the viewer's width down to the bottom.
-    enum Slot : int { kDraws, kDepth, kAdvisor, kOverlays, kPixel };
+    enum Slot : int { kDraws, kDepth, kAdvisor, kOverlays, kPixel, kCompare };
     float stacked_y(Slot slot) const { return height * 0.55f + 24.0f * float(slot); }
     void next_stacked_window(Slot slot) const;  // position, size and collapsed, first use
 };
@@ -42,6 +43,7 @@ void advisor_panel(PanelIo& io, const PanelLayout& layout);
 void draws_panel(PanelIo& io, const PanelLayout& layout);
 void overlays_panel(PanelIo& io, const PanelLayout& layout);
 void pixel_panel(PanelIo& io, const PanelLayout& layout);
+void compare_panel(PanelIo& io, const PanelLayout& layout);
 
 // The Draws panel's table: column ids (kDrawShaded + k: shaded fragments of the k-th counting
 // pass of the draws' shaded_fragments), and the rows to show — indices into `draws` whose
@@ -63,5 +65,9 @@ std::vector<size_t> draw_rows(const std::vector<DrawReport>& draws, const std::s
 
 // Shared widgets.
 void help_marker(const char* text);  // "(?)" with a tooltip
+// The last capture's folder (or its error) and, with the compare view on, what it shows: the
+// viewer's status line and the Compare panel's.
+void capture_status(const Inspector& inspector);
+void compare_status(const Inspector& inspector, const CompareState& state);
 
 }  // namespace ds::ui

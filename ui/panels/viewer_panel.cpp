@@ -147,6 +147,8 @@ void controls(PanelIo& io) {
     zoom_controls(v, view);
     ImGui::SameLine();
     mouse_mode(v);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("capture")) io.actions.push_back(CaptureFrame{});  // F12 too
 }
 
 // A heat map's legend: counts, or scene units on a log scale (depth_precision), after what
@@ -278,9 +280,10 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
         ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "'%s' is not in this frame (its pass is off)",
                            v.resource.c_str());
 
-    // The image area: what is left above the readout lines (one more with overlays).
+    // The image area: what is left above the readout lines (one more with overlays) and the
+    // status line (always there: a capture must not change the render size).
     const float readout_height =
-        ImGui::GetFrameHeightWithSpacing() * (v.overlays.empty() ? 2.0f : 3.0f);
+        ImGui::GetFrameHeightWithSpacing() * (v.overlays.empty() ? 3.0f : 4.0f);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImVec2 avail = ImGui::GetContentRegionAvail();
     avail.y = std::max(avail.y - readout_height, 1.0f);
@@ -299,6 +302,13 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
 
     hover(io, hovered, scale);
     readout_lines(v);
+    capture_status(io.inspector);
+    if (io.inspector.compare().active(v.compare)) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("|");
+        ImGui::SameLine();
+        compare_status(io.inspector, v.compare);
+    }
     if (!io.inspector.message().empty())
         ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", io.inspector.message().c_str());
     ImGui::End();

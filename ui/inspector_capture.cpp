@@ -1,0 +1,47 @@
+// The inspector's captures (F12, the Capture button) and the compare view's pinned capture.
+#include <exception>
+
+#include "renderer/capture/output_dir.h"
+#include "renderer/capture_writer.h"
+#include "ui/inspector.h"
+
+namespace ds::ui {
+
+// A normal capture (final.png, every resource, report.json; `depthscope replay` renders it
+// again bit for bit) of what the viewer shows: this camera, these settings, the render size,
+// through the live renderer (renderer/capture_writer.h). The UI waits meanwhile. The capture
+// renders from a camera cut; the next live frame starts from one too, so it is the captured
+// frame exactly rather than one blended with history from before.
+void Inspector::capture_frame() {
+    const VkExtent2D size = render_size();
+    const scene::Camera camera = camera_.camera();
+    const capture::ResourceSelection every_resource;  // capture's default: all
+    try {
+        capture::OutputDir out(capture::default_capture_dir(options_.capture_root, scene_.name));
+        write_frame_capture(
+            renderer_, {scene_, camera, settings_, size.width, size.height, every_resource}, out);
+        const std::string warning = out.commit();
+        capture_path_ = out.final_dir();
+        captures_.push_back(capture_path_);
+        capture_error_ = warning;  // in place, but old files were left behind
+        pin_capture(capture_path_);
+    } catch (const std::exception& e) {
+        capture_error_ = e.what();  // the staging folder is gone; the last capture stays
+    }
+    renderer_.camera_cut();
+}
+
+void Inspector::pin_capture(const std::filesystem::path& dir) {
+    if (dir.empty()) {
+        compare_.unpin();
+        return;
+    }
+    try {
+        compare_.pin(read_pinned_capture(dir));
+        message_.clear();
+    } catch (const std::exception& e) {
+        message_ = e.what();  // the pinned capture, if any, stays
+    }
+}
+
+}  // namespace ds::ui
