@@ -204,6 +204,7 @@ class Inspector {
     const std::string& capture_error() const { return capture_error_; }
     const std::vector<std::filesystem::path>& captures_written() const { return captures_; }
     const CaptureCompare& compare() const { return compare_; }
+    void set_capture_root(std::filesystem::path root) { options_.capture_root = std::move(root); }
     // Pins a capture read beforehand (view --capture); PinCapture reads one itself.
     void pin(PinnedCapture capture) { compare_.pin(std::move(capture)); }
     // Hover readout of the shown resource at image texel (x, y).

@@ -10,8 +10,9 @@ namespace ds::ui {
 // A normal capture (final.png, every resource, report.json; `depthscope replay` renders it
 // again bit for bit) of what the viewer shows: this camera, these settings, the render size,
 // through the live renderer (renderer/capture_writer.h). The UI waits meanwhile. The capture
-// renders from a camera cut; the next live frame starts from one too, so it is the captured
-// frame exactly rather than one blended with history from before.
+// renders from a camera cut, so the inspector's temporal history stays out of it; the next
+// live frame continues from the capture's own history (the same camera), and is the captured
+// frame bit for bit (ui_capture_tests).
 void Inspector::capture_frame() {
     const VkExtent2D size = render_size();
     const scene::Camera camera = camera_.camera();
@@ -28,7 +29,6 @@ void Inspector::capture_frame() {
     } catch (const std::exception& e) {
         capture_error_ = e.what();  // the staging folder is gone; the last capture stays
     }
-    renderer_.camera_cut();
 }
 
 void Inspector::pin_capture(const std::filesystem::path& dir) {

@@ -28,15 +28,23 @@ void pin_controls(PanelIo& io) {
     } else {
         ImGui::TextDisabled("no capture pinned: a capture pins itself");
     }
-    if (!in.capture_path().empty() && (!pinned || pinned->dir != in.capture_path()) &&
-        ImGui::SmallButton("pin the last capture"))
-        io.actions.push_back(PinCapture{in.capture_path()});
+}
+
+// Any capture folder by path, or the last capture again.
+void pin_other(PanelIo& io) {
+    const Inspector& in = io.inspector;
+    const auto& pinned = in.compare().pinned();
     std::array<char, 512>& path = in.panel_state().pin_path;
     ImGui::SetNextItemWidth(260);
     ImGui::InputTextWithHint("##pin", "capture folder", path.data(), path.size());
     ImGui::SameLine();
     if (ImGui::Button("pin") && path[0] != '\0')
         io.actions.push_back(PinCapture{std::filesystem::path(path.data())});
+    if (!in.capture_path().empty() && (!pinned || pinned->dir != in.capture_path())) {
+        ImGui::SameLine();
+        if (ImGui::Button("pin the last capture"))
+            io.actions.push_back(PinCapture{in.capture_path()});
+    }
 }
 
 void mode_controls(PanelIo& io) {
@@ -57,6 +65,7 @@ void mode_controls(PanelIo& io) {
     }
     const auto& pinned = io.inspector.compare().pinned();
     if (pinned) {
+        ImGui::SameLine();
         char label[96];
         std::snprintf(label, sizeof label, "render at the capture's size (%ux%u)",
                       pinned->final_image.width, pinned->final_image.height);
@@ -103,10 +112,11 @@ void compare_panel(PanelIo& io, const PanelLayout& layout) {
         "it again bit for bit; `depthscope view --capture DIR` opens it.");
     ImGui::SameLine();
     capture_status(io.inspector);
-    ImGui::Separator();
     pin_controls(io);
     mode_controls(io);
     compare_status(io.inspector, io.viewer.compare);
+    ImGui::Separator();
+    pin_other(io);
     ImGui::End();
 }
 
