@@ -212,7 +212,7 @@ void Inspector::apply(const Action& action) {
                            std::swap(viewer_.overlays[a.index], viewer_.overlays[size_t(to)]);
                    },
                    [&](const PickPixel& a) { pick_pixel(a); },
-                   [&](const CaptureFrame&) { capture_frame(); },
+                   [&](const CaptureFrame&) { request_capture(); },
                    [&](const PinCapture& a) { pin_capture(a.dir); },
                },
                action);
@@ -237,6 +237,8 @@ void Inspector::change_settings(const Settings& changed) {
 }
 
 void Inspector::update() {
+    ++updates_;
+    capture_when_shown();
     if (auto_reload_ && watch_.changed()) pending_.push_back(ReloadShaders{});
     std::vector<Action> actions;
     actions.swap(pending_);

@@ -76,6 +76,7 @@ struct PickPixel {
 };
 // F12 or the Capture button: a capture of the current frame (camera, settings, render size)
 // into the capture root, through the live renderer; pinned for the compare view afterwards.
+// Written two UI frames later, once "capturing…" has been presented: the UI waits meanwhile.
 struct CaptureFrame {};
 // The compare view's capture: a capture folder's final.png (an empty path unpins).
 struct PinCapture {
@@ -202,6 +203,7 @@ class Inspector {
     // every folder written this session, the compare view.
     const std::filesystem::path& capture_path() const { return capture_path_; }
     const std::string& capture_error() const { return capture_error_; }
+    bool capturing() const { return pending_capture_.has_value(); }  // asked, not yet written
     const std::vector<std::filesystem::path>& captures_written() const { return captures_; }
     const CaptureCompare& compare() const { return compare_; }
     void set_capture_root(std::filesystem::path root) { options_.capture_root = std::move(root); }
@@ -235,7 +237,15 @@ class Inspector {
     void render();
     void measure_advice();
     void pick_pixel(const PickPixel& pick);
-    void capture_frame();  // inspector_capture.cpp
+    // inspector_capture.cpp
+    struct PendingCapture {
+        scene::Camera camera;  // as the frame shown when it was asked for
+        VkExtent2D size{};
+        uint64_t update = 0;  // the update() that asked
+    };
+    void request_capture();
+    void capture_when_shown();
+    void capture_frame(const PendingCapture& request);
     void pin_capture(const std::filesystem::path& dir);
 
     Renderer& renderer_;
@@ -267,6 +277,8 @@ class Inspector {
     std::optional<DepthResult> pixel_depth_;
     std::string pixel_label_, pixel_error_;
     uint64_t pixel_picks_ = 0;
+    uint64_t updates_ = 0;
+    std::optional<PendingCapture> pending_capture_;
     std::filesystem::path capture_path_;
     std::string capture_error_;
     std::vector<std::filesystem::path> captures_;

@@ -7,20 +7,35 @@
 
 namespace ds::ui {
 
+// The camera and size of the frame on the screen now; the capture itself waits until the
+// next frame has shown "capturing…" (the UI waits for it: seconds at a large size on lavapipe).
+void Inspector::request_capture() {
+    if (!pending_capture_)
+        pending_capture_ = PendingCapture{camera_.camera(), render_size(), updates_};
+}
+
+void Inspector::capture_when_shown() {
+    // Asked in update k, "capturing…" drawn and presented in UI frame k + 1: now is k + 2.
+    if (!pending_capture_ || updates_ < pending_capture_->update + 2) return;
+    const PendingCapture request = *pending_capture_;
+    pending_capture_.reset();
+    capture_frame(request);
+}
+
 // A normal capture (final.png, every resource, report.json; `depthscope replay` renders it
-// again bit for bit) of what the viewer shows: this camera, these settings, the render size,
-// through the live renderer (renderer/capture_writer.h). The UI waits meanwhile. The capture
-// renders from a camera cut, so the inspector's temporal history stays out of it; the next
-// live frame continues from the capture's own history (the same camera), and is the captured
-// frame bit for bit (ui_capture_tests).
-void Inspector::capture_frame() {
-    const VkExtent2D size = render_size();
-    const scene::Camera camera = camera_.camera();
+// again bit for bit) of what the viewer showed: that camera and render size, these settings,
+// through the live renderer (renderer/capture_writer.h). The capture renders from a camera
+// cut, so the inspector's temporal history stays out of it; the next live frame continues
+// from the capture's own history (the same camera) and is the captured frame bit for bit
+// (ui_capture_tests).
+void Inspector::capture_frame(const PendingCapture& request) {
     const capture::ResourceSelection every_resource;  // capture's default: all
     try {
         capture::OutputDir out(capture::default_capture_dir(options_.capture_root, scene_.name));
-        write_frame_capture(
-            renderer_, {scene_, camera, settings_, size.width, size.height, every_resource}, out);
+        write_frame_capture(renderer_,
+                            {scene_, request.camera, settings_, request.size.width,
+                             request.size.height, every_resource},
+                            out);
         const std::string warning = out.commit();
         capture_path_ = out.final_dir();
         captures_.push_back(capture_path_);

@@ -76,7 +76,9 @@ void mode_controls(PanelIo& io) {
 }  // namespace
 
 void capture_status(const Inspector& in) {
-    if (!in.capture_error().empty())
+    if (in.capturing())
+        ImGui::TextColored(kWarning, "capturing... (the inspector waits for it)");
+    else if (!in.capture_error().empty())
         ImGui::TextColored(kError, "capture: %s", in.capture_error().c_str());
     else if (!in.capture_path().empty())
         ImGui::Text("captured %s", in.capture_path().c_str());

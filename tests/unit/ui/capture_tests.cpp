@@ -36,11 +36,16 @@ glm::vec3 vec3(const nlohmann::json& j) {
 
 class InspectorCapture : public InspectorUi {
   protected:
-    // One UI frame with F12 pressed.
+    // F12, and the UI frames until the capture is written: "capturing…" is shown first.
     static void press_f12(HeadlessUi& ui) {
         HeadlessInput in;
         in.pressed = {ui::Inspector::kCaptureKey};
         ui.frame(in);
+        ASSERT_TRUE(ui.inspector().capturing());
+        ui.frame();
+        ASSERT_TRUE(ui.inspector().capturing());  // presented with "capturing…"
+        ui.frame();
+        ASSERT_FALSE(ui.inspector().capturing());
     }
     static size_t non_black(const std::vector<uint8_t>& rgba8) {
         size_t n = 0;
@@ -119,7 +124,7 @@ TEST_F(InspectorCapture, CompareFindsNothingOnTheSameFrameAndAnotherExposureInDi
     const Png shot = read_png(in.capture_path() / "final.png");
     ui::CompareState& compare = in.viewer().compare;
     compare.mode = CompareMode::Diff;
-    for (int i = 0; i < 3; ++i) {  // with temporal history again: the same still frame
+    for (int i = 0; i < 2; ++i) {  // with temporal history again: the same still frame
         ui->frame();
         ASSERT_TRUE(in.compare().differing());
         EXPECT_EQ(*in.compare().differing(), 0u) << "frame " << i;
@@ -200,13 +205,14 @@ TEST_F(InspectorCapture, ACaptureThatCannotBeWrittenIsOneLineAndTheInspectorGoes
     in.set_capture_root(root);
     const uint64_t frames = in.frames_rendered();
     press_f12(*ui);
+    EXPECT_EQ(in.frames_rendered(), frames + 3);  // the frames went on
     EXPECT_NE(in.capture_error(), "");
     EXPECT_EQ(in.capture_error().find('\n'), std::string::npos) << in.capture_error();
     EXPECT_TRUE(in.capture_path().empty());
     EXPECT_TRUE(in.captures_written().empty());
     EXPECT_FALSE(in.compare().pinned());
     ui->frame();
-    EXPECT_EQ(in.frames_rendered(), frames + 2);
+    EXPECT_EQ(in.frames_rendered(), frames + 4);
     // A folder that is no capture is not pinned; the message names what is missing.
     in.queue(ui::PinCapture{root.parent_path()});
     ui->frame();
