@@ -106,13 +106,15 @@ void add_view_options(CLI::App& cmd, Options& o, std::optional<std::string>& win
                      "close the window after N frames (0: never)");
     add_text_option(cmd, "--size", window_text, "window size WIDTHxHEIGHT (default 1600x900)")
         ->type_name("WxH");
-    add_path_option(cmd, "--capture", o.capture_in,
-                    "open a capture folder: its scene, camera, settings (then --set) and size, "
-                    "pinned for the compare view")
-        ->type_name("DIR");
+    CLI::Option* capture =
+        add_path_option(cmd, "--capture", o.capture_in,
+                        "open a capture folder: its scene, camera, settings (then --set) and "
+                        "size, pinned for the compare view")
+            ->type_name("DIR");
     cmd.add_flag("--force", o.force,
                  "with --capture: a capture of another depthscope version, or of a scene file "
-                 "that changed since");
+                 "that changed since")
+        ->needs(capture);
 }
 
 CLI::App* add_capture_command(CLI::App& app, Options& o, std::optional<std::string>& size_text) {

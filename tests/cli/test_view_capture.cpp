@@ -86,6 +86,7 @@ TEST_F(ViewCapture, AnotherVersionOrSettingAreRefusedAndTheSceneCannotBeNamedToo
     expect_refused("--capture " + (root_ / "good").string() + " --set exposure=banana", 2,
                    "exposure");
     expect_refused("--capture ''", 2, "--capture expects a path");
+    expect_refused("--force", 2, "--force requires --capture");
 }
 
 TEST_F(ViewCapture, AChangedSceneFileIsRefusedWithoutForce) {
