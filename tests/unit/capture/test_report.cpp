@@ -46,9 +46,10 @@ nlohmann::json report_of(const FrameResult& frame, const Settings& settings = {}
 
 TEST(Report, HasEveryFieldOfAFrameAndOnlyTheMeasuredOptionalOnes) {
     const nlohmann::json report = report_of(two_pass_frame());
-    EXPECT_EQ(keys(report), (std::set<std::string>{"tool", "device", "scene", "size", "settings",
-                                                   "frame", "validation_messages", "passes",
-                                                   "counters", "skipped", "msaa", "decals"}));
+    EXPECT_EQ(keys(report),
+              (std::set<std::string>{"tool", "version", "device", "scene", "size", "settings",
+                                     "frame", "validation_messages", "passes", "counters",
+                                     "skipped", "msaa", "decals"}));
     EXPECT_EQ(report["decals"],
               (nlohmann::json{{"overlays", nlohmann::json::array()}, {"decals_pass", false}}));
     EXPECT_EQ(report["device"]["driver"], "driver 1");
