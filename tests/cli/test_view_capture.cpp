@@ -14,11 +14,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A capture to break copies of: edges at 64x36, no resources.
+// A capture to break copies of: edges at 64x36, no resources. ctest runs each test as its own
+// process, side by side, so each has its own folder (a shared one is wiped under the others).
 class ViewCapture : public ::testing::Test {
   protected:
-    static void SetUpTestSuite() {
-        root_ = fresh_dir("view_capture");
+    void SetUp() override {
+        root_ = fresh_dir(std::string("view_capture_") +
+                          ::testing::UnitTest::GetInstance()->current_test_info()->name());
         const ProcessResult r = run_depthscope(
             "capture --scene edges --size 64x36 --resources "
             "none --set exposure=2 --out " +
