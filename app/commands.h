@@ -15,6 +15,6 @@ int run_pixel(const Options& options);
 int run_replay(const Options& options);
 int run_view(const Options& options);
 int run_diff(const Options& options);  // 0 same, 1 differs, 2 error (its own one line)
-bool display_available();  // $DISPLAY or $WAYLAND_DISPLAY set
+bool display_available();              // $DISPLAY or $WAYLAND_DISPLAY set
 
 }  // namespace ds::app

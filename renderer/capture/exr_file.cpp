@@ -19,7 +19,7 @@ namespace {
 // What read_exr takes in at most, over all channels (1 GiB of values): far above any capture.
 constexpr uint64_t kMaxValues = uint64_t(1) << 28;
 
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& why) {
+[[noreturn]] void fail_exr(const std::filesystem::path& path, const std::string& why) {
     throw Error(escaped(path.string()) + ": " + why);
 }
 
@@ -40,13 +40,13 @@ const ExrChannel* ExrImage::find(std::string_view name) const {
 
 void write_exr(const std::filesystem::path& path, const ExrImage& image) {
     const size_t texels = size_t(image.width) * image.height;
-    if (texels == 0 || image.channels.empty()) fail(path, "an EXR needs pixels and channels");
+    if (texels == 0 || image.channels.empty()) fail_exr(path, "an EXR needs pixels and channels");
     Imf::Header header(int(image.width), int(image.height));
     header.compression() = Imf::ZIP_COMPRESSION;
     Imf::FrameBuffer frame;
     for (const ExrChannel& c : image.channels) {
         const size_t size = c.is_uint ? c.uints.size() : c.floats.size();
-        if (size != texels) fail(path, "channel " + c.name + " does not hold every pixel");
+        if (size != texels) fail_exr(path, "channel " + c.name + " does not hold every pixel");
         const Imf::PixelType type = c.is_uint ? Imf::UINT : Imf::FLOAT;
         header.channels().insert(c.name, Imf::Channel(type));
         // OpenEXR only reads through the slice's pointer when writing.
@@ -65,14 +65,14 @@ void write_exr(const std::filesystem::path& path, const ExrImage& image) {
         }
         bytes = stream.str();
     } catch (const std::exception& e) {
-        fail(path, "cannot encode EXR: " + first_line(e.what()));
+        fail_exr(path, "cannot encode EXR: " + first_line(e.what()));
     }
     write_new_file(path, bytes);
 }
 
 ExrImage read_exr(const std::filesystem::path& path) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail(path, "no such file");
+    if (!std::filesystem::is_regular_file(path, ec)) fail_exr(path, "no such file");
     ExrImage image;
     try {
         Imf::InputFile file(path.c_str());
@@ -80,7 +80,8 @@ ExrImage read_exr(const std::filesystem::path& path) {
         const int width = window.max.x - window.min.x + 1;
         const int height = window.max.y - window.min.y + 1;
         if (width <= 0 || height <= 0 || uint64_t(width) * uint64_t(height) > kMaxValues)
-            fail(path, "data window of " + std::to_string(width) + "x" + std::to_string(height));
+            fail_exr(path,
+                     "data window of " + std::to_string(width) + "x" + std::to_string(height));
         image.width = uint32_t(width);
         image.height = uint32_t(height);
         const size_t texels = size_t(width) * size_t(height);
@@ -95,7 +96,7 @@ ExrImage read_exr(const std::filesystem::path& path) {
                 c.floats.resize(texels);
             image.channels.push_back(std::move(c));
             if (texels * image.channels.size() > kMaxValues)
-                fail(path, "more than " + std::to_string(kMaxValues) + " values");
+                fail_exr(path, "more than " + std::to_string(kMaxValues) + " values");
         }
         Imf::FrameBuffer frame;
         for (ExrChannel& c : image.channels) {
@@ -110,7 +111,7 @@ ExrImage read_exr(const std::filesystem::path& path) {
     } catch (const Error&) {
         throw;
     } catch (const std::exception& e) {
-        fail(path, "cannot read EXR: " + first_line(e.what()));
+        fail_exr(path, "cannot read EXR: " + first_line(e.what()));
     }
     return image;
 }

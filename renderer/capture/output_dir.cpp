@@ -83,9 +83,9 @@ OutputDir::OutputDir(fs::path final_dir)
     // Beside the final folder, on its file system: commit() is one rename.
     staging_ = target_.string() + ".tmp-" + std::to_string(::getpid());
     on_signal_ = std::make_unique<RemoveOnSignal>(staging_, RemoveOnSignal::Kind::Folder);
-    fs::remove_all(staging_, ec);  // a leftover of an earlier process with this id
-    if (::mkdir(staging_.c_str(), 0777) != 0)
-        fail(target_.parent_path(), "cannot create folder", errno);
+    fs::remove_all(staging_, ec);              // a leftover of an earlier process with this id
+    if (::mkdir(staging_.c_str(), 0777) != 0)  // named as given: the staging name is ours
+        fail(final_, "cannot create folder", errno);
 }
 
 OutputDir::~OutputDir() {

@@ -8,7 +8,7 @@ using graph::Access;
 
 namespace {
 
-ComputeKernel make_kernel(const PassServices& services) {
+ComputeKernel make_blur_kernel(const PassServices& services) {
     return ComputeKernel(services, AoSpatialPass::kShader,
                          {KernelBinding::Sampled, KernelBinding::Sampled, KernelBinding::Sampled,
                           KernelBinding::Storage},
@@ -18,7 +18,7 @@ ComputeKernel make_kernel(const PassServices& services) {
 }  // namespace
 
 AoSpatialPass::AoSpatialPass(const PassServices& services)
-    : horizontal_(make_kernel(services)), vertical_(make_kernel(services)) {
+    : horizontal_(make_blur_kernel(services)), vertical_(make_blur_kernel(services)) {
     vk::DestroyList nothing_in_flight;
     rebuild_pipelines(nothing_in_flight);
 }

@@ -8,14 +8,15 @@
 namespace ds::passes {
 namespace {
 
-const VkDescriptorPoolSize kPoolSizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+const VkDescriptorPoolSize kDepthResolvePoolSizes[] = {
+    {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
 }  // namespace
 
 DepthResolvePass::DepthResolvePass(const PassServices& services, After after)
     : services_(services),
       after_(after),
       nearest_(vk::nearest_clamp_sampler(services.context, "depth resolve nearest")),
-      sets_(services.context, 1, kPoolSizes, "depth resolve sets"),
+      sets_(services.context, 1, kDepthResolvePoolSizes, "depth resolve sets"),
       pipelines_([this](const Variant& v) { return compile(v); },
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
     const VkDescriptorSetLayoutBinding binding = vk::layout_binding(

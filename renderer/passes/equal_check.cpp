@@ -13,10 +13,10 @@
 namespace ds::passes {
 namespace {
 
-constexpr VkDeviceSize kHeaderBytes = 16;  // holes, multiple, appended, padding
+constexpr VkDeviceSize kResultHeaderBytes = 16;  // holes, multiple, appended, padding
 constexpr size_t kTopSurfaces = 10;
 
-struct Push {
+struct EqualCheckPush {
     uint32_t width, height;
     float far_depth;
     uint32_t capacity;
@@ -43,7 +43,7 @@ EqualCheckPass::EqualCheckPass(const PassServices& services)
     pool_ = vk::DescriptorPool(context, 1, sizes, "equal check");
     set_ = pool_.allocate(set_layout_.handle());
     const VkDescriptorSetLayout sets[] = {set_layout_.handle()};
-    const VkPushConstantRange push{c, 0, sizeof(Push)};
+    const VkPushConstantRange push{c, 0, sizeof(EqualCheckPush)};
     layout_ = vk::PipelineLayout(context, sets, {&push, 1}, "equal check layout");
 }
 
@@ -64,8 +64,9 @@ void EqualCheckPass::add(graph::RenderGraph& graph, const FrameInputs& in, Frame
     pipeline_.get(layout_.handle());  // built now, not while the frame records
     const VkExtent2D extent = graph.resources()[res.depth.index].extent;
     capacity_ = extent.width * extent.height;
-    result_ = services_.readback.import_storage(
-        graph, "equal_check_result", kHeaderBytes + VkDeviceSize(capacity_) * 8, kHeaderBytes);
+    result_ = services_.readback.import_storage(graph, "equal_check_result",
+                                                kResultHeaderBytes + VkDeviceSize(capacity_) * 8,
+                                                kResultHeaderBytes);
     Bound bound{res.forward_counts.shaded, res.depth, res.surface_id, {}, result_};
     const float far_depth = in.options.far_depth();
     graph.add_pass(
@@ -100,14 +101,14 @@ void EqualCheckPass::record(graph::PassContext& ctx, const Bound& bound, float f
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get(layout_.handle()));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle(), 0, 1, &set_, 0,
                             nullptr);
-    const Push push{extent.width, extent.height, far_depth, capacity_};
+    const EqualCheckPush push{extent.width, extent.height, far_depth, capacity_};
     vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, group_count(extent.width), group_count(extent.height), 1);
 }
 
 void EqualCheckPass::collect(const FrameCollect& c, std::span<PassResult>, FrameResult& frame) {
     const std::span<const std::byte> bytes = c.readback.buffer_bytes(result_);
-    if (bytes.size() < kHeaderBytes) return;
+    if (bytes.size() < kResultHeaderBytes) return;
     uint32_t header[3] = {};
     std::memcpy(header, bytes.data(), sizeof header);
     EqualCheckResult result{.holes = header[0], .multiple = header[1], .surfaces = {}};
@@ -117,7 +118,7 @@ void EqualCheckPass::collect(const FrameCollect& c, std::span<PassResult>, Frame
     const uint32_t kept = std::min(header[2], capacity_);
     for (uint32_t i = 0; i < kept; ++i) {
         uint32_t record[2];
-        std::memcpy(record, bytes.data() + kHeaderBytes + i * 8, sizeof record);
+        std::memcpy(record, bytes.data() + kResultHeaderBytes + i * 8, sizeof record);
         if (const auto ref = table.find(record[0])) {
             auto& [holes, multiple] = by_instance[ref->instance];
             (record[1] == 1 ? holes : multiple) += 1;

@@ -14,7 +14,7 @@ constexpr VkFormat kTexelFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr const char* kShader = "inspect.comp";
 constexpr const char* kFinal = "final";  // read back as it is (ReadbackCopyPass)
 
-ComputeKernel make_kernel(const PassServices& services) {
+ComputeKernel make_decode_kernel(const PassServices& services) {
     return ComputeKernel(services, kShader, {KernelBinding::Sampled, KernelBinding::Storage},
                          sizeof(int32_t), InspectPass::kMaxImages);
 }
@@ -37,8 +37,8 @@ std::string texels_name(size_t i) {
 
 InspectPass::InspectPass(const PassServices& services)
     : services_(services),
-      kernels_{make_kernel(services), make_kernel(services), make_kernel(services),
-               make_kernel(services)} {}
+      kernels_{make_decode_kernel(services), make_decode_kernel(services),
+               make_decode_kernel(services), make_decode_kernel(services)} {}
 
 ComputeKernel& InspectPass::kernel(bool uint_source, bool multisampled) {
     const size_t i = index_of(uint_source, multisampled);

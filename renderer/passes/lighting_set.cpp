@@ -39,7 +39,7 @@ vk::DescriptorSetLayout create_layout(vk::Context& context) {
 }
 
 constexpr uint32_t kImagesPerFrame = kSetsPerFrame * kBindingCount;
-const VkDescriptorPoolSize kPoolSizes[] = {
+const VkDescriptorPoolSize kLightingSetPoolSizes[] = {
     {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kImagesPerFrame}};
 
 }  // namespace
@@ -47,7 +47,7 @@ const VkDescriptorPoolSize kPoolSizes[] = {
 LightingSet::LightingSet(vk::Context& context, VkFormat shadow_format)
     : context_(context),
       layout_(create_layout(context)),
-      pool_(context, kSetsPerFrame, kPoolSizes, "lighting sets") {
+      pool_(context, kSetsPerFrame, kLightingSetPoolSizes, "lighting sets") {
     // Hardware 2x2 PCF per tap where the depth format filters linearly.
     const bool linear = (context.format_properties(shadow_format).optimalTilingFeatures &
                          VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;

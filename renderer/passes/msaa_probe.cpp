@@ -10,10 +10,10 @@
 namespace ds::passes {
 namespace {
 
-constexpr VkDeviceSize kHeaderBytes = 16;      // edge_pixels + padding (std430 array alignment)
-constexpr const char* kBuffer = "msaa_probe";  // its HostReadback buffer
+constexpr VkDeviceSize kProbeHeaderBytes = 16;  // edge_pixels + padding (std430 array alignment)
+constexpr const char* kBuffer = "msaa_probe";   // its HostReadback buffer
 
-struct Push {
+struct ProbePush {
     uint32_t width, height;
     int32_t samples, copy_depth;
 };
@@ -37,7 +37,7 @@ MsaaProbePass::MsaaProbePass(const PassServices& services)
     pool_ = vk::DescriptorPool(context, 1, sizes, "msaa probe");
     set_ = pool_.allocate(set_layout_.handle());
     const VkDescriptorSetLayout sets[] = {set_layout_.handle()};
-    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(Push)};
+    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(ProbePush)};
     layout_ = vk::PipelineLayout(context, sets, {&push, 1}, "msaa probe layout");
 }
 
@@ -59,7 +59,7 @@ void MsaaProbePass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameR
     depth_values_ =
         copy_depth ? VkDeviceSize(extent.width) * extent.height * uint32_t(in.options.samples) : 0;
     const graph::BufferHandle out = services_.readback.import_storage(
-        graph, kBuffer, kHeaderBytes + depth_values_ * sizeof(float), kHeaderBytes);
+        graph, kBuffer, kProbeHeaderBytes + depth_values_ * sizeof(float), kProbeHeaderBytes);
     out_ = out;
     const graph::ImageHandle depth = res.msaa_depth, color = res.msaa_hdr;
     const int32_t samples = int32_t(in.options.samples);
@@ -89,20 +89,20 @@ void MsaaProbePass::record(graph::PassContext& ctx, const Bound& bound, int32_t 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get(layout_.handle()));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle(), 0, 1, &set_, 0,
                             nullptr);
-    const Push push{extent.width, extent.height, samples, copy_depth ? 1 : 0};
+    const ProbePush push{extent.width, extent.height, samples, copy_depth ? 1 : 0};
     vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(cmd, group_count(extent.width), group_count(extent.height), 1);
 }
 
 void MsaaProbePass::collect(const FrameCollect& c, std::span<PassResult>, FrameResult& frame) {
     const std::span<const std::byte> bytes = c.readback.buffer_bytes(out_);
-    if (bytes.size() < kHeaderBytes) return;
+    if (bytes.size() < kProbeHeaderBytes) return;
     uint32_t edges = 0;
     std::memcpy(&edges, bytes.data(), sizeof edges);
     frame.msaa.edge_pixels = edges;
     frame.msaa.depth_samples.resize(depth_values_);
     if (depth_values_)
-        std::memcpy(frame.msaa.depth_samples.data(), bytes.data() + kHeaderBytes,
+        std::memcpy(frame.msaa.depth_samples.data(), bytes.data() + kProbeHeaderBytes,
                     depth_values_ * sizeof(float));
 }
 

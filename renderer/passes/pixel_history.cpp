@@ -22,11 +22,11 @@ namespace {
 
 // The stand-in for output 0 (lavapipe crashes drawing without any attachment).
 constexpr VkFormat kTargetFormat = VK_FORMAT_R8G8B8A8_UNORM;
-constexpr VkDeviceSize kHeaderBytes = 16;  // count and padding, zeroed by the host
+constexpr VkDeviceSize kHistoryHeaderBytes = 16;  // count and padding, zeroed by the host
 constexpr VkDeviceSize kBufferBytes =
-    kHeaderBytes + PixelHistoryReplay::kCapacity * sizeof(HistoryRecord);
-const VkDescriptorPoolSize kPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
-                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}};
+    kHistoryHeaderBytes + PixelHistoryReplay::kCapacity * sizeof(HistoryRecord);
+const VkDescriptorPoolSize kPixelHistoryPoolSizes[] = {
+    {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2}};
 
 // The value the depth image holds for `z`: unorm formats round to their steps (as the
 // rasterizer converts before the test), floats keep it.
@@ -172,7 +172,7 @@ VkPipelineLayout PixelHistoryReplay::layout() const {
     std::vector<VkDescriptorSetLayout> sets = pass_sets_;
     sets.push_back(set_layout_.handle());
     layout_ = vk::PipelineLayout(services_.context, sets, {}, (name + " layout").c_str());
-    sets_.emplace(services_.context, 1, kPoolSizes, (name + " sets").c_str());
+    sets_.emplace(services_.context, 1, kPixelHistoryPoolSizes, (name + " sets").c_str());
     sampler_ = vk::nearest_clamp_sampler(services_.context, (name + " sampler").c_str());
     // Lavapipe reads every descriptor of a bound set: what the variant does not read gets this.
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
@@ -208,8 +208,8 @@ void PixelHistoryReplay::clear() {
 
 void PixelHistoryReplay::add(graph::RenderGraph& graph, const FrameInputs& in, const Reads& reads,
                              const Declare& declare, Draw draw) {
-    const graph::BufferHandle buffer =
-        services_.readback.import_storage(graph, pass_ + "_history", kBufferBytes, kHeaderBytes);
+    const graph::BufferHandle buffer = services_.readback.import_storage(
+        graph, pass_ + "_history", kBufferBytes, kHistoryHeaderBytes);
     buffer_ = buffer;
     graph.set_role(graph::PassRole::History);
     graph.add_pass(pass_ + "_history", [&](graph::PassBuilder& b) {
@@ -268,7 +268,7 @@ void PixelHistoryReplay::collect(const FrameCollect& c, std::span<const HistoryP
     std::memcpy(&count, bytes.data(), sizeof count);
     std::vector<HistoryRecord> records(std::min(count, kCapacity));
     if (!records.empty())  // data() may be null then: memcpy(null, …, 0) is undefined
-        std::memcpy(records.data(), bytes.data() + kHeaderBytes,
+        std::memcpy(records.data(), bytes.data() + kHistoryHeaderBytes,
                     records.size() * sizeof(HistoryRecord));
     if (!frame.pixel_history) frame.pixel_history = PixelHistory{c.in.pixel->x, c.in.pixel->y};
     frame.pixel_history->dropped += count - records.size();

@@ -8,14 +8,14 @@
 
 namespace ds::passes {
 namespace {
-const VkDescriptorPoolSize kPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}};
+const VkDescriptorPoolSize kRasterizedCountPoolSizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}};
 constexpr uint32_t kCountsSet = 2;  // after the frame (0) and material (1) sets draws bind
 }  // namespace
 
 RasterizedCount::RasterizedCount(const PassServices& services, const char* pass)
     : services_(services),
       name_(std::string(pass) + "_rasterized"),
-      sets_(services.context, 1, kPoolSizes, "rasterized count sets"),
+      sets_(services.context, 1, kRasterizedCountPoolSizes, "rasterized count sets"),
       pipelines_([this](const Variant& v) { return compile(v); },
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
     const VkDescriptorSetLayoutBinding binding =

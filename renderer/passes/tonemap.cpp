@@ -10,12 +10,12 @@ namespace ds::passes {
 using graph::Access;
 
 namespace {
-const VkDescriptorPoolSize kPoolSizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+const VkDescriptorPoolSize kTonemapPoolSizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
 }
 
 TonemapPass::TonemapPass(const PassServices& services)
     : services_(services),
-      sets_(services.context, 1, kPoolSizes, "tonemap sets"),
+      sets_(services.context, 1, kTonemapPoolSizes, "tonemap sets"),
       pipelines_([this](const NoVariant& v) { return compile(v); },
                  [this](const NoVariant& v, const ShaderStages& s) { return create(v, s); }) {
     const VkDescriptorSetLayoutBinding hdr = vk::layout_binding(

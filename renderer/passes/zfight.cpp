@@ -19,15 +19,15 @@ using graph::Access;
 
 namespace {
 
-const VkDescriptorPoolSize kPoolSizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2},
-                                           {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
-                                           {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
-constexpr VkDeviceSize kHeaderBytes = 16;  // count + padding (std430 uvec4 alignment)
-constexpr uint32_t kRecordsPerPixel = 2;   // competitor records the buffer holds, on average
+const VkDescriptorPoolSize kZfightPoolSizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2},
+                                                 {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
+                                                 {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+constexpr VkDeviceSize kPairsHeaderBytes = 16;  // count + padding (std430 uvec4 alignment)
+constexpr uint32_t kRecordsPerPixel = 2;        // competitor records the buffer holds, on average
 
 constexpr const char* kPipelineName = "zfight";
 
-struct Push {
+struct ZfightPush {
     uint32_t max_steps, depth_bits, width, capacity;
 };
 
@@ -72,7 +72,7 @@ ZfightResult zfight_pairs(std::span<const ZfightRecord> records, const SurfaceTa
 ZfightPass::ZfightPass(const PassServices& services)
     : services_(services),
       nearest_(vk::nearest_clamp_sampler(services.context, "zfight nearest")),
-      sets_(services.context, 1, kPoolSizes, "zfight sets"),
+      sets_(services.context, 1, kZfightPoolSizes, "zfight sets"),
       pipelines_([this](const Variant& v) { return compile(v); },
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
                  [](const Variant&, const ShaderStages& s) {
@@ -88,7 +88,7 @@ ZfightPass::ZfightPass(const PassServices& services)
     set_layout_ = vk::DescriptorSetLayout(services.context, bindings, "zfight set");
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           set_layout_.handle()};
-    const VkPushConstantRange push{frag, 0, sizeof(Push)};
+    const VkPushConstantRange push{frag, 0, sizeof(ZfightPush)};
     layout_ = vk::PipelineLayout(services.context, sets, {&push, 1}, "zfight layout");
 }
 
@@ -118,7 +118,8 @@ void ZfightPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
     const VkExtent2D extent = graph.resources()[res.depth.index].extent;
     capacity_ = extent.width * extent.height * kRecordsPerPixel;
     const graph::BufferHandle records = services_.readback.import_storage(
-        graph, "zfight_records", kHeaderBytes + VkDeviceSize(capacity_) * 16, kHeaderBytes);
+        graph, "zfight_records", kPairsHeaderBytes + VkDeviceSize(capacity_) * 16,
+        kPairsHeaderBytes);
     records_ = records;
     const Bound bound{res.surface_id, res.depth, bound_.add(graph, in, res), res.zfight, records};
     graph.add_pass(name(), [&](graph::PassBuilder& b) {
@@ -144,8 +145,8 @@ void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bo
     writer.update(services_.context.device(), set);
 
     const VkExtent2D extent = ctx.extent(bound.depth);
-    const Push push{in.options.zfight_steps, format::depth_bits(ctx.format(bound.depth)),
-                    extent.width, capacity_};
+    const ZfightPush push{in.options.zfight_steps, format::depth_bits(ctx.format(bound.depth)),
+                          extent.width, capacity_};
     // No colour: the fragments only count. Layers beyond the limit fail the early test.
     const VkRenderingAttachmentInfo limit =
         depth_attachment(ctx.view(bound.limit), ctx.layout(bound.limit), VK_ATTACHMENT_LOAD_OP_LOAD,
@@ -170,7 +171,7 @@ void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bo
 void ZfightPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {
     if (!own.empty()) own.back().pipelines = uses_.list();  // after zfight_bound's
     const std::span<const std::byte> bytes = c.readback.buffer_bytes(records_);
-    if (bytes.size() < kHeaderBytes) return;
+    if (bytes.size() < kPairsHeaderBytes) return;
     uint32_t appended = 0;
     std::memcpy(&appended, bytes.data(), sizeof appended);
     const uint32_t kept = std::min(appended, capacity_);
@@ -178,7 +179,7 @@ void ZfightPass::collect(const FrameCollect& c, std::span<PassResult> own, Frame
     // An empty vector's data() may be null, and memcpy from or to null is undefined even for 0
     // bytes (UBSan's nonnull-attribute check, on a frame without a single near-tie).
     if (kept > 0)
-        std::memcpy(records.data(), bytes.data() + kHeaderBytes, kept * sizeof(ZfightRecord));
+        std::memcpy(records.data(), bytes.data() + kPairsHeaderBytes, kept * sizeof(ZfightRecord));
     ZfightResult result = zfight_pairs(records, c.in.scene->surfaces());
     result.steps = c.in.options.zfight_steps;
     result.dropped = appended - kept;

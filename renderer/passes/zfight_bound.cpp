@@ -7,9 +7,10 @@
 namespace ds::passes {
 namespace {
 
-const VkDescriptorPoolSize kPoolSizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+const VkDescriptorPoolSize kZfightBoundPoolSizes[] = {
+    {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
 
-struct Push {
+struct BoundPush {
     uint32_t steps, depth_bits;
 };
 
@@ -18,7 +19,7 @@ struct Push {
 ZfightBound::ZfightBound(const PassServices& services)
     : services_(services),
       nearest_(vk::nearest_clamp_sampler(services.context, "zfight bound nearest")),
-      sets_(services.context, 1, kPoolSizes, "zfight bound sets"),
+      sets_(services.context, 1, kZfightBoundPoolSizes, "zfight bound sets"),
       pipelines_(
           [this](const Variant&) {
               return compile_fullscreen(services_.compiler, "zfight_bound.frag");
@@ -35,7 +36,7 @@ ZfightBound::ZfightBound(const PassServices& services)
         0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT);
     set_layout_ = vk::DescriptorSetLayout(services.context, {&binding, 1}, "zfight bound set");
     const VkDescriptorSetLayout sets[] = {services.frame_layout, set_layout_.handle()};
-    const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(Push)};
+    const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(BoundPush)};
     layout_ = vk::PipelineLayout(services.context, sets, {&push, 1}, "zfight bound layout");
 }
 
@@ -66,7 +67,7 @@ void ZfightBound::record(graph::PassContext& ctx, const FrameInputs& in, graph::
     writer.image(0, ctx.view(stored), nearest_.handle(), ctx.layout(stored));
     writer.update(services_.context.device(), set);
     const VkDescriptorSet sets[] = {in.frame_set, set};
-    const Push push{in.options.zfight_steps, format::depth_bits(in.options.depth_format)};
+    const BoundPush push{in.options.zfight_steps, format::depth_bits(in.options.depth_format)};
     draw_fullscreen_depth(ctx, bound, pipelines_.get({.depth = in.options.depth_format}),
                           layout_.handle(), sets, std::as_bytes(std::span(&push, 1)));
 }

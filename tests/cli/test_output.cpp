@@ -21,6 +21,7 @@
 
 namespace fs = std::filesystem;
 using ds::test::count_lines;
+using ds::test::expect_one_error_line;
 using ds::test::run_command;
 using ds::test::run_depthscope;
 
@@ -44,13 +45,6 @@ void expect_no_leftovers(const fs::path& out) {
     for (const auto& entry : fs::directory_iterator(out.parent_path()))
         if (entry.path().filename().string().rfind(stem, 0) == 0)
             ADD_FAILURE() << "left behind: " << entry.path();
-}
-
-void expect_one_error_line(const ds::test::ProcessResult& r, int code, const std::string& mention) {
-    EXPECT_EQ(r.exit_code, code) << r.err;
-    EXPECT_EQ(count_lines(r.err), 1u) << r.err;
-    EXPECT_EQ(r.err.rfind("depthscope: error: ", 0), 0u) << r.err;
-    EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
 }
 
 ds::test::ProcessResult capture(const fs::path& out, const std::string& extra = "") {

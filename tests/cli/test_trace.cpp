@@ -20,6 +20,7 @@
 #include "tests/support/run_process.h"
 
 namespace fs = std::filesystem;
+using ds::test::expect_one_error_line;
 using ds::test::run_command;
 using ds::test::run_depthscope;
 using nlohmann::json;
@@ -77,13 +78,6 @@ void expect_well_formed(const json& trace) {
                 << "pid " << track.first << " tid " << track.second << ": span at "
                 << spans[i].first << " ns crosses the end of the one before";
     }
-}
-
-void expect_one_error_line(const ds::test::ProcessResult& r, int code, const std::string& mention) {
-    EXPECT_EQ(r.exit_code, code) << r.err;
-    EXPECT_EQ(ds::test::count_lines(r.err), 1u) << r.err;
-    EXPECT_EQ(r.err.rfind("depthscope: error: ", 0), 0u) << r.err;
-    EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -45,10 +45,8 @@ class ViewCapture : public ::testing::Test {
         const ProcessResult r =
             run_command("env -u DISPLAY -u WAYLAND_DISPLAY DEPTHSCOPE_CONFIG_DIR=" +
                         (root_ / "config").string() + " " DS_EXECUTABLE " view --frames 1 " + args);
-        EXPECT_EQ(r.exit_code, code) << args << "\n" << r.err;
-        EXPECT_EQ(count_lines(r.err), 1u) << r.err;
-        EXPECT_EQ(r.err.rfind("depthscope: error: ", 0), 0u) << r.err;
-        EXPECT_NE(r.err.find(why), std::string::npos) << why << "\n" << r.err;
+        SCOPED_TRACE(args);
+        expect_one_error_line(r, code, why);
         EXPECT_EQ(r.out, "");
     }
     static inline fs::path root_;

@@ -122,5 +122,33 @@ TEST(Replay, BadCapturesAreOneLineAndWriteNothing) {
     expect_refused(c.dir, "no replay information");
 }
 
+// An output folder that cannot be made (under /proc, where not even root creates one) or that
+// fills up (a 1 KiB file-size limit; stderr stays a pipe) is one line and leaves nothing, for
+// replay and for diff's --out alike.
+TEST(Replay, AnUnwritableOrFullOutputIsOneLineAndLeavesNothing) {
+    const Capture c = capture("replay-full", "overdraw", "64x64");
+    const fs::path base = fresh_dir("replay-full-out");
+    const auto expect_failed = [&](const std::string& args, int code, const std::string& why) {
+        const ProcessResult r =
+            run_command("bash -c 'ulimit -f 1; exec " DS_EXECUTABLE " " + args + "'");
+        SCOPED_TRACE(args);
+        expect_one_error_line(r, code, why);
+        EXPECT_TRUE(fs::is_empty(base)) << "left behind in " << base;
+    };
+    expect_failed("replay " + c.dir.string() + " --out /proc/ds-replay", 1,
+                  "/proc/ds-replay: cannot create folder");
+    expect_failed("replay " + c.dir.string() + " --out " + (base / "r").string(), 1,
+                  "final.png: cannot write: File too large");
+    // A B that differs (exposure 2), so diff has pixels to report and a diff.json over 1 KiB.
+    const fs::path b = c.dir.string() + "-bright";
+    ASSERT_EQ(run_depthscope("replay " + c.dir.string() + " --set exposure=2 --out " + b.string())
+                  .exit_code,
+              0);
+    expect_failed("diff " + c.dir.string() + " " + b.string() + " --out /proc/ds-diff", 2,
+                  "/proc/ds-diff: cannot create folder");
+    expect_failed("diff " + c.dir.string() + " " + b.string() + " --out " + (base / "d").string(),
+                  2, "cannot write: File too large");
+}
+
 }  // namespace
 }  // namespace ds::test

@@ -111,4 +111,11 @@ std::string selected_device_name() {
     return r.out.substr(name, r.out.find('\n', name) - name);
 }
 
+void expect_one_error_line(const ProcessResult& r, int code, const std::string& mention) {
+    EXPECT_EQ(r.exit_code, code) << r.err;
+    EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+    EXPECT_EQ(r.err.rfind("depthscope: error: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(mention), std::string::npos) << mention << "\n" << r.err;
+}
+
 }  // namespace ds::test

@@ -34,6 +34,9 @@ Png read_png(const std::filesystem::path& path);  // fails the test on error (wi
 std::string read_file(const std::filesystem::path& path);
 
 size_t count_lines(const std::string& text);
+// A refusal as users see it: exit `code`, one stderr line "depthscope: error: ..." that
+// mentions `mention`.
+void expect_one_error_line(const ProcessResult& r, int code, const std::string& mention);
 // Number of distinct RGB colours (a blank image has 1).
 size_t distinct_colours(const Png& png);
 // Pixels whose channels differ by more than `tolerance` in any channel.

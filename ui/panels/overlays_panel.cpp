@@ -15,7 +15,7 @@
 namespace ds::ui {
 namespace {
 
-constexpr const char* kFinal = "final";  // the base an overlay goes over, not one itself
+constexpr const char* kOverlayBase = "final";  // the base an overlay goes over, not one itself
 
 constexpr const char* kSharedHelp =
     "Count images of one pass (<pass>_counts = shaded, _discarded, _rasterized, _wasted) use "
@@ -33,7 +33,7 @@ void add_picker(PanelIo& io) {
     ImGui::SetNextItemWidth(200);
     if (!ImGui::BeginCombo("##add", "add an overlay")) return;
     for (const std::string& name : io.inspector.viewable()) {
-        if (name == kFinal || listed(io.viewer.overlays, name)) continue;
+        if (name == kOverlayBase || listed(io.viewer.overlays, name)) continue;
         if (ImGui::Selectable(name.c_str(), false)) io.actions.push_back(AddOverlay{name});
     }
     ImGui::EndCombo();

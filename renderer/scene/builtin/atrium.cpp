@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "renderer/scene/builtin/angles.h"
 #include "renderer/scene/builtin/atrium_layout.h"
 #include "renderer/scene/builtin/scenes.h"
 
@@ -13,7 +14,6 @@ namespace atrium {
 
 namespace {
 
-constexpr float kHalfPi = std::numbers::pi_v<float> * 0.5f;
 constexpr float kWallThickness = 0.5f;
 
 float column_z(int k) {

@@ -4,13 +4,12 @@
 #include <numbers>
 #include <string>
 
+#include "renderer/scene/builtin/angles.h"
 #include "renderer/scene/builtin/atrium_layout.h"
 
 namespace ds::scene::builtin::atrium {
 
 namespace {
-
-constexpr float kHalfPi = std::numbers::pi_v<float> * 0.5f;
 
 float bay_centre_z(int k) {
     return -kHalfLength + kBay * (static_cast<float>(k) + 0.5f);

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "renderer/scene/builtin/angles.h"
 #include "renderer/scene/builtin/gltf_builder.h"
 #include "renderer/scene/builtin/scenes.h"
 
@@ -11,7 +12,6 @@ namespace ds::scene::builtin {
 
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 const glm::vec3 kAxisX(1.0f, 0.0f, 0.0f);
 const glm::vec3 kAxisZ(0.0f, 0.0f, 1.0f);
 

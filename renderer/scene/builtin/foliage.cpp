@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "renderer/scene/builtin/angles.h"
 #include "renderer/scene/builtin/gltf_builder.h"
 #include "renderer/scene/builtin/scene_facts.h"
 #include "renderer/scene/builtin/scenes.h"
@@ -12,8 +13,6 @@
 namespace ds::scene::builtin {
 
 namespace {
-
-constexpr float kPi = std::numbers::pi_v<float>;
 
 int card_material(ModelBuilder& b, const char* name, int texture) {
     MaterialSpec s;

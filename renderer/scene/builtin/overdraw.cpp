@@ -11,7 +11,7 @@ namespace ds::scene::builtin {
 
 namespace {
 
-constexpr float kYfov = 0.8f;
+constexpr float kOverdrawYfov = 0.8f;
 constexpr float kCoverAspect = 4.0f;  // each quad covers any view up to 4:1 (plus margin)
 
 glm::vec3 hsv_to_rgb(float h, float s, float v) {
@@ -25,7 +25,7 @@ tinygltf::Model build_overdraw(const Settings& settings) {
     const int layers = settings.get_int("overdraw_layers");
     ModelBuilder b;
     const Geometry quad = b.add_geometry("layer_quad", make_quad({1.0f, 1.0f}));
-    const float half_tan = std::tan(kYfov * 0.5f);
+    const float half_tan = std::tan(kOverdrawYfov * 0.5f);
     // Farthest first: the authored order is the worst case for a depth test alone.
     for (int k = layers - 1; k >= 0; --k) {
         const std::string name = "layer_" + std::to_string(k);
@@ -41,7 +41,7 @@ tinygltf::Model build_overdraw(const Settings& settings) {
         b.add_node(name, mesh, {{0.0f, 0.0f, -depth}, glm::quat(1, 0, 0, 0), {side, side, 1.0f}});
     }
     CameraSpec cam;
-    cam.yfov = kYfov;
+    cam.yfov = kOverdrawYfov;
     cam.znear = 0.1f;
     cam.zfar = facts::overdraw_layer_depth(64) * 2.0f;
     b.add_camera("camera", cam, glm::vec3(0.0f), {0.0f, 0.0f, -1.0f});

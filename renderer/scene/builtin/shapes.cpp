@@ -1,4 +1,5 @@
 #include "renderer/scene/builtin/shapes.h"
+#include "renderer/scene/builtin/angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +11,6 @@
 namespace ds::scene::builtin {
 
 namespace {
-
-constexpr float kPi = std::numbers::pi_v<float>;
 
 // One box face: origin corner, two edge vectors (u right, v up as seen from the front).
 void add_face(MeshData& mesh, const glm::vec3& corner, const glm::vec3& edge_u,

@@ -1,4 +1,5 @@
 #include "renderer/scene/builtin/textures.h"
+#include "renderer/scene/builtin/angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +8,6 @@
 namespace ds::scene::builtin {
 
 namespace {
-
-constexpr float kPi = std::numbers::pi_v<float>;
 
 uint32_t hash3(uint32_t x, uint32_t y, uint32_t s) {
     uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u ^ s * 0xcb1ab31fu;

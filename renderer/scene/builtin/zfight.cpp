@@ -15,7 +15,7 @@ namespace ds::scene::builtin {
 
 namespace {
 
-constexpr float kYfov = 0.8f;
+constexpr float kZfightYfov = 0.8f;
 constexpr float kAspect = 16.0f / 9.0f;
 // Tilted away from the view so depth varies across each quad: coplanar triangles with
 // different diagonals then tie only up to rounding, which is what z-fighting is.
@@ -35,7 +35,7 @@ Slot slot_at(int i, int count, float distance) {
     const int rows = (count + cols - 1) / cols;
     const float ndc_x = -1.0f + (2.0f * static_cast<float>(i % cols) + 1.0f) / cols;
     const float ndc_y = 1.0f - (2.0f * static_cast<float>(i / cols) + 1.0f) / rows;
-    const float half_tan = std::tan(kYfov * 0.5f);
+    const float half_tan = std::tan(kZfightYfov * 0.5f);
     const float cell_w = 2.0f / cols * distance * half_tan * kAspect;
     const float cell_h = 2.0f / rows * distance * half_tan;
     return {{ndc_x * distance * half_tan * kAspect, ndc_y * distance * half_tan, -distance},
@@ -88,7 +88,7 @@ tinygltf::Model build_zfight(const Settings& settings) {
         b.add_node(names[3] + tag, meshes[3], {back, tilt, scale * glm::vec3(0.8f, 0.8f, 1.0f)});
     }
     CameraSpec cam;
-    cam.yfov = kYfov;
+    cam.yfov = kZfightYfov;
     cam.aspect = kAspect;
     cam.znear = facts::kZfightZnear;
     cam.zfar = facts::kZfightZfar;

@@ -36,7 +36,7 @@ std::vector<test::WorldTriangle> triangles_of(const std::string& node) {
     return out;
 }
 
-bool same_vertices(const test::WorldTriangle& a, const test::WorldTriangle& b) {
+bool same_triangle(const test::WorldTriangle& a, const test::WorldTriangle& b) {
     for (int k = 0; k < 3; ++k)
         if (a.p[k] != b.p[k]) return false;  // bit-exact on purpose
     return true;
@@ -51,7 +51,7 @@ TEST(DecalsScene, EveryOverlayTriangleIsOneOfItsBasesTriangles) {
         ASSERT_EQ(top.size(), static_cast<size_t>(2 * (o.i1 - o.i0) * (o.j1 - o.j0)));
         for (const test::WorldTriangle& t : top) {
             EXPECT_TRUE(std::any_of(base.begin(), base.end(),
-                                    [&](const auto& b) { return same_vertices(t, b); }));
+                                    [&](const auto& b) { return same_triangle(t, b); }));
         }
     }
     // The left wall and its overlay come through the same non-identity node transform.

@@ -14,7 +14,7 @@
 namespace ds::graph::test {
 namespace {
 
-constexpr VkExtent2D kSize{64, 48};
+constexpr VkExtent2D kComputeSize{64, 48};
 
 // pattern.comp: one storage image, 8x8 groups.
 struct Pattern {
@@ -92,24 +92,25 @@ TEST_F(GraphVk, ComputeStorageImageSampledByAFragmentShader) {
     const Pattern pattern(*context_);
     const Swizzle swizzle(*context_);
     const vk::Buffer readback(
-        *context_, {VkDeviceSize(kSize.width) * kSize.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                    vk::MemoryUsage::Readback, "readback"});
+        *context_, {VkDeviceSize(kComputeSize.width) * kComputeSize.height * 4,
+                    VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUsage::Readback, "readback"});
     for (int f = 0; f < 3; ++f) {
         const uint64_t id =
-            frame(kSize, [&](RenderGraph& g) { declare(g, pattern, swizzle, readback); });
+            frame(kComputeSize, [&](RenderGraph& g) { declare(g, pattern, swizzle, readback); });
         readback.invalidate();
         size_t right = 0;
-        for (uint32_t y = 0; y < kSize.height; ++y)
-            for (uint32_t x = 0; x < kSize.width; ++x) {
+        for (uint32_t y = 0; y < kComputeSize.height; ++y)
+            for (uint32_t x = 0; x < kComputeSize.width; ++x) {
                 uint8_t p[4];
-                std::memcpy(p, readback.mapped() + (size_t(y) * kSize.width + x) * 4, 4);
+                std::memcpy(p, readback.mapped() + (size_t(y) * kComputeSize.width + x) * 4, 4);
                 right += p[0] == 255 && p[1] == y && p[2] == x && p[3] == 255;
             }
-        EXPECT_EQ(right, size_t(kSize.width) * kSize.height) << "frame " << f;
+        EXPECT_EQ(right, size_t(kComputeSize.width) * kComputeSize.height) << "frame " << f;
         const std::vector<PassResult> results = graph_->collect(id);
         ASSERT_EQ(results.size(), 3u);
         if (graph_->has_statistics()) {
-            EXPECT_GE(results[0].compute_invocations, uint64_t(kSize.width) * kSize.height);
+            EXPECT_GE(results[0].compute_invocations,
+                      uint64_t(kComputeSize.width) * kComputeSize.height);
             EXPECT_EQ(results[0].vertex_invocations, 0u);
             EXPECT_EQ(results[1].compute_invocations, 0u);
         }

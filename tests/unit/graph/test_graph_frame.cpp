@@ -13,7 +13,7 @@ namespace ds::graph::test {
 namespace {
 
 constexpr VkFormat kFormat = kSwizzleFormat;
-constexpr VkExtent2D kSize{64, 48};
+constexpr VkExtent2D kFrameSize{64, 48};
 
 // The left half of the clear pass is red, the rest (0.25, 0.5, 0.75); swizzled: blue, and
 // (0.75, 0.5, 0.25).
@@ -37,13 +37,13 @@ struct Targets {
 // Declares the three passes; `first` frame imports `result` from UNDEFINED, later ones from
 // where the previous frame left it (TRANSFER_SRC_OPTIMAL after the copy).
 void declare_frame(RenderGraph& graph, const Swizzle& swizzle, const Targets& t, bool first) {
-    const ImageHandle result =
-        graph.import_image("result", {t.result.handle(), t.result.view(),
-                                      ImageDesc{.format = kFormat,
-                                                .size = ImageSize::fixed(kSize.width, kSize.height),
-                                                .semantic = Semantic::LdrColor},
-                                      first ? ExternalState{} : ExternalState::transfer_src(),
-                                      ExternalState::transfer_src()});
+    const ImageHandle result = graph.import_image(
+        "result",
+        {t.result.handle(), t.result.view(),
+         ImageDesc{.format = kFormat,
+                   .size = ImageSize::fixed(kFrameSize.width, kFrameSize.height),
+                   .semantic = Semantic::LdrColor},
+         first ? ExternalState{} : ExternalState::transfer_src(), ExternalState::transfer_src()});
     const BufferHandle readback = graph.import_buffer(
         "readback", {t.readback.handle(), t.readback.size(), {}, ExternalState::host_read()});
 
@@ -78,7 +78,7 @@ void declare_frame(RenderGraph& graph, const Swizzle& swizzle, const Targets& t,
 
 uint32_t pixel(const vk::Buffer& buffer, uint32_t x, uint32_t y) {
     uint32_t value = 0;
-    std::memcpy(&value, buffer.mapped() + (size_t(y) * kSize.width + x) * 4, 4);
+    std::memcpy(&value, buffer.mapped() + (size_t(y) * kFrameSize.width + x) * 4, 4);
     return value;
 }
 
@@ -93,29 +93,29 @@ TEST_F(GraphVk, ThreePassesClearSampleReadBack) {
     const Swizzle swizzle(*context_);
     Targets t;
     t.result =
-        vk::Image(*context_, {kSize.width, kSize.height, 1, kFormat,
+        vk::Image(*context_, {kFrameSize.width, kFrameSize.height, 1, kFormat,
                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                               VK_SAMPLE_COUNT_1_BIT, "result"});
     t.readback = vk::Buffer(
-        *context_, {VkDeviceSize(kSize.width) * kSize.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                    vk::MemoryUsage::Readback, "readback"});
+        *context_, {VkDeviceSize(kFrameSize.width) * kFrameSize.height * 4,
+                    VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUsage::Readback, "readback"});
     std::string second_dump;
     for (int f = 0; f < 3; ++f) {
         const uint64_t id =
-            frame(kSize, [&](RenderGraph& g) { declare_frame(g, swizzle, t, f == 0); });
+            frame(kFrameSize, [&](RenderGraph& g) { declare_frame(g, swizzle, t, f == 0); });
         if (f == 1) second_dump = graph_->dump();
         t.readback.invalidate();
         size_t blue = 0, swizzled = 0;
-        for (uint32_t y = 0; y < kSize.height; ++y)
-            for (uint32_t x = 0; x < kSize.width; ++x) {
+        for (uint32_t y = 0; y < kFrameSize.height; ++y)
+            for (uint32_t x = 0; x < kFrameSize.width; ++x) {
                 const uint32_t p = pixel(t.readback, x, y);
-                if (x < kSize.width / 2)
+                if (x < kFrameSize.width / 2)
                     blue += near(p, 0, 0, 255, 255);
                 else
                     swizzled += near(p, 191, 128, 64, 255);
             }
-        EXPECT_EQ(blue, size_t(kSize.width / 2) * kSize.height) << "frame " << f;
-        EXPECT_EQ(swizzled, size_t(kSize.width / 2) * kSize.height) << "frame " << f;
+        EXPECT_EQ(blue, size_t(kFrameSize.width / 2) * kFrameSize.height) << "frame " << f;
+        EXPECT_EQ(swizzled, size_t(kFrameSize.width / 2) * kFrameSize.height) << "frame " << f;
 
         const std::vector<PassResult> results = graph_->collect(id);
         ASSERT_EQ(results.size(), 3u);

@@ -19,7 +19,7 @@ namespace {
 
 using namespace ds;
 
-constexpr uint32_t kWidth = 240, kHeight = 135;
+constexpr uint32_t kAlphaWidth = 240, kAlphaHeight = 135;
 
 class Alpha : public test::SharedRenderer {
   protected:
@@ -41,7 +41,7 @@ class Alpha : public test::SharedRenderer {
     }
     static FrameResult render(const scene::Camera& camera,
                               const std::vector<std::string>& assignments) {
-        return renderer_->render(camera, test::settings_of(assignments), kWidth, kHeight,
+        return renderer_->render(camera, test::settings_of(assignments), kAlphaWidth, kAlphaHeight,
                                  ReadBack::Yes);
     }
     // After a camera cut: temporal AO forgets the previous frame, so the image depends on

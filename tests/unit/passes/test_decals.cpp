@@ -18,7 +18,7 @@ namespace {
 using namespace ds;
 namespace facts = scene::builtin::facts;
 
-constexpr uint32_t kWidth = 640, kHeight = 360;
+constexpr uint32_t kDecalsWidth = 640, kDecalsHeight = 360;
 
 class Decals : public test::SharedScene {
   protected:
@@ -26,17 +26,19 @@ class Decals : public test::SharedScene {
 
     static FrameResult render(const std::vector<std::string>& settings,
                               const InspectRequest& inspect = {}) {
-        return renderer_->render(scene_->camera, test::settings_of(settings), kWidth, kHeight,
-                                 ReadBack::Yes, inspect);
+        return renderer_->render(scene_->camera, test::settings_of(settings), kDecalsWidth,
+                                 kDecalsHeight, ReadBack::Yes, inspect);
     }
     // The pixel a world point lands on (the renderer's projection; either direction).
     static glm::ivec2 pixel_of(const glm::vec3& world) {
         const scene::Camera& c = scene_->camera;
         const glm::mat4 vp =
-            perspective(c.yfov, float(kWidth) / kHeight, c.znear, c.zfar, true) * c.view();
+            perspective(c.yfov, float(kDecalsWidth) / kDecalsHeight, c.znear, c.zfar, true) *
+            c.view();
         const glm::vec4 clip = vp * glm::vec4(world, 1.0f);
         const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-        return {int((ndc.x * 0.5f + 0.5f) * kWidth), int((ndc.y * 0.5f + 0.5f) * kHeight)};
+        return {int((ndc.x * 0.5f + 0.5f) * kDecalsWidth),
+                int((ndc.y * 0.5f + 0.5f) * kDecalsHeight)};
     }
     // A point of overlay o at (s, t) of its rectangle.
     static glm::vec3 at(const facts::DecalsOverlay& o, float s, float t) {
@@ -132,7 +134,7 @@ TEST_F(Decals, EachOverlayIsVisibleInItsOwnColour) {
                               "depth_format=d16", "depth_compare=greater_or_equal"}) {
         SCOPED_TRACE(extra);
         const FrameResult f = render({extra});
-        ASSERT_EQ(f.rgba8.size(), size_t(kWidth) * kHeight * 4);
+        ASSERT_EQ(f.rgba8.size(), size_t(kDecalsWidth) * kDecalsHeight * 4);
         for (const facts::DecalsOverlay& o : facts::kDecalsOverlays) {
             const bool mask = o.alpha == facts::DecalsAlpha::Mask;
             const float keep = mask ? facts::kDecalsMaskKeep : 1.0f;

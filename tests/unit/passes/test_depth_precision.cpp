@@ -16,15 +16,16 @@ namespace {
 
 using namespace ds;
 
-constexpr uint32_t kWidth = 320, kHeight = 180;
+constexpr uint32_t kPrecisionWidth = 320, kPrecisionHeight = 180;
 
 class DepthPrecision : public test::SharedScene {
   protected:
     static void SetUpTestSuite() { set_up_with("overdraw"); }
     // The texel at the centre of `resource` (its four floats) and the frame's planes.
     static InspectedImage centre(const std::vector<std::string>& settings, const char* resource) {
-        FrameResult f = renderer_->render(scene_->camera, test::settings_of(settings), kWidth,
-                                          kHeight, ReadBack::No, {resource, 0});
+        FrameResult f =
+            renderer_->render(scene_->camera, test::settings_of(settings), kPrecisionWidth,
+                              kPrecisionHeight, ReadBack::No, {resource, 0});
         EXPECT_TRUE(f.inspected) << resource;
         return f.inspected ? *f.inspected : InspectedImage{};
     }
@@ -42,7 +43,8 @@ double next_towards_far(double d, const std::string& format, bool reverse) {
 }
 
 TEST_F(DepthPrecision, MatchesTheAnalyticStepAtTheFrontLayer) {
-    const size_t centre_texel = (size_t(kHeight / 2) * kWidth + kWidth / 2) * 4;
+    const size_t centre_texel =
+        (size_t(kPrecisionHeight / 2) * kPrecisionWidth + kPrecisionWidth / 2) * 4;
     for (const std::string format : {"d32f", "d24", "d16"}) {
         for (const bool reverse : {true, false}) {
             SCOPED_TRACE(format + (reverse ? " reverse-Z" : " forward-Z"));
@@ -65,8 +67,8 @@ TEST_F(DepthPrecision, MatchesTheAnalyticStepAtTheFrontLayer) {
 }
 
 TEST_F(DepthPrecision, OffAddsNothing) {
-    const FrameResult f =
-        renderer_->render(scene_->camera, test::settings_of({}), kWidth, kHeight, ReadBack::No);
+    const FrameResult f = renderer_->render(scene_->camera, test::settings_of({}), kPrecisionWidth,
+                                            kPrecisionHeight, ReadBack::No);
     for (const ResourceSummary& r : f.resources) EXPECT_NE(r.name, "depth_precision");
 }
 

@@ -16,15 +16,15 @@ namespace {
 
 using namespace ds;
 
-constexpr uint32_t kWidth = 320, kHeight = 180;
-constexpr uint64_t kPixels = uint64_t(kWidth) * kHeight;
+constexpr uint32_t kDrawsWidth = 320, kDrawsHeight = 180;
+constexpr uint64_t kDrawsPixels = uint64_t(kDrawsWidth) * kDrawsHeight;
 constexpr int kLayers = 8;  // overdraw_layers' default
 
 class DrawCounts : public test::SceneSwitching {
   protected:
     FrameResult render(const std::string& scene_name, const std::vector<std::string>& settings,
                        ReadBack read_back = ReadBack::No) {
-        return SceneSwitching::render(scene_name, settings, kWidth, kHeight, read_back);
+        return SceneSwitching::render(scene_name, settings, kDrawsWidth, kDrawsHeight, read_back);
     }
     static uint64_t shaded(const DrawReport& d, const std::string& pass) {
         for (const auto& [name, n] : d.shaded_fragments)
@@ -51,7 +51,7 @@ TEST_F(DrawCounts, OverdrawLayersPassAsTheirDrawOrderImplies) {
     EXPECT_EQ(sorted.draws_samples_pass, "depth_prepass");
     EXPECT_EQ(sorted.draws_visible_note, "");
     for (const auto& [k, d] : layers(sorted)) {
-        const uint64_t front = k == 0 ? kPixels : 0;
+        const uint64_t front = k == 0 ? kDrawsPixels : 0;
         EXPECT_EQ(d->visible_pixels, front) << k;
         EXPECT_EQ(d->samples_passed, front) << k;
         EXPECT_EQ(d->occluded, k != 0) << k;
@@ -65,12 +65,12 @@ TEST_F(DrawCounts, OverdrawLayersPassAsTheirDrawOrderImplies) {
     }
     const FrameResult authored = render("overdraw", {"count_draws=on", "prepass_sort=off"});
     for (const auto& [k, d] : layers(authored)) {
-        EXPECT_EQ(d->visible_pixels, k == 0 ? kPixels : 0) << k;
-        EXPECT_EQ(d->samples_passed, kPixels) << k;
-        EXPECT_EQ(shaded(*d, "depth_prepass"), kPixels) << k;
+        EXPECT_EQ(d->visible_pixels, k == 0 ? kDrawsPixels : 0) << k;
+        EXPECT_EQ(d->samples_passed, kDrawsPixels) << k;
+        EXPECT_EQ(shaded(*d, "depth_prepass"), kDrawsPixels) << k;
         ASSERT_FALSE(d->wasted_fragments.empty()) << k;
-        EXPECT_EQ(d->wasted_fragments[0],
-                  (std::pair<std::string, int64_t>{"depth_prepass", k == 0 ? 0 : int64_t(kPixels)}))
+        EXPECT_EQ(d->wasted_fragments[0], (std::pair<std::string, int64_t>{
+                                              "depth_prepass", k == 0 ? 0 : int64_t(kDrawsPixels)}))
             << k;
         EXPECT_EQ(d->occluded, k != 0) << k;
     }
@@ -80,8 +80,8 @@ TEST_F(DrawCounts, OverdrawLayersPassAsTheirDrawOrderImplies) {
     EXPECT_TRUE(off.draw_pixels.empty());
     for (const auto& [k, d] : layers(off)) {
         EXPECT_EQ(d->visible_pixels, std::nullopt) << k;
-        EXPECT_EQ(d->samples_passed, kPixels) << k;
-        EXPECT_EQ(shaded(*d, "forward"), kPixels) << k;
+        EXPECT_EQ(d->samples_passed, kDrawsPixels) << k;
+        EXPECT_EQ(shaded(*d, "forward"), kDrawsPixels) << k;
         EXPECT_TRUE(d->wasted_fragments.empty()) << k;
         EXPECT_FALSE(d->occluded) << k;  // each layer passed when it was drawn
     }
@@ -117,7 +117,7 @@ TEST_F(DrawCounts, AtriumDrawsAddUpToThePassesAndTheCoverage) {
         EXPECT_EQ(per_pass[p.name], *p.shaded_fragments) << p.name;
     }
     // The pixel map agrees with the histogram.
-    ASSERT_EQ(f.draw_pixels.size(), kPixels);
+    ASSERT_EQ(f.draw_pixels.size(), kDrawsPixels);
     std::vector<uint64_t> from_map(f.draws.size() + 1, 0);
     for (uint32_t g : f.draw_pixels) ++from_map.at(g);
     for (const DrawReport& d : f.draws) {
@@ -148,7 +148,8 @@ TEST_F(DrawCounts, OffAddsNothingAndOnLeavesTheImageAlone) {
 TEST_F(DrawCounts, MultisampledFramesCountSamplesAndSaySo) {
     const FrameResult f = render("overdraw", {"count_draws=on", "msaa=4"});
     EXPECT_NE(f.draws_visible_note, "");
-    for (const auto& [k, d] : layers(f)) EXPECT_EQ(d->samples_passed, k == 0 ? 4 * kPixels : 0);
+    for (const auto& [k, d] : layers(f))
+        EXPECT_EQ(d->samples_passed, k == 0 ? 4 * kDrawsPixels : 0);
 }
 
 }  // namespace

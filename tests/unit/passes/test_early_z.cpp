@@ -17,15 +17,15 @@ namespace {
 using namespace ds;
 using scene::AlphaMode;
 
-constexpr uint32_t kWidth = 160, kHeight = 90;
+constexpr uint32_t kEarlyZWidth = 160, kEarlyZHeight = 90;
 
 class EarlyZ : public test::SharedScene {
   protected:
     static void SetUpTestSuite() { set_up_with("atrium"); }
 
     static FrameResult render(const std::vector<std::string>& assignments) {
-        return renderer_->render(scene_->camera, test::settings_of(assignments), kWidth, kHeight,
-                                 ReadBack::No);
+        return renderer_->render(scene_->camera, test::settings_of(assignments), kEarlyZWidth,
+                                 kEarlyZHeight, ReadBack::No);
     }
     static bool has_msaa4() {
         const vk::DeviceReport& r = renderer_->device_report();

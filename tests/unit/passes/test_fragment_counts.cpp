@@ -16,13 +16,14 @@ namespace {
 
 using namespace ds;
 
-constexpr uint32_t kWidth = 320, kHeight = 180;
-constexpr uint64_t kPixels = uint64_t(kWidth) * kHeight;
+constexpr uint32_t kCountsWidth = 320, kCountsHeight = 180;
+constexpr uint64_t kCountsPixels = uint64_t(kCountsWidth) * kCountsHeight;
 
 class FragmentCounts : public test::SceneSwitching {
   protected:
     FrameResult render(const std::string& scene_name, const std::vector<std::string>& settings) {
-        return SceneSwitching::render(scene_name, settings, kWidth, kHeight, ReadBack::No);
+        return SceneSwitching::render(scene_name, settings, kCountsWidth, kCountsHeight,
+                                      ReadBack::No);
     }
     static constexpr const char* kCounting[] = {"shadow", "depth_prepass", "forward", "decals",
                                                 "transparent"};
@@ -44,10 +45,10 @@ TEST_F(FragmentCounts, OverdrawLayersAreShadedAsTheirDepthOrderImplies) {
     const FrameResult on = render("overdraw", {"count_fragments=on"});
     const FrameResult off = render("overdraw", {"count_fragments=on", "prepass=off"});
     const FrameResult authored = render("overdraw", {"count_fragments=on", "prepass_sort=off"});
-    EXPECT_EQ(pass(on, "forward").shaded_fragments, kPixels);
-    EXPECT_EQ(pass(off, "forward").shaded_fragments, n * kPixels);
-    EXPECT_EQ(pass(on, "depth_prepass").shaded_fragments, kPixels);
-    EXPECT_EQ(pass(authored, "depth_prepass").shaded_fragments, n * kPixels);
+    EXPECT_EQ(pass(on, "forward").shaded_fragments, kCountsPixels);
+    EXPECT_EQ(pass(off, "forward").shaded_fragments, n * kCountsPixels);
+    EXPECT_EQ(pass(on, "depth_prepass").shaded_fragments, kCountsPixels);
+    EXPECT_EQ(pass(authored, "depth_prepass").shaded_fragments, n * kCountsPixels);
     for (const FrameResult* f : {&on, &off, &authored}) {
         for (const PassResult& p : f->passes) {
             if (p.shaded_fragments) {
@@ -86,9 +87,9 @@ TEST_F(FragmentCounts, OverdrawRasterizedIsTheDepthComplexity) {
                                                {"count_fragments=on", "prepass_sort=off"},
                                                {"count_fragments=on", "prepass=off"}}) {
         const FrameResult f = render("overdraw", settings);
-        EXPECT_EQ(pass(f, "forward").rasterized_fragments, n * kPixels) << settings.back();
+        EXPECT_EQ(pass(f, "forward").rasterized_fragments, n * kCountsPixels) << settings.back();
         if (settings.back() != "prepass=off") {
-            EXPECT_EQ(pass(f, "depth_prepass").rasterized_fragments, n * kPixels);
+            EXPECT_EQ(pass(f, "depth_prepass").rasterized_fragments, n * kCountsPixels);
         }
         EXPECT_EQ(pass(f, "transparent").rasterized_fragments, 0u);
     }
@@ -157,7 +158,7 @@ TEST_F(FragmentCounts, QuadsHoldTheShadedFragments) {
     }
     if (!counts_quads()) GTEST_SKIP() << "no quad subgroup operations in fragment shaders";
     const FrameResult od = render("overdraw", {"count_fragments=on"});
-    EXPECT_GE(pass(od, "forward").quads.value_or(0), kPixels / 4);
+    EXPECT_GE(pass(od, "forward").quads.value_or(0), kCountsPixels / 4);
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ using namespace ds;
 using test::differing_pixels;
 using test::names;
 
-constexpr uint32_t kWidth = 240, kHeight = 135;
+constexpr uint32_t kMsaaWidth = 240, kMsaaHeight = 135;
 
 class Msaa : public test::SharedRenderer {
   protected:
@@ -43,8 +43,8 @@ class Msaa : public test::SharedRenderer {
 
     static FrameResult render(const scene::Scene& scene,
                               const std::vector<std::string>& assignments,
-                              ReadBack read_back = ReadBack::Yes, uint32_t w = kWidth,
-                              uint32_t h = kHeight) {
+                              ReadBack read_back = ReadBack::Yes, uint32_t w = kMsaaWidth,
+                              uint32_t h = kMsaaHeight) {
         const Settings s = test::settings_of(assignments);
         if (current_ != &scene) {
             renderer_->set_scene(scene);
@@ -106,14 +106,14 @@ TEST_F(Msaa, FourSamplesAndSwitchingAreValidationClean) {
         EXPECT_EQ(four.msaa.depth_resolve, expected_resolve(/*reverse_z=*/true));
         ASSERT_TRUE(four.msaa.edge_pixels);
         EXPECT_GT(*four.msaa.edge_pixels, 0u);
-        EXPECT_LT(*four.msaa.edge_pixels, uint64_t(kWidth) * kHeight);
+        EXPECT_LT(*four.msaa.edge_pixels, uint64_t(kMsaaWidth) * kMsaaHeight);
         // msaa adds no pass of its own but the shader depth resolve where the device has no
         // native nearest-sample resolve (lavapipe).
         std::vector<std::string> expected = names(one);
         if (four.msaa.depth_resolve == "shader")
             expected.insert(expected.begin() + 2, "depth_resolve");
         EXPECT_EQ(names(four), expected);
-        EXPECT_LT(differing_pixels(one, again, 8), size_t(kWidth) * kHeight / 100);
+        EXPECT_LT(differing_pixels(one, again, 8), size_t(kMsaaWidth) * kMsaaHeight / 100);
         EXPECT_EQ(renderer_->validation_message_count(), 0u);
     }
 }

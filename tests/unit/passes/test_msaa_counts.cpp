@@ -19,7 +19,7 @@ namespace {
 using namespace ds;
 using test::names;
 
-constexpr uint32_t kWidth = 240, kHeight = 135;
+constexpr uint32_t kMsaaCountsWidth = 240, kMsaaCountsHeight = 135;
 
 class MsaaCounts : public test::SharedScene {
   protected:
@@ -33,8 +33,8 @@ class MsaaCounts : public test::SharedScene {
         return (renderer_->device_report().depth_resolve_modes & mode) != 0;
     }
     static FrameResult render(const std::vector<std::string>& assignments, ReadBack read_back) {
-        return renderer_->render(scene_->camera, test::settings_of(assignments), kWidth, kHeight,
-                                 read_back);
+        return renderer_->render(scene_->camera, test::settings_of(assignments), kMsaaCountsWidth,
+                                 kMsaaCountsHeight, read_back);
     }
 
     // Renders edges at `samples` with every depth sample read back: the report's fields, the
@@ -50,7 +50,7 @@ class MsaaCounts : public test::SharedScene {
                   native ? (reverse_z ? "native-max" : "native-min") : "shader");
         ASSERT_TRUE(f.msaa.edge_pixels);
         EXPECT_GT(*f.msaa.edge_pixels, 0u);
-        EXPECT_LT(*f.msaa.edge_pixels, uint64_t(kWidth) * kHeight);
+        EXPECT_LT(*f.msaa.edge_pixels, uint64_t(kMsaaCountsWidth) * kMsaaCountsHeight);
         const size_t pixels = size_t(f.width) * f.height;
         ASSERT_EQ(f.msaa.resolved_depth.size(), pixels) << "depth format is not D32";
         ASSERT_EQ(f.msaa.depth_samples.size(), pixels * samples);

@@ -19,14 +19,14 @@ namespace {
 using namespace ds;
 using test::names;
 
-constexpr uint32_t kWidth = 320, kHeight = 180;
+constexpr uint32_t kZfightWidth = 320, kZfightHeight = 180;
 
 class Zfight : public test::SceneSwitching {
   protected:
     FrameResult render(const std::string& scene_name, const std::vector<std::string>& settings,
                        const InspectRequest& inspect = {}) {
-        return SceneSwitching::render(scene_name, settings, kWidth, kHeight, ReadBack::Yes,
-                                      inspect);
+        return SceneSwitching::render(scene_name, settings, kZfightWidth, kZfightHeight,
+                                      ReadBack::Yes, inspect);
     }
 };
 

@@ -24,7 +24,7 @@ namespace {
 
 using namespace ds;
 
-constexpr uint32_t kWidth = 1280, kHeight = 720;
+constexpr uint32_t kDerivedWidth = 1280, kDerivedHeight = 720;
 constexpr uint32_t kSteps = 4;  // zfight_steps' default
 
 struct Config {
@@ -51,7 +51,7 @@ struct ScreenTriangle {
 };
 
 std::vector<ScreenTriangle> project(const scene::Scene& s, bool reverse) {
-    const float aspect = float(kWidth) / float(kHeight);
+    const float aspect = float(kDerivedWidth) / float(kDerivedHeight);
     const glm::mat4 vp =
         perspective(s.camera.yfov, aspect, s.camera.znear, s.camera.zfar, reverse) *
         s.camera.view();
@@ -64,7 +64,8 @@ std::vector<ScreenTriangle> project(const scene::Scene& s, bool reverse) {
                 const glm::vec3 p = mesh.vertices[mesh.indices[t + k]].position;
                 const glm::vec4 clip = vp * (s.instances[i].world * glm::vec4(p, 1.0f));
                 const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-                tri.v[k] = {(ndc.x * 0.5 + 0.5) * kWidth, (ndc.y * 0.5 + 0.5) * kHeight, ndc.z};
+                tri.v[k] = {(ndc.x * 0.5 + 0.5) * kDerivedWidth,
+                            (ndc.y * 0.5 + 0.5) * kDerivedHeight, ndc.z};
             }
             out.push_back(tri);
         }
@@ -105,18 +106,18 @@ bool survives(double depth, const Config& c) {
 // Every surface the prepass keeps at every pixel centre.
 std::vector<std::vector<Hit>> rasterise(const std::vector<ScreenTriangle>& triangles,
                                         const Config& c) {
-    std::vector<std::vector<Hit>> hits(size_t(kWidth) * kHeight);
+    std::vector<std::vector<Hit>> hits(size_t(kDerivedWidth) * kDerivedHeight);
     for (const ScreenTriangle& t : triangles) {
         const auto lo = glm::min(glm::min(t.v[0], t.v[1]), t.v[2]);
         const auto hi = glm::max(glm::max(t.v[0], t.v[1]), t.v[2]);
         const int x0 = std::max(0, int(std::floor(lo.x)));
-        const int x1 = std::min(int(kWidth), int(hi.x) + 1);
+        const int x1 = std::min(int(kDerivedWidth), int(hi.x) + 1);
         const int y0 = std::max(0, int(std::floor(lo.y)));
-        const int y1 = std::min(int(kHeight), int(hi.y) + 1);
+        const int y1 = std::min(int(kDerivedHeight), int(hi.y) + 1);
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x)
                 if (const auto d = depth_at(t, x + 0.5, y + 0.5); d && survives(*d, c))
-                    hits[size_t(y) * kWidth + x].push_back({t.instance, *d});
+                    hits[size_t(y) * kDerivedWidth + x].push_back({t.instance, *d});
     }
     return hits;
 }
@@ -131,9 +132,9 @@ struct Derived {
 };
 
 bool covers_both(const std::vector<std::vector<Hit>>& hits, int x, int y, PairKey key) {
-    if (x < 0 || y < 0 || x >= int(kWidth) || y >= int(kHeight)) return false;
+    if (x < 0 || y < 0 || x >= int(kDerivedWidth) || y >= int(kDerivedHeight)) return false;
     bool a = false, b = false;
-    for (const Hit& h : hits[size_t(y) * kWidth + x]) {
+    for (const Hit& h : hits[size_t(y) * kDerivedWidth + x]) {
         a |= h.instance == key.first;
         b |= h.instance == key.second;
     }
@@ -144,9 +145,9 @@ bool covers_both(const std::vector<std::vector<Hit>>& hits, int x, int y, PairKe
 std::map<PairKey, Derived> derive(const std::vector<std::vector<Hit>>& hits,
                                   const std::string& format) {
     std::map<PairKey, Derived> pairs;
-    for (int y = 0; y < int(kHeight); ++y) {
-        for (int x = 0; x < int(kWidth); ++x) {
-            const std::vector<Hit>& here = hits[size_t(y) * kWidth + x];
+    for (int y = 0; y < int(kDerivedHeight); ++y) {
+        for (int x = 0; x < int(kDerivedWidth); ++x) {
+            const std::vector<Hit>& here = hits[size_t(y) * kDerivedWidth + x];
             std::set<PairKey> seen;
             for (size_t i = 0; i < here.size(); ++i) {
                 for (size_t j = i + 1; j < here.size(); ++j) {
@@ -203,14 +204,14 @@ void expect_gaps_in_scene_units(const ZfightResult& z, const std::vector<std::ve
                                 const scene::Scene& s, const Config& c) {
     const double n = s.camera.znear, f = s.camera.zfar;
     const double half_tan = std::tan(double(s.camera.yfov) * 0.5);
-    const double aspect = double(kWidth) / kHeight;
+    const double aspect = double(kDerivedWidth) / kDerivedHeight;
     for (const ZfightHit& h : z.hits) {
         const std::vector<Hit>& here = hits[h.pixel];
         ASSERT_FALSE(here.empty()) << "a hit where the host sees no surface";
         const double d = here.front().depth;
         const double zview = c.reverse ? n * f / (n + d * (f - n)) : n * f / (f - d * (f - n));
-        const double x = ((h.pixel % kWidth) + 0.5) / kWidth * 2.0 - 1.0;
-        const double y = ((h.pixel / kWidth) + 0.5) / kHeight * 2.0 - 1.0;
+        const double x = ((h.pixel % kDerivedWidth) + 0.5) / kDerivedWidth * 2.0 - 1.0;
+        const double y = ((h.pixel / kDerivedWidth) + 0.5) / kDerivedHeight * 2.0 - 1.0;
         const double stretch =
             std::sqrt(1.0 + std::pow(x * half_tan * aspect, 2) + std::pow(y * half_tan, 2));
         const double step = one_step(d, c.format) * zview * zview * (f - n) / (n * f) * stretch;
@@ -239,7 +240,7 @@ TEST_F(ZfightDerived, PairsAreExactlyThoseTheGeometryPredicts) {
             scene_->camera,
             test::settings_of({"zfight=on", std::string("depth_format=") + c.format,
                                c.reverse ? "reverse_z=on" : "reverse_z=off"}),
-            kWidth, kHeight, ReadBack::No);
+            kDerivedWidth, kDerivedHeight, ReadBack::No);
         ASSERT_TRUE(f.zfight);
         std::map<std::string, const ZfightPair*> found;
         for (const ZfightPair& p : f.zfight->pairs) found[p.a.node + "|" + p.b.node] = &p;
@@ -280,7 +281,7 @@ TEST_F(ZfightDerived, PairsAreExactlyThoseTheGeometryPredicts) {
                               test::settings_of({"zfight=on", "zfight_steps=1024",
                                                  std::string("depth_format=") + c.format,
                                                  c.reverse ? "reverse_z=on" : "reverse_z=off"}),
-                              kWidth, kHeight, ReadBack::No);
+                              kDerivedWidth, kDerivedHeight, ReadBack::No);
         ASSERT_TRUE(wide.zfight);
         if (!c.reverse) {
             EXPECT_GT(wide.zfight->hits.size(), f.zfight->hits.size());

@@ -13,7 +13,7 @@ namespace ds::scene {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kModels = DS_ASSIMP_MODELS;
+const fs::path kBrokenModels = DS_ASSIMP_MODELS;
 
 struct Broken {
     const char* file;  // relative to the models root
@@ -55,7 +55,7 @@ constexpr Broken kBroken[] = {
      "required extension KHR_draco_mesh_compression is not supported"},
 };
 
-std::string load_error(const fs::path& path) {
+std::string file_load_error(const fs::path& path) {
     try {
         load_gltf(path);
     } catch (const InputError& e) {
@@ -65,7 +65,7 @@ std::string load_error(const fs::path& path) {
 }
 
 void expect_broken(const fs::path& path, const std::string& what) {
-    const std::string message = load_error(path);
+    const std::string message = file_load_error(path);
     ASSERT_FALSE(message.empty()) << path << " loaded";
     EXPECT_EQ(message.rfind(path.string() + ": ", 0), 0u) << message;
     EXPECT_NE(message.find(what), std::string::npos) << message;
@@ -75,8 +75,8 @@ void expect_broken(const fs::path& path, const std::string& what) {
 class BrokenFile : public ::testing::TestWithParam<Broken> {};
 
 TEST_P(BrokenFile, FailsWithOneLineInputError) {
-    if (!fs::exists(kModels / "glTF2")) GTEST_SKIP() << "assimp-testmodels not installed";
-    expect_broken(kModels / GetParam().file, GetParam().what);
+    if (!fs::exists(kBrokenModels / "glTF2")) GTEST_SKIP() << "assimp-testmodels not installed";
+    expect_broken(kBrokenModels / GetParam().file, GetParam().what);
 }
 
 INSTANTIATE_TEST_SUITE_P(Assimp, BrokenFile, ::testing::ValuesIn(kBroken));
@@ -94,21 +94,21 @@ std::vector<fs::path> gltf_files_under(const fs::path& dir) {
 // Every .gltf/.glb under glTF/ is glTF 1.0: asset.version "1.0" or the number 1, or a GLB
 // container of version 1.
 TEST(BrokenFiles, GltfOneIsRefused) {
-    if (!fs::exists(kModels / "glTF")) GTEST_SKIP() << "assimp-testmodels not installed";
-    const auto files = gltf_files_under(kModels / "glTF");
+    if (!fs::exists(kBrokenModels / "glTF")) GTEST_SKIP() << "assimp-testmodels not installed";
+    const auto files = gltf_files_under(kBrokenModels / "glTF");
     EXPECT_GE(files.size(), 7u);
     for (const fs::path& file : files) expect_broken(file, "glTF 1.0 is not supported (need 2.0)");
 }
 
 // Every glTF file in the broken folders is in the table above.
 TEST(BrokenFiles, Coverage) {
-    if (!fs::exists(kModels / "glTF2")) GTEST_SKIP() << "assimp-testmodels not installed";
+    if (!fs::exists(kBrokenModels / "glTF2")) GTEST_SKIP() << "assimp-testmodels not installed";
     std::set<fs::path> listed;
-    for (const Broken& b : kBroken) listed.insert(kModels / b.file);
+    for (const Broken& b : kBroken) listed.insert(kBrokenModels / b.file);
     for (const char* dir : {"IndexOutOfRange", "MissingBin", "SchemaFailures", "wrongTypes",
                             "BoxWithInfinites-glTF-Binary", "RecursiveNodes", "TestNoRootNode",
                             "IncorrectVertexArrays", "draco"})
-        for (const fs::path& file : gltf_files_under(kModels / "glTF2" / dir))
+        for (const fs::path& file : gltf_files_under(kBrokenModels / "glTF2" / dir))
             EXPECT_TRUE(listed.count(file)) << file << " is not in the table";
 }
 

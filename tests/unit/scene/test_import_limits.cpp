@@ -45,7 +45,7 @@ std::string triangle(const std::string& extra = "", const std::string& nodes = "
            base64(bytes) + "\"}]}";
 }
 
-std::string load_error(const std::string& doc) {
+std::string doc_load_error(const std::string& doc) {
     try {
         load_gltf_memory(doc, {}, "mem.gltf");
     } catch (const InputError& e) {
@@ -59,26 +59,27 @@ std::string nested(int depth) {
 }
 
 TEST(ImportLimits, TriangleLoads) {
-    EXPECT_EQ(load_error(triangle()), "");
+    EXPECT_EQ(doc_load_error(triangle()), "");
 }
 
 TEST(ImportLimits, JsonDepthCountsEveryLevelAndNamesTheByte) {
     // The top-level object is level 1: 63 more levels are allowed, the 64th array is level 65.
-    EXPECT_EQ(load_error(triangle("\"extras\":" + nested(limits::kMaxJsonDepth - 1) + ",")), "");
-    EXPECT_EQ(load_error(triangle("\"extras\":" + nested(limits::kMaxJsonDepth) + ",")),
+    EXPECT_EQ(doc_load_error(triangle("\"extras\":" + nested(limits::kMaxJsonDepth - 1) + ",")),
+              "");
+    EXPECT_EQ(doc_load_error(triangle("\"extras\":" + nested(limits::kMaxJsonDepth) + ",")),
               "mem.gltf: byte 73: JSON nested more than 64 levels deep (the limit)");
     // Inside an extension too, and strings (with escaped quotes) do not count.
-    EXPECT_NE(load_error(triangle("\"extensions\":{\"EXT_x\":" + nested(15000) + "},"))
+    EXPECT_NE(doc_load_error(triangle("\"extensions\":{\"EXT_x\":" + nested(15000) + "},"))
                   .find("levels deep"),
               std::string::npos);
-    EXPECT_EQ(load_error(triangle("\"extras\":\"\\\"" + std::string(500, '[') + "\",")), "");
+    EXPECT_EQ(doc_load_error(triangle("\"extras\":\"\\\"" + std::string(500, '[') + "\",")), "");
 }
 
 TEST(ImportLimits, NodeCount) {
     std::string inside;
     for (size_t i = 1; i < limits::kMaxNodes; ++i) inside += ",{}";
-    EXPECT_EQ(load_error(triangle("", inside)), "");
-    const std::string message = load_error(triangle("", inside + ",{}"));
+    EXPECT_EQ(doc_load_error(triangle("", inside)), "");
+    const std::string message = doc_load_error(triangle("", inside + ",{}"));
     EXPECT_EQ(message.rfind("mem.gltf: byte ", 0), 0u) << message;
     EXPECT_NE(message.find("nodes has more than 65536 entries (the limit)"), std::string::npos)
         << message;
@@ -92,8 +93,8 @@ TEST(ImportLimits, HierarchyDepth) {
             nodes += ",{\"children\":[" + std::to_string(i == 1 ? 0 : i - 1) + "]}";
         return triangle("", nodes, std::to_string(links));
     };
-    EXPECT_EQ(load_error(chain(limits::kMaxHierarchyDepth - 1)), "");
-    EXPECT_EQ(load_error(chain(limits::kMaxHierarchyDepth)),
+    EXPECT_EQ(doc_load_error(chain(limits::kMaxHierarchyDepth - 1)), "");
+    EXPECT_EQ(doc_load_error(chain(limits::kMaxHierarchyDepth)),
               "mem.gltf: node 0: the node hierarchy is more than 1024 levels deep (the limit)");
 }
 
@@ -106,7 +107,7 @@ TEST(ImportLimits, ImageDimensionsFromTheHeader) {
                             be32(100000) + std::string("\x08\x06\0\0\0", 5) + be32(0);
     const std::string images =
         R"("images":[{"uri":"data:image/png;base64,)" + base64(png) + "\"}],";
-    EXPECT_EQ(load_error(triangle(images)),
+    EXPECT_EQ(doc_load_error(triangle(images)),
               "mem.gltf: images[0]: image is 100000x100000, beyond the limit of 16384 per side "
               "and 67108864 texels");
 }

@@ -9,7 +9,7 @@
 namespace ds::test {
 namespace {
 
-constexpr uint32_t kWidth = 240, kHeight = 160;
+constexpr uint32_t kFilterWidth = 240, kFilterHeight = 160;
 
 // AO per surface: the wall 0.2, everything else 1 (what a perfect GTAO would not produce, but
 // what makes bleeding across the wall's edges measurable).
@@ -58,9 +58,10 @@ class AoSpatial : public ScreenSpaceTest, public ::testing::WithParamInterface<f
 TEST_P(AoSpatial, KeepsDepthAndNormalEdges) {
     const float scale = GetParam();
     const SyntheticFrame frame =
-        render_synthetic(corner_scene(), corner_camera(), kWidth, kHeight, true);
+        render_synthetic(corner_scene(), corner_camera(), kFilterWidth, kFilterHeight, true);
     rig().upload(frame);
-    const uint32_t w = uint32_t(float(kWidth) * scale), h = uint32_t(float(kHeight) * scale);
+    const uint32_t w = uint32_t(float(kFilterWidth) * scale),
+                   h = uint32_t(float(kFilterHeight) * scale);
     const vk::Image raw = rig().make_r8(
         w, h,
         raw_values(frame, w, h, [](const PixelHit& hit, glm::ivec2) { return wall_dark(hit); }));
@@ -68,8 +69,8 @@ TEST_P(AoSpatial, KeepsDepthAndNormalEdges) {
     write_png(png_path(std::string("spatial_edges_") + (scale < 1.0f ? "half" : "full")), out);
 
     size_t floor_next_to_wall = 0;
-    for (uint32_t y = 0; y < kHeight; ++y)
-        for (uint32_t x = 0; x < kWidth; ++x) {
+    for (uint32_t y = 0; y < kFilterHeight; ++y)
+        for (uint32_t x = 0; x < kFilterWidth; ++x) {
             const PixelHit& hit = frame.hit(x, y);
             if (hit.surface == Surface::Sky) continue;
             const float expected = wall_dark(hit);
@@ -88,17 +89,18 @@ INSTANTIATE_TEST_SUITE_P(Resolutions, AoSpatial, ::testing::Values(1.0f, 0.5f),
 // every residue mod 4 alike.
 TEST_F(AoSpatial, RemovesTheFourByFourPattern) {
     const SyntheticFrame frame =
-        render_synthetic(corner_scene(), corner_camera(), kWidth, kHeight, true);
+        render_synthetic(corner_scene(), corner_camera(), kFilterWidth, kFilterHeight, true);
     rig().upload(frame);
     static const int kBayer[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
     const vk::Image raw = rig().make_r8(
-        kWidth, kHeight, raw_values(frame, kWidth, kHeight, [](const PixelHit&, glm::ivec2 q) {
+        kFilterWidth, kFilterHeight,
+        raw_values(frame, kFilterWidth, kFilterHeight, [](const PixelHit&, glm::ivec2 q) {
             return float(kBayer[(q.y & 3) * 4 + (q.x & 3)]) / 15.0f;
         }));
     const HostImage out = run_spatial(rig(), raw);
     size_t checked = 0;
-    for (uint32_t y = 0; y < kHeight; ++y)
-        for (uint32_t x = 0; x < kWidth; ++x)
+    for (uint32_t y = 0; y < kFilterHeight; ++y)
+        for (uint32_t x = 0; x < kFilterWidth; ++x)
             if (neighbourhood_is(frame, {int(x), int(y)}, 2, Surface::Floor)) {
                 ASSERT_NEAR(out.at(x, y), 0.5f, 0.012f) << x << "," << y;
                 ++checked;
@@ -135,7 +137,7 @@ float constant(float v, const PixelHit& h) {
 
 TEST_F(AoTemporal, InvalidHistoryOutputsCurrentThenBlendsAndConverges) {
     const SyntheticFrame frame =
-        render_synthetic(corner_scene(), corner_camera(), kWidth, kHeight, true);
+        render_synthetic(corner_scene(), corner_camera(), kFilterWidth, kFilterHeight, true);
     rig().upload(frame);
     TemporalRun run(rig());
     const auto surfaces =
@@ -179,11 +181,11 @@ TEST_F(AoTemporal, InvalidHistoryOutputsCurrentThenBlendsAndConverges) {
 // test cannot tell such surfaces apart, and their AO is alike there anyway.)
 TEST_F(AoTemporal, DropsHistoryOfAnotherSurface) {
     const SyntheticFrame with_wall =
-        render_synthetic(corner_scene(), corner_camera(), kWidth, kHeight, true);
+        render_synthetic(corner_scene(), corner_camera(), kFilterWidth, kFilterHeight, true);
     SyntheticScene empty = corner_scene();
     empty.boxes.clear();
     const SyntheticFrame without_wall =
-        render_synthetic(empty, corner_camera(), kWidth, kHeight, true);
+        render_synthetic(empty, corner_camera(), kFilterWidth, kFilterHeight, true);
     TemporalRun run(rig());
     rig().upload(with_wall);
     run.frame(rig(), with_wall, [](const PixelHit& h) { return constant(0.2f, h); });
@@ -192,8 +194,8 @@ TEST_F(AoTemporal, DropsHistoryOfAnotherSurface) {
         run.frame(rig(), without_wall, [](const PixelHit& h) { return constant(1.0f, h); })
             .images.at("ao");
     size_t revealed = 0, kept = 0;
-    for (uint32_t y = 1; y + 1 < kHeight; ++y)
-        for (uint32_t x = 1; x + 1 < kWidth; ++x) {
+    for (uint32_t y = 1; y + 1 < kFilterHeight; ++y)
+        for (uint32_t x = 1; x + 1 < kFilterWidth; ++x) {
             const glm::ivec2 p{int(x), int(y)};
             if (!neighbourhood_is(without_wall, p, 1, Surface::Floor)) continue;
             const glm::mat4& view = with_wall.uniforms.view;
@@ -222,10 +224,12 @@ TEST_F(AoTemporal, ReprojectsWithThePreviousViewProjection) {
         return std::fmod(h.position.x + 100.0f, 1.0f) < 0.5f ? 0.2f : 0.8f;
     };
     SyntheticCamera camera = corner_camera();
-    const SyntheticFrame first = render_synthetic(corner_scene(), camera, kWidth, kHeight, true);
+    const SyntheticFrame first =
+        render_synthetic(corner_scene(), camera, kFilterWidth, kFilterHeight, true);
     camera.eye += glm::vec3(0.3f, 0.0f, -0.4f);
     camera.target += glm::vec3(0.3f, 0.0f, -0.4f);
-    SyntheticFrame second = render_synthetic(corner_scene(), camera, kWidth, kHeight, true);
+    SyntheticFrame second =
+        render_synthetic(corner_scene(), camera, kFilterWidth, kFilterHeight, true);
     second.uniforms.previous_view_projection = first.uniforms.view_projection;
 
     TemporalRun run(rig());
@@ -236,8 +240,8 @@ TEST_F(AoTemporal, ReprojectsWithThePreviousViewProjection) {
     write_png(png_path("temporal_stripes"), ao);
 
     size_t checked = 0, moved_across_stripe = 0;
-    for (uint32_t y = 0; y < kHeight; ++y)
-        for (uint32_t x = 0; x < kWidth; ++x) {
+    for (uint32_t y = 0; y < kFilterHeight; ++y)
+        for (uint32_t x = 0; x < kFilterWidth; ++x) {
             const PixelHit& hit = second.hit(x, y);
             if (!neighbourhood_is(second, {int(x), int(y)}, 1, Surface::Floor)) continue;
             // Last frame's pixel of this point: on the floor too, and 5 cm inside a stripe.

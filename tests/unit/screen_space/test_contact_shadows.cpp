@@ -7,15 +7,15 @@
 namespace ds::test {
 namespace {
 
-constexpr uint32_t kWidth = 240, kHeight = 160;
-const glm::vec3 kSun = glm::normalize(glm::vec3{1.0f, 0.6f, 0.2f});  // towards +X, 30 deg up
+constexpr uint32_t kContactWidth = 240, kContactHeight = 160;
+const glm::vec3 kContactSun = glm::normalize(glm::vec3{1.0f, 0.6f, 0.2f});  // towards +X, 30 deg up
 
 class ContactShadows : public ScreenSpaceTest, public ::testing::WithParamInterface<bool> {};
 
 TEST_P(ContactShadows, ShadowBehindTheWallLitElsewhere) {
     const bool reverse_z = GetParam();
-    const SyntheticFrame frame =
-        render_synthetic(corner_scene(), corner_camera(), kWidth, kHeight, reverse_z, kSun);
+    const SyntheticFrame frame = render_synthetic(corner_scene(), corner_camera(), kContactWidth,
+                                                  kContactHeight, reverse_z, kContactSun);
     rig().upload(frame);
     passes::ContactShadowsPass contact(rig().services());
     graph::RenderGraph graph(rig().context());
@@ -30,11 +30,11 @@ TEST_P(ContactShadows, ShadowBehindTheWallLitElsewhere) {
 
     // The floor whose ray towards the sun enters the wall within the march (0.4 m along the
     // ray: 0.34 m in x): all in shadow when the entry is well inside the reach.
-    const float reach_x = passes::ContactShadowsPass::Params{}.ray_length * kSun.x;
+    const float reach_x = passes::ContactShadowsPass::Params{}.ray_length * kContactSun.x;
     const auto foot = select_pixels(frame, [&](const PixelHit& h) {
         // Where the ray meets the wall's face (x = 0): inside the wall's extent in z and y.
-        const float t = -h.position.x / kSun.x;
-        const glm::vec3 entry = h.position + t * kSun;
+        const float t = -h.position.x / kContactSun.x;
+        const glm::vec3 entry = h.position + t * kContactSun;
         return h.surface == Surface::Floor && h.position.x < -0.02f &&
                h.position.x > -0.6f * reach_x && std::abs(entry.z) < kWallHalfLength - 0.2f;
     });
@@ -44,7 +44,8 @@ TEST_P(ContactShadows, ShadowBehindTheWallLitElsewhere) {
         // A ray that leaves the screen before it is well inside the wall finds nothing: skip
         // the pixels whose ray could (a screen-space limit, not a defect).
         const glm::vec3 position = frame.hit(p.x, p.y).position;
-        if (!frame.pixel_of(position + (-position.x / kSun.x + 0.06f) * kSun)) continue;
+        if (!frame.pixel_of(position + (-position.x / kContactSun.x + 0.06f) * kContactSun))
+            continue;
         ASSERT_EQ(shadow.at(p.x, p.y), 0.0f) << p.x << "," << p.y;
         ++checked;
     }

@@ -13,9 +13,9 @@
 namespace ds::test {
 namespace {
 
-constexpr uint32_t kWidth = 480, kHeight = 320;
-const glm::vec3 kSun{1.0f, 0.6f, 0.2f};  // towards +X: the wall shades the floor in front
-constexpr int kBorder = 48;              // pixels: about the AO radius's projection at the corner
+constexpr uint32_t kGtaoWidth = 480, kGtaoHeight = 320;
+const glm::vec3 kGtaoSun{1.0f, 0.6f, 0.2f};  // towards +X: the wall shades the floor in front
+constexpr int kBorder = 48;  // pixels: about the AO radius's projection at the corner
 
 struct Variant {
     bool reverse_z;
@@ -35,8 +35,8 @@ class GtaoCorner : public ScreenSpaceTest, public ::testing::WithParamInterface<
 
 TEST_P(GtaoCorner, OpenFloorIsUnoccludedCornerIsDarkSkyIsOne) {
     const Variant v = GetParam();
-    const SyntheticFrame frame =
-        render_synthetic(corner_scene(), corner_camera(), kWidth, kHeight, v.reverse_z, kSun);
+    const SyntheticFrame frame = render_synthetic(corner_scene(), corner_camera(), kGtaoWidth,
+                                                  kGtaoHeight, v.reverse_z, kGtaoSun);
     rig().upload(frame);
     ScreenSpacePasses passes(rig().services(), v.gtao_scale);
     graph::RenderGraph graph(rig().context());
@@ -45,7 +45,7 @@ TEST_P(GtaoCorner, OpenFloorIsUnoccludedCornerIsDarkSkyIsOne) {
     const HostImage& ao = out.images.at("ao");
     for (const auto& [name, image] : out.images)
         write_png(png_path(name + "_" + variant_name(v)), image);
-    EXPECT_EQ(out.images.at("ao_raw").width, uint32_t(float(kWidth) * v.gtao_scale));
+    EXPECT_EQ(out.images.at("ao_raw").width, uint32_t(float(kGtaoWidth) * v.gtao_scale));
 
     // Open floor: farther from the wall than the 1 m radius (plus the filter's reach).
     const auto open_floor = select_pixels(frame, [](const PixelHit& h) {
@@ -66,8 +66,8 @@ TEST_P(GtaoCorner, OpenFloorIsUnoccludedCornerIsDarkSkyIsOne) {
              return h.surface == Surface::Floor && h.position.x > -0.1f && h.position.x < -0.02f &&
                     std::abs(h.position.z) < 3.0f;
          }))
-        if (p.x >= kBorder && p.y >= kBorder && p.x < int(kWidth) - kBorder &&
-            p.y < int(kHeight) - kBorder)
+        if (p.x >= kBorder && p.y >= kBorder && p.x < int(kGtaoWidth) - kBorder &&
+            p.y < int(kGtaoHeight) - kBorder)
             corner.push_back(p);
     ASSERT_GT(corner.size(), 20u);
     float corner_max = 0.0f, corner_sum = 0.0f;
@@ -95,7 +95,7 @@ using Gtao = ScreenSpaceTest;
 // The whole chain under a static camera: the first frame has no history (ao = ao_filtered
 // exactly); later frames blend a history equal to the current value, so nothing drifts.
 TEST_F(Gtao, StaticCameraStaysStable) {
-    rig().upload(render_synthetic(corner_scene(), corner_camera(), 240, 160, true, kSun));
+    rig().upload(render_synthetic(corner_scene(), corner_camera(), 240, 160, true, kGtaoSun));
     ScreenSpacePasses passes(rig().services());
     graph::RenderGraph graph(rig().context());
     std::vector<float> first;
@@ -116,7 +116,8 @@ TEST_F(Gtao, StaticCameraStaysStable) {
 }
 
 TEST_F(Gtao, SameInputSameOutput) {
-    rig().upload(render_synthetic(corner_scene(), corner_camera(), kWidth, kHeight, true, kSun));
+    rig().upload(
+        render_synthetic(corner_scene(), corner_camera(), kGtaoWidth, kGtaoHeight, true, kGtaoSun));
     passes::GtaoPass gtao(rig().services());
     graph::RenderGraph graph(rig().context());
     auto declare = [&](graph::RenderGraph& g, const passes::FrameInputs& in,
@@ -127,7 +128,7 @@ TEST_F(Gtao, SameInputSameOutput) {
 }
 
 TEST_F(Gtao, SwitchedOffAddsNothing) {
-    rig().upload(render_synthetic(corner_scene(), corner_camera(), 64, 48, true, kSun));
+    rig().upload(render_synthetic(corner_scene(), corner_camera(), 64, 48, true, kGtaoSun));
     ScreenSpacePasses passes(rig().services());
     graph::RenderGraph graph(rig().context());
     passes::FrameOptions options;
@@ -164,7 +165,7 @@ TEST_F(Gtao, FailedRebuildKeepsThePipeline) {
                                services.readback};
     passes::GtaoPass gtao(local);
 
-    rig().upload(render_synthetic(corner_scene(), corner_camera(), 64, 48, true, kSun));
+    rig().upload(render_synthetic(corner_scene(), corner_camera(), 64, 48, true, kGtaoSun));
     graph::RenderGraph graph(rig().context());
     auto declare = [&](graph::RenderGraph& g, const passes::FrameInputs& in,
                        passes::FrameResources& res) { gtao.add(g, in, res); };
@@ -182,7 +183,7 @@ TEST_F(Gtao, FailedRebuildKeepsThePipeline) {
 // GPU time of each pass at 1280x720 (printed, never asserted: benchmarks are not tests).
 TEST_F(Gtao, TimingAt1280x720) {
     const SyntheticFrame frame =
-        render_synthetic(corner_scene(), corner_camera(), 1280, 720, true, kSun);
+        render_synthetic(corner_scene(), corner_camera(), 1280, 720, true, kGtaoSun);
     rig().upload(frame);
     for (float scale : {0.5f, 1.0f}) {
         ScreenSpacePasses passes(rig().services(), scale);

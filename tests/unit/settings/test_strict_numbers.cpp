@@ -17,7 +17,7 @@ using ds::UsageError;
 
 namespace {
 
-std::string usage_error_of(Settings& s, const std::string& name, const std::string& value) {
+std::string strict_usage_error(Settings& s, const std::string& name, const std::string& value) {
     try {
         s.set(name, value);
     } catch (const UsageError& e) {
@@ -35,11 +35,11 @@ TEST(StrictNumbers, DenormalsAndValuesBelowTheSmallestNormalFloatAreRefused) {
     // not: the check is on what get_float() will read.
     for (const char* v :
          {"1e-320", "4.9e-324", "1e-40", "1e-38", "1.1754942e-38", "1.17549436e-38"}) {
-        const std::string msg = usage_error_of(s, "sun_intensity", v);
+        const std::string msg = strict_usage_error(s, "sun_intensity", v);
         EXPECT_NE(msg.find("too small for a float"), std::string::npos) << v << ": " << msg;
     }
     // Below double's range altogether: not a number at all (from_chars reports the range).
-    EXPECT_FALSE(usage_error_of(s, "sun_intensity", "1e-400").empty());
+    EXPECT_FALSE(strict_usage_error(s, "sun_intensity", "1e-400").empty());
     EXPECT_EQ(s.get("sun_intensity"), "3");  // every refusal left the default
     // The smallest normal float and just above it read back as themselves, normal.
     for (const char* v : {"1.2e-38", "1.175495e-38", "0.0001"}) {
@@ -48,7 +48,7 @@ TEST(StrictNumbers, DenormalsAndValuesBelowTheSmallestNormalFloatAreRefused) {
         EXPECT_TRUE(std::isnormal(f)) << v << " -> " << s.get("sun_intensity");
     }
     // The same rule for a Map's numbers.
-    const std::string msg = usage_error_of(s, "material_alpha_cutoff", "a=1e-320");
+    const std::string msg = strict_usage_error(s, "material_alpha_cutoff", "a=1e-320");
     EXPECT_NE(msg.find("too small for a float"), std::string::npos) << msg;
 }
 
@@ -64,7 +64,7 @@ TEST(StrictNumbers, OnlyWholePlainNumbersAreNumbers) {
     Settings s;
     for (const char* v :
          {"", " 2", "2 ", "+2", "0x2", "2,5", "inf", "-inf", "nan", "1e999", "2f", "\n2", "２"}) {
-        const std::string msg = usage_error_of(s, "exposure", v);
+        const std::string msg = strict_usage_error(s, "exposure", v);
         EXPECT_NE(msg.find("not a number"), std::string::npos) << "'" << v << "': " << msg;
     }
     EXPECT_EQ(s.get("exposure"), "1");
@@ -74,10 +74,10 @@ TEST(StrictNumbers, IntKnobsStayInsideTheirRangeAndInt) {
     Settings s;
     for (const char* v :
          {"2147483648", "-2147483649", "4294967297", "1e10", "99999999999999999999"})
-        EXPECT_NE(usage_error_of(s, "overdraw_layers", v).find("out of range 1..64"),
+        EXPECT_NE(strict_usage_error(s, "overdraw_layers", v).find("out of range 1..64"),
                   std::string::npos)
             << v;
-    EXPECT_NE(usage_error_of(s, "zfight_steps", "1e-320").find("not an integer"),
+    EXPECT_NE(strict_usage_error(s, "zfight_steps", "1e-320").find("not an integer"),
               std::string::npos);
     s.set("zfight_steps", "1e3");  // an exponent that makes a whole number is that number
     EXPECT_EQ(s.get("zfight_steps"), "1000");
@@ -87,12 +87,12 @@ TEST(StrictNumbers, IntKnobsStayInsideTheirRangeAndInt) {
 TEST(StrictNumbers, MsaaTakesOnlyVulkanSampleCounts) {
     Settings s;
     for (const char* v : {"3", "5", "6", "7"}) {
-        const std::string msg = usage_error_of(s, "msaa", v);
+        const std::string msg = strict_usage_error(s, "msaa", v);
         EXPECT_NE(msg.find("setting msaa: " + std::string(v) + " is not one of 1|2|4|8"),
                   std::string::npos)
             << msg;
     }
-    EXPECT_NE(usage_error_of(s, "msaa", "16").find("out of range"), std::string::npos);
+    EXPECT_NE(strict_usage_error(s, "msaa", "16").find("out of range"), std::string::npos);
     for (const char* v : {"1", "2", "4", "8", "4.0"}) {
         s.set("msaa", v);
         EXPECT_EQ(s.get_int("msaa"), std::stoi(v));
@@ -143,7 +143,7 @@ TEST(Quoted, EverySettingsErrorThatEchoesAValueStaysOneLine) {
                  {"material_alpha_cutoff", "\x01=0.5,\x01=0.5"},
                  {"material_alpha_cutoff", "=\n0.5"}};
     for (const auto& c : cases) {
-        const std::string msg = usage_error_of(s, c.name, c.value);
+        const std::string msg = strict_usage_error(s, c.name, c.value);
         EXPECT_EQ(msg.find_first_of("\n\r\x01"), std::string::npos) << c.name << ": " << msg;
     }
     try {

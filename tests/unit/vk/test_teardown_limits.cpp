@@ -18,7 +18,7 @@ namespace {
 
 using namespace ds;
 
-vk::ContextOptions validated() {
+vk::ContextOptions validated_options() {
     vk::ContextOptions o;
     o.validate = true;
     return o;
@@ -40,7 +40,7 @@ class ScopedLimits {
 };
 
 TEST(VkTeardown, LeakedObjectIsCountedAtDeviceDestruction) {
-    auto context = std::make_unique<vk::Context>(validated());
+    auto context = std::make_unique<vk::Context>(validated_options());
     const auto counter = context->validation_counter();
     leak_a_sampler(*context);
     EXPECT_EQ(*counter, 0u) << "nothing is reported before the device is destroyed";
@@ -49,7 +49,7 @@ TEST(VkTeardown, LeakedObjectIsCountedAtDeviceDestruction) {
 }
 
 TEST(VkTeardown, ContextWithoutLeaksReportsNothingAtDestruction) {
-    auto context = std::make_unique<vk::Context>(validated());
+    auto context = std::make_unique<vk::Context>(validated_options());
     const auto counter = context->validation_counter();
     context.reset();
     EXPECT_EQ(*counter, 0u);
@@ -71,7 +71,7 @@ TEST(VkTeardown, RendererShutdownCountsWhatTeardownReports) {
 }
 
 TEST(VkLimits, ImageBeyondTheDimensionLimitIsRefusedByName) {
-    vk::Context context(validated());
+    vk::Context context(validated_options());
     const uint32_t too_wide = context.limits().maxImageDimension2D + 1;
     try {
         vk::Image image(context, {too_wide, 4, 1, VK_FORMAT_R8G8B8A8_UNORM,
@@ -89,7 +89,7 @@ TEST(VkLimits, ImageBeyondTheDimensionLimitIsRefusedByName) {
 
 TEST(VkLimits, LoweredDimensionLimitAppliesToImages) {
     const ScopedLimits limits("image=256");
-    vk::Context context(validated());
+    vk::Context context(validated_options());
     EXPECT_EQ(context.limits().maxImageDimension2D, 256u);
     EXPECT_TRUE(context.report().limits.lowered);
     EXPECT_NO_THROW(
@@ -102,7 +102,7 @@ TEST(VkLimits, LoweredDimensionLimitAppliesToImages) {
 
 TEST(VkLimits, AllocationAboveTheLargestIsRefusedByName) {
     const ScopedLimits limits("allocation_mib=1");
-    vk::Context context(validated());
+    vk::Context context(validated_options());
     try {
         vk::Buffer big(context, {2u << 20, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                  vk::MemoryUsage::GpuOnly, "two_mib"});
