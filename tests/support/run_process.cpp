@@ -30,6 +30,11 @@ fs::path fresh_dir(const std::string& name) {
 }
 
 ProcessResult run_depthscope(const std::string& args, int timeout_s) {
+    const std::string capture = "capture ";
+    if (args.rfind(capture, 0) == 0 && args.find("--resources") == std::string::npos)
+        return run_command(DS_EXECUTABLE " capture --resources none " +
+                               args.substr(capture.size()),
+                           timeout_s);
     return run_command(DS_EXECUTABLE " " + args, timeout_s);
 }
 

@@ -13,7 +13,10 @@ struct ProcessResult {
     std::string err;  // stderr
 };
 
-// Runs `depthscope ARGS` (a shell word list) with a time limit in seconds.
+// Runs `depthscope ARGS` (a shell word list) with a time limit in seconds. A capture writes
+// only what its test asks for: `capture …` without `--resources` runs as `capture --resources
+// none …` (every graph image as PNG and EXR costs seconds, a minute under ASan; the
+// resources are tested where they are asked for, tests/render/test_capture_resources.cpp).
 ProcessResult run_depthscope(const std::string& args, int timeout_s = 120);
 // Runs a shell command line (/bin/sh) with a time limit, its output captured the same way
 // (`bash -c 'ulimit -f 8; exec ...'`; DS_EXECUTABLE names depthscope).
