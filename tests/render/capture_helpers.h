@@ -17,14 +17,13 @@ struct Capture {
 };
 
 // Renders `scene` at WxH with --validate and extra args into a fresh folder named `tag`;
-// without the graph's images (--resources none) unless `extra` asks for them.
+// without the graph's images (run_depthscope's --resources none) unless `extra` asks for them.
 inline Capture capture(const std::string& tag, const std::string& scene, const std::string& size,
                        const std::string& extra = "") {
     Capture c;
     c.dir = fresh_dir(tag) / "cap";
-    auto r = run_depthscope(
-        "capture --validate --scene " + scene + " --size " + size + " --out " + c.dir.string() +
-        (extra.find("--resources") == std::string::npos ? " --resources none " : " ") + extra);
+    auto r = run_depthscope("capture --validate --scene " + scene + " --size " + size +
+                            " --out " + c.dir.string() + " " + extra);
     EXPECT_EQ(r.exit_code, 0) << scene << "\n" << r.err;
     if (r.exit_code != 0) return c;
     c.image = read_png(c.dir / "final.png");
