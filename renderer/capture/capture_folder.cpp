@@ -10,6 +10,7 @@
 
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
+#include "renderer/scene/image_checks.h"
 
 // A private copy of stb_image (static functions), PNG only, for final.png; other libraries in
 // the process carry their own.
@@ -176,8 +177,17 @@ Rgba8Image read_png_rgba8(const fs::path& path) {
     if (w < 1 || h < 1 || w > kMaxSide || h > kMaxSide)
         fail(path, "PNG of " + std::to_string(w) + "x" + std::to_string(h) + ": outside 1x1.." +
                        std::to_string(kMaxSide) + "x" + std::to_string(kMaxSide));
+    std::string cleaned;  // without empty IDAT chunks, which stb mishandles (image_checks.h)
+    try {
+        scene::check_png_chunks(data, size, cleaned);
+    } catch (const Error& e) {
+        fail(path, e.what());
+    }
+    const auto* decoded = cleaned.empty() ? data : reinterpret_cast<const stbi_uc*>(cleaned.data());
     const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-        stbi_load_from_memory(data, size, &w, &h, &comp, 4), stbi_image_free);
+        stbi_load_from_memory(decoded, cleaned.empty() ? size : int(cleaned.size()), &w, &h,
+                              &comp, 4),
+        stbi_image_free);
     if (!pixels) fail(path, std::string("cannot decode PNG: ") + stbi_failure_reason());
     Rgba8Image image{uint32_t(w), uint32_t(h), {}};
     image.rgba.assign(pixels.get(), pixels.get() + size_t(w) * size_t(h) * 4);
