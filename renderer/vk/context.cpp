@@ -100,7 +100,8 @@ Context::~Context() {
 void Context::destroy() {
     if (device_) vkDeviceWaitIdle(device_);  // teardown: an error here has nowhere to go
     allocator_.reset();
-    if (once_pool_) vkDestroyCommandPool(device_, once_pool_, nullptr);
+    if (once_fence_) vkDestroyFence(device_, once_fence_, nullptr);
+    if (once_pool_) vkDestroyCommandPool(device_, once_pool_, nullptr);  // frees once_cmd_
     if (device_) vkDestroyDevice(device_, nullptr);
     if (messenger_) {
         auto destroy_messenger = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
@@ -252,9 +253,16 @@ void Context::create_device() {
     vkGetDeviceQueue(device_, report_.queue_family, 0, &queue_);
 
     auto pool = make<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
-    pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pool.queueFamilyIndex = report_.queue_family;
     check(vkCreateCommandPool(device_, &pool, nullptr, &once_pool_), "vkCreateCommandPool");
+    auto alloc = make<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
+    alloc.commandPool = once_pool_;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    check(vkAllocateCommandBuffers(device_, &alloc, &once_cmd_), "vkAllocateCommandBuffers");
+    auto fence_info = make<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
+    check(vkCreateFence(device_, &fence_info, nullptr, &once_fence_), "vkCreateFence");
     allocator_ =
         std::make_unique<Allocator>(physical_device_, device_, Allocator::kDefaultBlockSize,
                                     report_.limits.max_memory_allocation_size);
@@ -267,38 +275,28 @@ VkFormatProperties Context::format_properties(VkFormat format) const {
 }
 
 void Context::submit_once(const std::function<void(VkCommandBuffer)>& record) {
-    auto alloc = make<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
-    alloc.commandPool = once_pool_;
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    VkCommandBuffer cmd = VK_NULL_HANDLE;
-    check(vkAllocateCommandBuffers(device_, &alloc, &cmd), "vkAllocateCommandBuffers");
-    VkFence fence = VK_NULL_HANDLE;
-    struct Cleanup {  // runs on success and on a throw from `record`
+    struct Reset {  // a throw from `record` leaves the buffer recording: reset it for the next
         Context& c;
-        VkCommandBuffer& cmd;
-        VkFence& fence;
-        ~Cleanup() {
-            if (fence) vkDestroyFence(c.device_, fence, nullptr);
-            vkFreeCommandBuffers(c.device_, c.once_pool_, 1, &cmd);
+        bool recorded = false;
+        ~Reset() {
+            if (!recorded) vkResetCommandBuffer(c.once_cmd_, 0);
         }
-    } cleanup{*this, cmd, fence};
-
+    } reset{*this};
     auto begin = make<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
-    record(cmd);
-    check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+    check(vkBeginCommandBuffer(once_cmd_, &begin), "vkBeginCommandBuffer");  // resets it
+    record(once_cmd_);
+    check(vkEndCommandBuffer(once_cmd_), "vkEndCommandBuffer");
+    reset.recorded = true;
 
-    auto fence_info = make<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO);
-    check(vkCreateFence(device_, &fence_info, nullptr, &fence), "vkCreateFence");
+    check(vkResetFences(device_, 1, &once_fence_), "vkResetFences");
     auto cmd_info = make<VkCommandBufferSubmitInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO);
-    cmd_info.commandBuffer = cmd;
+    cmd_info.commandBuffer = once_cmd_;
     auto submit = make<VkSubmitInfo2>(VK_STRUCTURE_TYPE_SUBMIT_INFO_2);
     submit.commandBufferInfoCount = 1;
     submit.pCommandBufferInfos = &cmd_info;
-    check(fn().queue_submit2(queue_, 1, &submit, fence), "vkQueueSubmit2");
-    check(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    check(fn().queue_submit2(queue_, 1, &submit, once_fence_), "vkQueueSubmit2");
+    check(vkWaitForFences(device_, 1, &once_fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
 }
 
 void Context::wait_idle() const {
