@@ -183,9 +183,9 @@ Rgba8Image read_png_rgba8(const fs::path& path) {
     } catch (const Error& e) {
         fail(path, e.what());
     }
-    const auto* decoded = cleaned.empty() ? data : reinterpret_cast<const stbi_uc*>(cleaned.data());
+    const std::string& png = cleaned.empty() ? bytes : cleaned;
     const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-        stbi_load_from_memory(decoded, cleaned.empty() ? size : int(cleaned.size()), &w, &h,
+        stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(png.data()), int(png.size()), &w, &h,
                               &comp, 4),
         stbi_image_free);
     if (!pixels) fail(path, std::string("cannot decode PNG: ") + stbi_failure_reason());

@@ -20,9 +20,7 @@
 #include "tests/support/run_process.h"
 
 namespace fs = std::filesystem;
-using ds::test::count_lines;
 using ds::test::expect_one_error_line;
-using ds::test::run_command;
 using ds::test::run_depthscope;
 
 namespace {
@@ -50,12 +48,6 @@ void expect_no_leftovers(const fs::path& out) {
 ds::test::ProcessResult capture(const fs::path& out, const std::string& extra = "") {
     return run_depthscope("capture --scene overdraw --size 16x16 --out " + out.string() + " " +
                           extra);
-}
-
-// `depthscope ARGS` under a file-size limit of `blocks` KiB (bash's ulimit -f counts 1024s).
-ds::test::ProcessResult under_file_limit(int blocks, const std::string& args) {
-    return run_command("bash -c 'ulimit -f " + std::to_string(blocks) +
-                       "; exec " DS_EXECUTABLE " " + args + "'");
 }
 
 }  // namespace
@@ -115,7 +107,7 @@ TEST(Output, AReportCutShortLeavesTheExistingFolderAsItWas) {
     ASSERT_LT(fs::file_size(out / "final.png"), 4096u);
     ASSERT_GT(fs::file_size(out / "report.json"), 4096u);
     const auto before = snapshot(out);
-    const auto r = under_file_limit(
+    const auto r = ds::test::run_depthscope_under_file_limit(
         4, "capture --scene overdraw --size 16x16 --resources none --set exposure=2 --out " +
                out.string());
     expect_one_error_line(r, 1, "report.json: cannot write: File too large");
@@ -127,15 +119,15 @@ TEST(Output, AReportCutShortLeavesTheExistingFolderAsItWas) {
 // says so in one line and leaves nothing (it used to print `wrote` and exit 0).
 TEST(Output, AFileSizeLimitIsAnErrorThatLeavesNothing) {
     const fs::path out = ds::test::fresh_dir("output-ulimit") / "cap";
-    const auto r =
-        under_file_limit(8, "capture --scene atrium --size 256x256 --out " + out.string());
+    const auto r = ds::test::run_depthscope_under_file_limit(
+        8, "capture --scene atrium --size 256x256 --out " + out.string());
     expect_one_error_line(r, 1, "final.png: cannot write: File too large");
     EXPECT_EQ(r.out.find("wrote"), std::string::npos) << r.out;
     EXPECT_FALSE(fs::exists(out));
     expect_no_leftovers(out);
 
     const fs::path json = out.parent_path() / "pixel.json";
-    const auto p = under_file_limit(
+    const auto p = ds::test::run_depthscope_under_file_limit(
         1, "pixel --scene overdraw --size 32x32 --at 16,16 --json " + json.string());
     expect_one_error_line(p, 1, "cannot write: File too large");
     EXPECT_FALSE(fs::exists(json));

@@ -21,7 +21,6 @@
 
 namespace fs = std::filesystem;
 using ds::test::expect_one_error_line;
-using ds::test::run_command;
 using ds::test::run_depthscope;
 using nlohmann::json;
 
@@ -259,10 +258,8 @@ TEST(TraceCli, BadTargetsAreRefusedBeforeAnyWork) {
 // A write cut short (a file-size limit) is one line and leaves no trace and no temporary file.
 TEST(TraceCli, AWriteCutShortLeavesNothing) {
     const fs::path trace = ds::test::fresh_dir("trace-ulimit") / "t.json";
-    const auto r = run_command("bash -c 'ulimit -f 2; exec " DS_EXECUTABLE
-                               " bench --scene overdraw --size 16x16 --frames 2 --warmup 0 "
-                               "--trace " +
-                               trace.string() + "'");
+    const auto r = ds::test::run_depthscope_under_file_limit(
+        2, "bench --scene overdraw --size 16x16 --frames 2 --warmup 0 --trace " + trace.string());
     expect_one_error_line(r, 1, "cannot write: File too large");
     EXPECT_TRUE(fs::is_empty(trace.parent_path())) << "no trace, no temporary file";
 }

@@ -22,8 +22,8 @@ inline Capture capture(const std::string& tag, const std::string& scene, const s
                        const std::string& extra = "") {
     Capture c;
     c.dir = fresh_dir(tag) / "cap";
-    auto r = run_depthscope("capture --validate --scene " + scene + " --size " + size +
-                            " --out " + c.dir.string() + " " + extra);
+    auto r = run_depthscope("capture --validate --scene " + scene + " --size " + size + " --out " +
+                            c.dir.string() + " " + extra);
     EXPECT_EQ(r.exit_code, 0) << scene << "\n" << r.err;
     if (r.exit_code != 0) return c;
     c.image = read_png(c.dir / "final.png");

@@ -59,8 +59,8 @@ TEST(Diff, ACaptureAgainstItsReplayIsTheSameEverywhere) {
     ASSERT_FALSE(a.report.is_null());
     Capture b;
     b.dir = fresh_dir("diff-same-b") / "replay";
-    const ProcessResult replayed = run_depthscope("replay " + a.dir.string() +
-                                                  " --resources all --out " + b.dir.string());
+    const ProcessResult replayed =
+        run_depthscope("replay " + a.dir.string() + " --resources all --out " + b.dir.string());
     ASSERT_EQ(replayed.exit_code, 0) << replayed.err;
     b.report = read_json(b.dir / "report.json");
     ASSERT_FALSE(b.report.is_null());

@@ -129,8 +129,7 @@ TEST(Replay, AnUnwritableOrFullOutputIsOneLineAndLeavesNothing) {
     const Capture c = capture("replay-full", "overdraw", "64x64");
     const fs::path base = fresh_dir("replay-full-out");
     const auto expect_failed = [&](const std::string& args, int code, const std::string& why) {
-        const ProcessResult r =
-            run_command("bash -c 'ulimit -f 1; exec " DS_EXECUTABLE " " + args + "'");
+        const ProcessResult r = run_depthscope_under_file_limit(1, args);
         SCOPED_TRACE(args);
         expect_one_error_line(r, code, why);
         EXPECT_TRUE(fs::is_empty(base)) << "left behind in " << base;

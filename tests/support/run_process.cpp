@@ -32,10 +32,14 @@ fs::path fresh_dir(const std::string& name) {
 ProcessResult run_depthscope(const std::string& args, int timeout_s) {
     const std::string capture = "capture ";
     if (args.rfind(capture, 0) == 0 && args.find("--resources") == std::string::npos)
-        return run_command(DS_EXECUTABLE " capture --resources none " +
-                               args.substr(capture.size()),
+        return run_command(DS_EXECUTABLE " capture --resources none " + args.substr(capture.size()),
                            timeout_s);
     return run_command(DS_EXECUTABLE " " + args, timeout_s);
+}
+
+ProcessResult run_depthscope_under_file_limit(int kib, const std::string& args) {
+    return run_command("bash -c 'ulimit -f " + std::to_string(kib) + "; exec " DS_EXECUTABLE " " +
+                       args + "'");
 }
 
 ProcessResult run_command(const std::string& command, int timeout_s) {

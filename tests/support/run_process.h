@@ -21,6 +21,9 @@ ProcessResult run_depthscope(const std::string& args, int timeout_s = 120);
 // Runs a shell command line (/bin/sh) with a time limit, its output captured the same way
 // (`bash -c 'ulimit -f 8; exec ...'`; DS_EXECUTABLE names depthscope).
 ProcessResult run_command(const std::string& command, int timeout_s = 120);
+// `depthscope ARGS` under a file-size limit of `kib` KiB (`ulimit -f`; stderr stays a pipe, so
+// the error line still comes through).
+ProcessResult run_depthscope_under_file_limit(int kib, const std::string& args);
 // The name of the device depthscope selects by default ("llvmpipe (LLVM 15.0.6, 256 bits)" here,
 // "NVIDIA H200" there), read from `depthscope info`; tests stay device-independent with it.
 std::string selected_device_name();

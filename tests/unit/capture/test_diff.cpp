@@ -249,7 +249,8 @@ TEST(CaptureFolder, RefusesWhatIsNotACapture) {
     const std::string ihdr("\0\0\0\x0dIHDR\0\0\0\x02\0\0\0\x02\x08\x06\0\0\0\0\0\0\0", 25);
     const std::string iend("\0\0\0\0IEND\0\0\0\0", 12);
     write_text(dir / "final.png", "\x89PNG\r\n\x1a\n" + ihdr + iend);
-    EXPECT_EQ(message(dir), (dir / "final.png").string() + ": PNG has no image data (no IDAT bytes)");
+    EXPECT_EQ(message(dir),
+              (dir / "final.png").string() + ": PNG has no image data (no IDAT bytes)");
     write_png_rgba8(dir / "final.png.new", 2, 2, std::vector<uint8_t>(16, 7));
     fs::rename(dir / "final.png.new", dir / "final.png");
     EXPECT_EQ(message(dir), "(no error)");
