@@ -12,6 +12,14 @@ rm -rf "$work"
 mkdir -p "$work"
 export DEPTHSCOPE_CONFIG_DIR="$work/config"
 
+# xvfb-run may hand over before its server takes connections (seen once in a clean-clone CI
+# run, both cores busy: "X11: Failed to open display :99"): wait for it, at most 30 s.
+for _ in $(seq 1 300); do
+    xdotool getdisplaygeometry >/dev/null 2>&1 && break
+    sleep 0.1
+done
+xdotool getdisplaygeometry >/dev/null 2>&1 || { echo "FAIL: display $DISPLAY never came up"; exit 1; }
+
 "$exe" --frames 40 --scene edges --set exposure=2 --set render_scale=0.5 --validate \
     >"$work/run1.txt" 2>&1 &
 pid=$!
