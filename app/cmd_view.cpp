@@ -16,6 +16,7 @@
 #include "renderer/common/quoted.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
+#include "renderer/vk/context.h"
 #include "ui/config.h"
 #include "ui/inspector.h"
 #include "ui/presenter.h"
@@ -110,13 +111,15 @@ scene::Scene load_start_scene(const Options& o, const Start& start) {
     }
 }
 
-RendererOptions window_renderer_options(const Options& o) {
-    RendererOptions renderer_options;
-    renderer_options.validate = o.validate;
-    renderer_options.device = o.device;
-    renderer_options.instance_extensions = ui::Window::instance_extensions();
-    renderer_options.swapchain = true;
-    return renderer_options;
+// The UI's own device, on the renderer's physical device: its queue runs UI frames while a
+// scene frame occupies the renderer's (lavapipe executes one queue's submissions in order, on
+// rasterizer threads of each device's own). It takes only CPU pixels from the renderer.
+std::unique_ptr<vk::Context> ui_context(const Options& o) {
+    return std::make_unique<vk::Context>(
+        vk::ContextOptions{.validate = o.validate,
+                           .device = o.device,
+                           .instance_extensions = ui::Window::instance_extensions(),
+                           .swapchain = true});
 }
 
 // The session's first line: the scene and the settings that differ from the defaults.
@@ -152,12 +155,19 @@ void open_in(ui::Inspector& inspector, OpenedCapture& opened) {
     inspector.viewer().compare.match_size = true;
 }
 
-// Frames until the window closes or --frames are drawn; returns the count drawn.
+// Frames until the window closes or --frames are drawn; returns the count drawn. Between UI
+// frames the loop sleeps when nothing can change what it draws: no input for a few frames and
+// the inspector idle (until an event, or the shader watch's next look), or a scene frame
+// rendering (the "rendering…" mark, refreshed 30 times a second; its end wakes the loop).
+// --frames draws its frames back to back: a scripted run ends when they are drawn.
 uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& presenter,
                     ui::Inspector& inspector) {
+    constexpr int kSettleUiFrames = 3;  // ImGui may need a frame or two after an input
     uint64_t frames = 0;
     size_t written = 0;  // captures reported so far
-    while (!window.should_close() && (o.view_frames == 0 || frames < uint64_t(o.view_frames))) {
+    int quiet = 0;       // UI frames since the last input
+    const bool scripted = o.view_frames != 0;
+    while (!window.should_close() && (!scripted || frames < uint64_t(o.view_frames))) {
         window.poll_events();
         const VkExtent2D fb = window.framebuffer_size();
         if (fb.width == 0 || fb.height == 0) {  // minimised: nothing to draw
@@ -184,6 +194,12 @@ uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& present
             std::printf("depthscope: wrote %s\n", inspector.captures_written()[written].c_str());
             std::fflush(stdout);
         }
+        quiet = window.take_input() ? 0 : std::min(quiet + 1, kSettleUiFrames);
+        if (scripted || quiet < kSettleUiFrames) continue;
+        if (inspector.idle())
+            window.wait_events(0.5);
+        else if (inspector.rendering() && !inspector.moving())
+            window.wait_events(1.0 / 30.0);
     }
     return frames;
 }
@@ -222,12 +238,16 @@ int run_view(const Options& o) {
         scene = load_start_scene(o, start);
     }
 
-    Renderer renderer(window_renderer_options(o));
+    RendererOptions renderer_options;
+    renderer_options.validate = o.validate;
+    renderer_options.device = o.device;
+    Renderer renderer(renderer_options);
     // After the renderer, and destroyed before its shutdown: the swapchain and surface before
-    // the device.
+    // the UI's device.
+    std::unique_ptr<vk::Context> ui_device = ui_context(o);
     auto window =
         std::make_unique<ui::Window>(o.window.width, o.window.height, "depthscope — " + scene.name);
-    window->attach(renderer.context());
+    window->attach(*ui_device);
     print_session(scene, start.settings);
 
     ImGuiContext* imgui = ImGui::CreateContext();
@@ -236,10 +256,12 @@ int run_view(const Options& o) {
     ui::apply_style();
     ImGui_ImplGlfw_InitForVulkan(window->handle(), true);
     {
-        ui::Presenter presenter(renderer.context(), window->format());
+        ui::Presenter presenter(*ui_device, window->format());
         ui::Inspector::Options options;
         options.capture_root = capture_root();
+        options.threaded = true;
         ui::Inspector inspector(renderer, start.settings, std::move(scene), options);
+        inspector.worker().on_finished(&ui::Window::wake);
         if (opened) open_in(inspector, *opened);
         const uint64_t frames = run_frames(o, *window, presenter, inspector);
         presenter.wait_idle();
@@ -251,7 +273,10 @@ int run_view(const Options& o) {
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext(imgui);
     window.reset();
-    return validation_exit_code(renderer);
+    const std::shared_ptr<const std::atomic<uint64_t>> ui_messages =
+        ui_device->validation_counter();
+    ui_device.reset();
+    return validation_exit_code(renderer, true, ui_messages->load());
 }
 
 }  // namespace ds::app

@@ -9,7 +9,8 @@
 namespace ds::ui {
 
 HeadlessUi::HeadlessUi(Renderer& renderer, Settings settings, scene::Scene scene, VkExtent2D size,
-                       std::optional<VkExtent2D> render_size)
+                       std::optional<VkExtent2D> render_size,
+                       const std::optional<vk::ContextOptions>& ui_device)
     : size_(size) {
     if (size.width == 0 || size.height == 0) throw Error("ui: empty size");
     imgui_ = ImGui::CreateContext();
@@ -19,14 +20,19 @@ HeadlessUi::HeadlessUi(Renderer& renderer, Settings settings, scene::Scene scene
     io.DisplaySize = ImVec2(float(size.width), float(size.height));
     apply_style();
     try {
-        presenter_ = std::make_unique<Presenter>(renderer.context(), Presenter::kOffscreenFormat);
-        inspector_ = std::make_unique<Inspector>(renderer, std::move(settings), std::move(scene),
-                                                 Inspector::Options{.fallback_width = size.width,
-                                                                    .fallback_height = size.height,
-                                                                    .watch_shaders = false,
-                                                                    .render_size = render_size});
+        if (ui_device) ui_device_ = std::make_unique<vk::Context>(*ui_device);
+        presenter_ = std::make_unique<Presenter>(ui_device_ ? *ui_device_ : renderer.context(),
+                                                 Presenter::kOffscreenFormat);
+        inspector_ =
+            std::make_unique<Inspector>(renderer, std::move(settings), std::move(scene),
+                                        Inspector::Options{.fallback_width = size.width,
+                                                           .fallback_height = size.height,
+                                                           .watch_shaders = false,
+                                                           .render_size = render_size,
+                                                           .threaded = ui_device_ != nullptr});
     } catch (...) {
         presenter_.reset();
+        ui_device_.reset();
         ImGui::DestroyContext(imgui_);
         throw;
     }
@@ -36,7 +42,12 @@ HeadlessUi::~HeadlessUi() {
     ImGui::SetCurrentContext(imgui_);
     presenter_.reset();
     inspector_.reset();
+    ui_device_.reset();
     ImGui::DestroyContext(imgui_);
+}
+
+uint64_t HeadlessUi::ui_validation_messages() const {
+    return ui_device_ ? ui_device_->validation_message_count() : 0;
 }
 
 std::vector<uint8_t> HeadlessUi::frame(const HeadlessInput& input) {

@@ -11,6 +11,7 @@
 #include <vulkan/vulkan.h>
 #include <glm/glm.hpp>
 
+#include "renderer/vk/context.h"
 #include "ui/inspector.h"
 #include "ui/presenter.h"
 
@@ -33,8 +34,12 @@ class HeadlessUi {
   public:
     // `render_size`: the scene frame's size (bench --ui: the same as without the UI); none:
     // the viewer's area times render_scale, as in the window.
+    // `ui_device`: the window's arrangement (tests): the UI on a device of its own made with
+    // these options, scene frames on the inspector's render thread; none: one device, a scene
+    // frame rendered inside every frame().
     HeadlessUi(Renderer& renderer, Settings settings, scene::Scene scene, VkExtent2D size,
-               std::optional<VkExtent2D> render_size = std::nullopt);
+               std::optional<VkExtent2D> render_size = std::nullopt,
+               const std::optional<vk::ContextOptions>& ui_device = std::nullopt);
     ~HeadlessUi();
     HeadlessUi(const HeadlessUi&) = delete;
     HeadlessUi& operator=(const HeadlessUi&) = delete;
@@ -46,10 +51,13 @@ class HeadlessUi {
     Inspector& inspector() { return *inspector_; }
     VkExtent2D size() const { return size_; }
     const UiFrameStats& last_stats() const { return stats_; }
+    // Validation messages of the UI's own device (0 without one).
+    uint64_t ui_validation_messages() const;
 
   private:
     ImGuiContext* imgui_ = nullptr;
     VkExtent2D size_;
+    std::unique_ptr<vk::Context> ui_device_;
     std::unique_ptr<Presenter> presenter_;
     std::unique_ptr<Inspector> inspector_;
     UiFrameStats stats_;

@@ -13,9 +13,6 @@
 namespace ds::ui {
 namespace {
 
-constexpr const char* kZfightImage = "zfight";  // shown as a heat map over the frame
-constexpr int kKeyF12 = 301;                    // GLFW_KEY_F12
-
 template <class... Ts>
 struct Overloaded : Ts... {
     using Ts::operator()...;
@@ -77,12 +74,14 @@ Inspector::Inspector(Renderer& renderer, Settings settings, scene::Scene scene, 
       last_good_(settings_),
       options_(options),
       auto_reload_(options.watch_shaders),
-      watch_(shader::Compiler::default_shader_root()) {
+      watch_(shader::Compiler::default_shader_root()),
+      worker_(std::make_unique<RenderWorker>(renderer, options.threaded)) {
     set_scene(std::move(scene));
 }
 
 void Inspector::set_scene(scene::Scene scene) {
-    renderer_.set_scene(scene);  // throws before anything changes here
+    worker_->exclusive([&](Renderer& r) { r.set_scene(scene); });  // throws, changing nothing
+    dirty_ = true;
     scene_ = std::move(scene);
     summary_ = summarize(scene_);
     camera_.reset(scene_.camera, scene_.bounds);
@@ -181,8 +180,9 @@ void Inspector::apply(const Action& action) {
                        }
                    },
                    [&](const ReloadShaders&) {
+                       dirty_ = true;
                        try {
-                           renderer_.rebuild_pipelines();
+                           worker_->exclusive([](Renderer& r) { r.rebuild_pipelines(); });
                            shader_status_ = "shaders reloaded";
                            shader_error_ = false;
                        } catch (const std::exception& e) {
@@ -246,45 +246,16 @@ void Inspector::update() {
     camera_input_.dt =
         std::clamp(ImGui::GetCurrentContext() ? ImGui::GetIO().DeltaTime : 0.016f, 0.0f, 0.25f);
     camera_input_.viewport_height = std::max(viewer_.h, 1.0f);
-    camera_.update(camera_input_);
+    if (camera_.update(camera_input_)) last_motion_ = std::chrono::steady_clock::now();
     camera_input_ = CameraInput{};
-    render();
-}
-
-void Inspector::render() {
-    const VkExtent2D size = render_size();
-    // The shown image, the overlays and what they are derived from and scaled by, by the
-    // names the last frame had.
-    const std::vector<InspectRequest> request = ViewComposer::request(viewer_, frame_.resources);
-    // The Z-fight heat map is drawn over the dimmed final image, the compare view compares it:
-    // read that back too.
-    const ReadBack read_back = viewer_.resource == kZfightImage || compare_.active(viewer_.compare)
-                                   ? ReadBack::Color
-                                   : ReadBack::No;
-    try {
-        frame_ = renderer_.render(camera_.camera(), settings_, size.width, size.height, read_back,
-                                  request);
-        last_good_ = settings_;
-    } catch (const std::exception& e) {
-        // A setting the device refuses (msaa=8 on lavapipe ...): say so, go back to what worked.
-        message_ = e.what();
-        settings_ = last_good_;
-        try {
-            frame_ = renderer_.render(camera_.camera(), settings_, size.width, size.height,
-                                      read_back, request);
-        } catch (const std::exception& again) {
-            message_ += std::string("; and the last good settings failed too: ") + again.what();
-            return;  // keep showing the previous frame
-        }
+    schedule();
+    // A frame the device refused: settings went back to the last good ones; render those now
+    // (synchronous mode: within this update, as the user expects).
+    if (!collect() && !worker_->threaded() && dirty_) {
+        schedule();
+        collect();
     }
-    ++frames_rendered_;
-    history_.add(frame_);
-    shown_ = composer_.decode_shown(frame_, viewer_, view_);
-    if (shown_ && shown_->name == kZfightImage)
-        view::overlay_counts(view_, *shown_, frame_.rgba8, 0.3f, selected_pair_pixels());
-    composer_.stack_overlays(frame_, viewer_, view_);
-    if (shown_) view::highlight(view_, selected_draw_pixels(), 0.25f);  // over every overlay
-    compare_.compose(frame_, viewer_.compare);
+    refresh_view();
 }
 
 // Both configurations through the inspector's renderer, camera, size and settings; the next
@@ -292,11 +263,14 @@ void Inspector::render() {
 void Inspector::measure_advice() {
     const VkExtent2D size = render_size();
     const scene::Camera camera = camera_.camera();
-    const capture::RenderFrame render = [&](const Settings& s) {
-        return renderer_.render(camera, s, size.width, size.height, ReadBack::No);
-    };
     try {  // the default run's frames block the UI meanwhile
-        advice_ = capture::advise(capture::measure_advice(settings_, render, capture::AdviceRun{}));
+        worker_->exclusive([&](Renderer& renderer) {
+            const capture::RenderFrame render = [&](const Settings& s) {
+                return renderer.render(camera, s, size.width, size.height, ReadBack::No);
+            };
+            advice_ =
+                capture::advise(capture::measure_advice(settings_, render, capture::AdviceRun{}));
+        });
         advice_label_ =
             scene_.name + " at " + std::to_string(size.width) + "x" + std::to_string(size.height);
         advice_error_.clear();
@@ -311,9 +285,17 @@ void Inspector::pick_pixel(const PickPixel& pick) {
     const VkExtent2D size = render_size();
     ++pixel_picks_;
     try {
-        const FrameResult f =
-            renderer_.render(camera_.camera(), settings_, size.width, size.height, ReadBack::No,
-                             InspectRequest{}, PixelQuery{pick.x, pick.y});
+        // The pick names a texel of the frame shown, which may be a smaller one rendered
+        // while the camera moved: the history is of the same point at the full size.
+        const uint32_t x =
+            frame_.width ? uint32_t(uint64_t(pick.x) * size.width / frame_.width) : pick.x;
+        const uint32_t y =
+            frame_.height ? uint32_t(uint64_t(pick.y) * size.height / frame_.height) : pick.y;
+        FrameResult f;
+        worker_->exclusive([&](Renderer& r) {
+            f = r.render(camera_.camera(), settings_, size.width, size.height, ReadBack::No,
+                         InspectRequest{}, PixelQuery{x, y});
+        });
         pixel_history_ = f.pixel_history;
         pixel_depth_ = f.depth;
         pixel_label_ =
@@ -399,12 +381,19 @@ ViewerBlit Inspector::viewer_blit() const {
     b.dst_y = viewer_.y;
     b.dst_w = viewer_.w;
     b.dst_h = viewer_.h;
+    // zoom counts screen pixels per texel of the full-size frame; a frame rendered smaller
+    // while the camera moved covers the same area.
     const float zoom = std::max(viewer_.zoom, 1e-3f);
-    b.src_w = viewer_.w / zoom;
-    b.src_h = viewer_.h / zoom;
+    const float sx =
+        shown_nominal_.width && !compared ? float(b.width) / float(shown_nominal_.width) : 1.0f;
+    const float sy =
+        shown_nominal_.height && !compared ? float(b.height) / float(shown_nominal_.height) : 1.0f;
+    b.src_w = viewer_.w / zoom * sx;
+    b.src_h = viewer_.h / zoom * sy;
     b.src_x = viewer_.centre.x * float(b.width) - 0.5f * b.src_w;
     b.src_y = viewer_.centre.y * float(b.height) - 0.5f * b.src_h;
-    b.nearest = zoom >= 1.0f;
+    b.nearest = zoom >= sx;
+    b.version = view_version_;
     return b;
 }
 

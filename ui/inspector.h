@@ -4,15 +4,21 @@
 // the platform has fed ImGui its input, run_frame() runs
 //   ImGui::NewFrame();
 //   draw();          // the panels (ui/panels): read this state, return actions
-//   update();        // apply the actions and the camera input, render one frame
+//   update();        // apply the actions and the camera input, post a scene frame if
+//                    // needed, take a finished one, decode
 //   ImGui::Render();
 // and ui::Presenter draws viewer_blit() and the returned draw data.
+// Scene frames render through a RenderWorker (ui/render_worker.h): on a render thread
+// (Options::threaded, the window: the UI runs at display rate and renders only on change, see
+// inspector_frames.cpp) or inside update() (offscreen UIs: a new frame every UI frame).
 // Tests drive it the same way, or call apply() with the actions a panel would return.
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <deque>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -27,6 +33,7 @@
 #include "renderer/view/readout.h"
 #include "ui/camera_controller.h"
 #include "ui/compare.h"
+#include "ui/render_worker.h"
 #include "ui/shader_watch.h"
 #include "ui/view_composer.h"
 #include "ui/viewer_blit.h"
@@ -143,6 +150,9 @@ class Inspector {
         bool watch_shaders = true;
         std::optional<VkExtent2D> render_size;            // fixed scene size (bench --ui)
         std::filesystem::path capture_root = "captures";  // where F12 writes (a folder each)
+        // Scene frames on a render thread, only when something changed (the window); false:
+        // one rendered in every update() (capture --ui, bench --ui, frame-by-frame tests).
+        bool threaded = false;
     };
     Inspector(Renderer& renderer, Settings settings, scene::Scene scene, Options options);
 
@@ -160,8 +170,20 @@ class Inspector {
     // What the presenter draws under ImGui.
     ViewerBlit viewer_blit() const;
 
+    // The render thread (tests slow it down; the window wakes on its frames).
+    RenderWorker& worker() { return *worker_; }
+    // Nothing to do until input arrives: no frame rendering or waiting, the camera at rest, no
+    // capture pending, not continuous. The window then sleeps until an event.
+    bool idle() const;
+    // A scene frame is rendering (or waiting): the viewer marks "rendering… N ms".
+    bool rendering() const { return worker_->busy(); }
+    double rendering_ms() const { return worker_->in_flight_ms(); }
+    // Frames posted to the worker so far (each UI frame in synchronous mode).
+    uint64_t frames_posted() const { return frames_posted_; }
+    // The camera moved within the last kMotionHold: frames render at motion_scale.
+    bool moving() const;
+
     // State, for the panels and tests.
-    Renderer& renderer() { return renderer_; }
     const DeviceInfo& device() const { return device_; }
     const Settings& settings() const { return settings_; }
     const scene::Scene& scene() const { return scene_; }
@@ -230,11 +252,19 @@ class Inspector {
     PanelState& panel_state() const { return panel_state_; }
 
   private:
+    static constexpr const char* kZfightImage = "zfight";         // a heat map over the frame
+    static constexpr std::chrono::milliseconds kMotionHold{200};  // "moving" after input
+
     void set_scene(scene::Scene scene);
     // Applies `changed` (rebuilding a built-in scene whose knobs changed); throws, changing
     // nothing, when the rebuild fails.
     void change_settings(const Settings& changed);
-    void render();
+    // inspector_frames.cpp: what the next scene frame is, whether it differs from the last one
+    // posted, taking a finished frame, decoding the view when it or the frame changed.
+    FrameJob next_job() const;
+    void schedule();
+    bool collect();  // false: nothing finished, or it failed
+    void refresh_view();
     void measure_advice();
     void pick_pixel(const PickPixel& pick);
     // inspector_capture.cpp
@@ -248,8 +278,8 @@ class Inspector {
     void capture_frame(const PendingCapture& request);
     void pin_capture(const std::filesystem::path& dir);
 
-    Renderer& renderer_;
-    DeviceInfo device_;  // what the panels say of the device's counters
+    Renderer& renderer_;  // through worker_ (exclusive()) once it exists
+    DeviceInfo device_;   // what the panels say of the device's counters
     Settings settings_;
     Settings last_good_;  // the settings of the last frame that rendered
     scene::Scene scene_;
@@ -284,6 +314,17 @@ class Inspector {
     std::vector<std::filesystem::path> captures_;
     CaptureCompare compare_;
     mutable PanelState panel_state_;
+    // Scene frames (inspector_frames.cpp).
+    std::optional<FrameJob> last_posted_;
+    bool dirty_ = true;           // render again whatever the job says (scene, shaders, capture)
+    bool posted_moving_ = false;  // the last frame posted was posted while the camera moved
+    bool view_dirty_ = false;     // a new frame to decode
+    std::string decoded_key_;     // the view state the current decode used
+    uint64_t view_version_ = 0;   // counts decodes: the presenter uploads a new version only
+    VkExtent2D shown_nominal_{};  // the full render size of the frame shown (motion: larger)
+    std::chrono::steady_clock::time_point last_motion_{};
+    uint64_t frames_posted_ = 0;
+    std::unique_ptr<RenderWorker> worker_;  // last: its thread stops before the rest goes
 };
 
 }  // namespace ds::ui

@@ -32,10 +32,13 @@ void Inspector::capture_frame(const PendingCapture& request) {
     const capture::ResourceSelection every_resource;  // capture's default: all
     try {
         capture::OutputDir out(capture::default_capture_dir(options_.capture_root, scene_.name));
-        write_frame_capture(renderer_,
-                            {scene_, request.camera, settings_, request.size.width,
-                             request.size.height, every_resource},
-                            out);
+        dirty_ = true;  // the capture's frame replaced the renderer's temporal history
+        worker_->exclusive([&](Renderer& renderer) {
+            write_frame_capture(renderer,
+                                {scene_, request.camera, settings_, request.size.width,
+                                 request.size.height, every_resource},
+                                out);
+        });
         const std::string warning = out.commit();
         capture_path_ = out.final_dir();
         captures_.push_back(capture_path_);

@@ -127,18 +127,29 @@ void Presenter::ensure_display(uint32_t width, uint32_t height, vk::DestroyList&
                               vk::MemoryUsage::Upload, "viewer staging"});
 }
 
-// ui_upload: the viewer's decoded pixels from the staging buffer into the display image.
+// ui_upload: the viewer's decoded pixels from the staging buffer into the display image; no
+// pass when they are the version already there (the UI redraws at display rate, the pixels
+// change with a scene frame or the view).
 graph::ImageHandle Presenter::add_upload(const ViewerBlit& viewer, vk::DestroyList& retired) {
     graph::RenderGraph& g = *graph_;
+    const bool same_size =
+        display_ && display_.width() == viewer.width && display_.height() == viewer.height;
+    const bool current = same_size && viewer.version != 0 && viewer.version == uploaded_version_;
     ensure_display(viewer.width, viewer.height, retired);
-    staging_.write(viewer.rgba8->data(), viewer.rgba8->size());
     graph::ExternalImage d;
     d.image = display_.handle();
     d.view = display_.view();
     d.desc = {.format = kDisplayFormat,
               .size = graph::ImageSize::fixed(viewer.width, viewer.height),
               .semantic = graph::Semantic::LdrColor};
-    d.initial = {};  // rewritten every frame
+    if (current) {  // as the last frame's blit left it (each UI frame waits for its fence)
+        d.initial = {VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT,
+                     VK_ACCESS_2_NONE};
+        return g.import_image("viewer_display", d);
+    }
+    d.initial = {};  // rewritten
+    staging_.write(viewer.rgba8->data(), viewer.rgba8->size());
+    uploaded_version_ = viewer.version;
     const graph::ImageHandle display = g.import_image("viewer_display", d);
     graph::ExternalBuffer s;
     s.buffer = staging_.handle();

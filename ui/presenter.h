@@ -94,6 +94,7 @@ class Presenter {
     std::unique_ptr<graph::RenderGraph> graph_;
     vk::Image display_;  // the viewer's pixels, RGBA8
     vk::Buffer staging_;
+    uint64_t uploaded_version_ = 0;  // the ViewerBlit::version display_ holds
     vk::Image offscreen_;
     std::unique_ptr<HostReadback> readback_;  // the offscreen target's pixels
     graph::ImageHandle target_;               // the last frame's target in graph_

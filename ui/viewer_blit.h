@@ -19,6 +19,8 @@ struct ViewerBlit {
     float dst_x = 0, dst_y = 0, dst_w = 0, dst_h = 0;  // the viewport on the target
     float src_x = 0, src_y = 0, src_w = 0, src_h = 0;  // the image region shown in it
     bool nearest = true;
+    // Changes whenever the pixels do; the presenter uploads them again only then (0: always).
+    uint64_t version = 0;
 };
 
 // The target's size in pixels (a swapchain image, the offscreen image, ImGui's framebuffer).

@@ -42,9 +42,36 @@ Window::Window(uint32_t width, uint32_t height, const std::string& title) {
     // Before ImGui's GLFW backend installs its callback, which then calls this one too.
     glfwSetWindowUserPointer(window_, this);
     glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
-        if (action == GLFW_PRESS)
-            static_cast<Window*>(glfwGetWindowUserPointer(w))->pressed_.push_back(key);
+        Window* self = static_cast<Window*>(glfwGetWindowUserPointer(w));
+        if (action == GLFW_PRESS) self->pressed_.push_back(key);
+        ++self->events_;
     });
+    // Any other input counts as activity too (the event loop sleeps without any).
+    glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double, double) { input_event(w); });
+    glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int, int, int) { input_event(w); });
+    glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double) { input_event(w); });
+    glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned) { input_event(w); });
+    glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int) { input_event(w); });
+    glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int) { input_event(w); });
+    glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { input_event(w); });
+}
+
+void Window::input_event(GLFWwindow* w) {
+    ++static_cast<Window*>(glfwGetWindowUserPointer(w))->events_;
+}
+
+bool Window::take_input() {
+    const bool any = events_ != events_seen_;
+    events_seen_ = events_;
+    return any;
+}
+
+void Window::wait_events(double seconds) const {
+    glfwWaitEventsTimeout(seconds);
+}
+
+void Window::wake() {
+    glfwPostEmptyEvent();
 }
 
 std::vector<int> Window::take_pressed_keys() {
@@ -70,10 +97,6 @@ bool Window::should_close() const {
 
 void Window::poll_events() const {
     glfwPollEvents();
-}
-
-void Window::wait_events() const {
-    glfwWaitEventsTimeout(0.1);
 }
 
 VkExtent2D Window::framebuffer_size() const {

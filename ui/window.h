@@ -31,7 +31,12 @@ class Window {
     GLFWwindow* handle() const { return window_; }
     bool should_close() const;
     void poll_events() const;
-    void wait_events() const;  // while minimised
+    // Sleeps until an event arrives, wake() is called or `seconds` pass.
+    void wait_events(double seconds = 0.1) const;
+    // Whether input arrived (keys, mouse, wheel, text, focus, resize) since the last call.
+    bool take_input();
+    // Ends a wait_events() from any thread (the render thread's finished frames).
+    static void wake();
     VkExtent2D framebuffer_size() const;
     // Keys pressed since the last call (GLFW codes), each press once. ImGui 1.86 sees a key
     // only while it is down at a frame's start, so a press shorter than a slow frame (lavapipe)
@@ -60,7 +65,10 @@ class Window {
     void destroy_swapchain();
 
     GLFWwindow* window_ = nullptr;
+    static void input_event(GLFWwindow* w);
+
     std::vector<int> pressed_;  // by the key callback, during poll_events
+    uint64_t events_ = 0, events_seen_ = 0;
     vk::Context* context_ = nullptr;
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
     VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;

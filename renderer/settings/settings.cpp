@@ -418,6 +418,14 @@ SettingsRegistry::SettingsRegistry() {
                    "inspector: the frame renders at the viewer's size times this (below 1 keeps "
                    "a CPU device interactive); capture and bench render at --size",
                    I::Resources),
+        float_knob("motion_scale", "camera", "0.5", 0.1, 1,
+                   "inspector: while the camera moves, frames render at this times the render "
+                   "size, and at the full size once it stops",
+                   I::Nothing),
+        bool_knob("continuous", "camera", false,
+                  "inspector: render a scene frame every UI frame (for the timing history); "
+                  "off: only when something that affects the frame changed",
+                  I::Nothing),
     };
 }
 

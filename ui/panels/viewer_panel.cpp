@@ -260,6 +260,20 @@ void readout_lines(const ViewerState& v) {
     }
 }
 
+// The image shown is the newest finished frame; while the next one renders, say so in the
+// image's corner (the UI does not wait for it).
+void rendering_mark(const Inspector& inspector, const ImVec2& origin) {
+    if (!inspector.rendering()) return;
+    char text[48];
+    std::snprintf(text, sizeof text, "rendering... %.0f ms", inspector.rendering_ms());
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 at(origin.x + 6, origin.y + 4);
+    const ImVec2 size = ImGui::CalcTextSize(text);
+    draw->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1),
+                        IM_COL32(0, 0, 0, 160));
+    draw->AddText(at, IM_COL32(255, 220, 120, 255), text);
+}
+
 }  // namespace
 
 void viewer_panel(PanelIo& io, const PanelLayout& layout) {
@@ -299,6 +313,7 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
     v.w = std::floor(avail.x * scale.x);
     v.h = std::floor(avail.y * scale.y);
     input(io, origin, hovered, active);
+    rendering_mark(io.inspector, origin);
 
     hover(io, hovered, scale);
     readout_lines(v);
