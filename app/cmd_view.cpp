@@ -156,9 +156,10 @@ void open_in(ui::Inspector& inspector, OpenedCapture& opened) {
 }
 
 // Frames until the window closes or --frames are drawn; returns the count drawn. Between UI
-// frames the loop sleeps when nothing can change what it draws: no input for a few frames and
-// the inspector idle (until an event, or the shader watch's next look), or a scene frame
-// rendering (the "rendering…" mark, refreshed 30 times a second; its end wakes the loop).
+// frames the loop sleeps when nothing can change what it draws: after a few frames without
+// input, while the inspector is idle it waits for an event (a finished scene frame wakes it
+// too), looking at the shader watch twice a second without drawing; while a scene frame
+// renders and the camera is still, UI frames come 30 times a second (the "rendering…" mark).
 // --frames draws its frames back to back: a scripted run ends when they are drawn.
 uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& presenter,
                     ui::Inspector& inspector) {
@@ -196,9 +197,11 @@ uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& present
         }
         quiet = window.take_input() ? 0 : std::min(quiet + 1, kSettleUiFrames);
         if (scripted || quiet < kSettleUiFrames) continue;
-        if (inspector.idle())
+        while (inspector.idle() && !window.should_close()) {
             window.wait_events(0.5);
-        else if (inspector.rendering() && !inspector.moving())
+            if (window.input_pending() || inspector.poll_shader_watch()) break;
+        }
+        if (inspector.rendering() && !inspector.moving() && !window.input_pending())
             window.wait_events(1.0 / 30.0);
     }
     return frames;

@@ -130,6 +130,12 @@ ImDrawData* Inspector::run_frame() {
     return ImGui::GetDrawData();
 }
 
+bool Inspector::poll_shader_watch() {
+    if (!auto_reload_ || !watch_.changed()) return false;
+    pending_.push_back(ReloadShaders{});
+    return true;
+}
+
 void Inspector::key_pressed(int key) {
     if (key == kCaptureKey) pending_.push_back(CaptureFrame{});  // anywhere in the window
 }
@@ -239,7 +245,7 @@ void Inspector::change_settings(const Settings& changed) {
 void Inspector::update() {
     ++updates_;
     capture_when_shown();
-    if (auto_reload_ && watch_.changed()) pending_.push_back(ReloadShaders{});
+    poll_shader_watch();
     std::vector<Action> actions;
     actions.swap(pending_);
     for (const Action& a : actions) apply(a);

@@ -175,6 +175,9 @@ class Inspector {
     // Nothing to do until input arrives: no frame rendering or waiting, the camera at rest, no
     // capture pending, not continuous. The window then sleeps until an event.
     bool idle() const;
+    // The shader watch (auto reload on): true when the shaders changed, a reload then queued.
+    // Cheap: the idle window asks it at every wake-up instead of drawing a UI frame.
+    bool poll_shader_watch();
     // A scene frame is rendering (or waiting): the viewer marks "rendering… N ms".
     bool rendering() const { return worker_->busy(); }
     double rendering_ms() const { return worker_->in_flight_ms(); }

@@ -35,6 +35,7 @@ class Window {
     void wait_events(double seconds = 0.1) const;
     // Whether input arrived (keys, mouse, wheel, text, focus, resize) since the last call.
     bool take_input();
+    bool input_pending() const { return events_ != events_seen_; }  // the same, not taken
     // Ends a wait_events() from any thread (the render thread's finished frames).
     static void wake();
     VkExtent2D framebuffer_size() const;
