@@ -9,6 +9,7 @@
 #include <memory>
 #include <thread>
 
+#include "renderer/capture/image_writer.h"
 #include "renderer/scene/loader.h"
 #include "tests/unit/passes/shared_renderer.h"
 #include "ui/headless.h"
@@ -77,7 +78,9 @@ TEST_F(LiveInspector, UiFramesContinueWhileASlowSceneFrameRenders) {
     int during = 0;
     const auto start = std::chrono::steady_clock::now();
     while (in.rendering() && std::chrono::steady_clock::now() - start < 60s) {
-        ui->frame();
+        const std::vector<uint8_t> pixels = ui->frame();
+        if (const char* png = std::getenv("DS_LIVE_PNG"); png && during == 10)
+            capture::write_png_rgba8(png, ui->size().width, ui->size().height, pixels);
         ++during;
         EXPECT_EQ(in.frames_rendered(), 1u);  // the frame shown is the older one meanwhile
     }
