@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <thread>
@@ -87,6 +88,7 @@ TEST_F(LiveInspector, UiFramesContinueWhileASlowSceneFrameRenders) {
     in.worker().set_frame_delay(0ms);
     ui->frame();
     EXPECT_GE(during, 20) << "UI frames while one slow scene frame rendered";
+    std::printf("UI frames during the slow scene frame: %d\n", during);
     EXPECT_EQ(in.frames_rendered(), 2u);
     EXPECT_EQ(in.frame().passes.end(),
               std::find_if(in.frame().passes.begin(), in.frame().passes.end(),
