@@ -270,8 +270,11 @@ int run_view(const Options& o) {
         presenter.wait_idle();
         if (persist) save_session(files, inspector, /*state=*/!opened);
         const VkExtent2D last = window->framebuffer_size();
-        std::printf("depthscope: %llu frames (window %ux%u)\n",
-                    static_cast<unsigned long long>(frames), last.width, last.height);
+        std::printf(
+            "depthscope: %llu frames (window %ux%u), scene frames: %llu posted, %llu shown\n",
+            static_cast<unsigned long long>(frames), last.width, last.height,
+            static_cast<unsigned long long>(inspector.frames_posted()),
+            static_cast<unsigned long long>(inspector.frames_rendered()));
     }
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext(imgui);

@@ -4,7 +4,8 @@
 # a second run without --scene / --set starts from them; an unusable config folder only warns.
 # Captures (issue 13): F12 (a real key press) writes a capture that replays bit-identically;
 # `view --capture DIR` opens a capture with its settings over the saved ones (which it leaves
-# as they were), and F12 there captures the same frame again.
+# as they were), and F12 there captures the same frame again. The live inspector (issue 14): a
+# real drag with validation on both devices.
 set -euo pipefail
 exe="$1"
 work="$2"
@@ -109,4 +110,29 @@ again=$(sed -n 's/^depthscope: wrote //p' "$work/run5.txt")
 [[ -n "$again" ]] || { echo "FAIL: F12 in view --capture wrote nothing"; exit 1; }
 cmp "$work/exposure3/final.png" "$again/final.png" ||
     { echo "FAIL: view --capture does not show the captured frame"; exit 1; }
+
+# The live inspector (issue 14): a real left drag orbits the camera while the UI goes on (scene
+# frames on the render thread, smaller while moving, the full size after); validation on the
+# renderer's and the UI's device stays silent (exit 0, not 3).
+"$exe" --frames 300 --scene edges --size 800x500 --validate >"$work/run6.txt" 2>&1 &
+pid=$!
+for _ in $(seq 1 300); do
+    if id=$(xdotool search --onlyvisible --pid "$pid" --name '^depthscope' 2>/dev/null |
+        head -n1) && [[ -n "$id" ]]; then
+        xdotool mousemove --window "$id" 400 200 mousedown 1
+        for _ in $(seq 1 20); do xdotool mousemove_relative 6 1; sleep 0.03; done
+        xdotool mouseup 1
+        break
+    fi
+    sleep 0.1
+done
+status=0
+wait "$pid" || status=$?
+cat "$work/run6.txt"
+[[ $status -eq 0 ]] || { echo "FAIL: the drag run exited $status"; exit 1; }
+posted=$(sed -n 's/^depthscope: 300 frames .*scene frames: \([0-9]*\) posted.*/\1/p' "$work/run6.txt")
+[[ -n "$posted" ]] || { echo "FAIL: no frame count"; exit 1; }
+# Without input: the first frame and the one at the viewer's size once laid out. The drag adds
+# frames while moving (each superseding the last) and the full size after it stopped.
+((posted >= 4)) || { echo "FAIL: $posted scene frames posted: the drag moved nothing"; exit 1; }
 echo "PASS"
