@@ -21,18 +21,29 @@ for _ in $(seq 1 300); do
 done
 xdotool getdisplaygeometry >/dev/null 2>&1 || { echo "FAIL: display $DISPLAY never came up"; exit 1; }
 
+# The id of process $1's window, once it shows (at most 30 s).
+window_of() {
+    local id
+    for _ in $(seq 1 300); do
+        if id=$(xdotool search --onlyvisible --pid "$1" --name '^depthscope' 2>/dev/null |
+            head -n1) && [[ -n "$id" ]]; then
+            echo "$id"
+            return 0
+        fi
+        sleep 0.1
+    done
+    echo "FAIL: process $1 shows no window" >&2
+    return 1
+}
+
 "$exe" --frames 40 --scene edges --set exposure=2 --set render_scale=0.5 --validate \
     >"$work/run1.txt" 2>&1 &
 pid=$!
 # Resize once the window exists (the frames go on at the new size).
-for _ in $(seq 1 100); do
-    if id=$(xdotool search --name '^depthscope' 2>/dev/null | head -n1) && [[ -n "$id" ]]; then
-        sleep 1
-        xdotool windowsize "$id" 1000 600 || true
-        break
-    fi
-    sleep 0.1
-done
+if id=$(window_of "$pid"); then
+    sleep 1
+    xdotool windowsize "$id" 1000 600 || true
+fi
 status=0
 wait "$pid" || status=$?
 cat "$work/run1.txt"
@@ -57,17 +68,10 @@ grep -q "depthscope: warning: /proc/depthscope-nope" "$work/run3.txt" ||
 # Once the window of process $1 shows, F12 (a real key press and release: the window's key
 # callback keeps it until the inspector's next frame, however short).
 press_f12() {
-    for _ in $(seq 1 300); do
-        if id=$(xdotool search --onlyvisible --pid "$1" --name '^depthscope' 2>/dev/null |
-            head -n1) && [[ -n "$id" ]]; then
-            xdotool windowfocus --sync "$id" 2>/dev/null || true
-            xdotool key F12
-            return 0
-        fi
-        sleep 0.1
-    done
-    echo "FAIL: no window to press F12 in"
-    return 1
+    local id
+    id=$(window_of "$1") || return 1
+    xdotool windowfocus --sync "$id" 2>/dev/null || true
+    xdotool key F12
 }
 
 # F12: a capture of the inspector's frame into $DEPTHSCOPE_CAPTURE_DIR, its path printed.
@@ -116,16 +120,11 @@ cmp "$work/exposure3/final.png" "$again/final.png" ||
 # renderer's and the UI's device stays silent (exit 0, not 3).
 "$exe" --frames 300 --scene edges --size 800x500 --validate >"$work/run6.txt" 2>&1 &
 pid=$!
-for _ in $(seq 1 300); do
-    if id=$(xdotool search --onlyvisible --pid "$pid" --name '^depthscope' 2>/dev/null |
-        head -n1) && [[ -n "$id" ]]; then
-        xdotool mousemove --window "$id" 400 200 mousedown 1
-        for _ in $(seq 1 20); do xdotool mousemove_relative 6 1; sleep 0.03; done
-        xdotool mouseup 1
-        break
-    fi
-    sleep 0.1
-done
+if id=$(window_of "$pid"); then
+    xdotool mousemove --window "$id" 400 200 mousedown 1
+    for _ in $(seq 1 20); do xdotool mousemove_relative 6 1; sleep 0.03; done
+    xdotool mouseup 1
+fi
 status=0
 wait "$pid" || status=$?
 cat "$work/run6.txt"
