@@ -17,8 +17,9 @@ vk::GraphicsPipelineBuilder scene_pipeline_builder(VkPipelineLayout layout,
     if (!frag.empty()) b.shader(VK_SHADER_STAGE_FRAGMENT_BIT, frag);
     b.vertex_binding(0, sizeof(scene::Vertex))
         .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position))
-        .vertex_attribute(2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0))
         .layout(layout);
+    if (inputs != VertexInputs::Position)
+        b.vertex_attribute(2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0));
     if (inputs == VertexInputs::All) {
         b.vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal))
             .vertex_attribute(3, 0, VK_FORMAT_R32G32B32A32_SFLOAT,

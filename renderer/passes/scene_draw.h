@@ -22,7 +22,8 @@ namespace ds::passes {
 // Which vertex attributes the vertex shader reads: unread ones draw performance warnings.
 enum class VertexInputs : uint8_t {
     All,         // position, normal, uv0, tangent (shaders/common/scene_vertex.glsl)
-    PositionUv,  // shaders/shadow.vert
+    PositionUv,  // shaders/shadow.vert; the masked depth-only prepass (SCENE_VARYINGS=1)
+    Position,    // the opaque depth-only prepass (SCENE_VARYINGS=0)
 };
 
 // Pipeline builder with the scene's vertex layout; `frag` may be empty (depth only).
