@@ -27,22 +27,29 @@ bool background(float d) {
 }
 
 // View-space position of pixel `px` (its centre) at depth value `d`: the view ray scaled to
-// z = -1 times the linear distance (exact for both depth conventions).
+// z = -1 times the linear distance (exact for both depth conventions). A perspective
+// projection's z and w rows do not involve x and y, so neither do its inverse's: the ray is
+// affine in the NDC position, two multiply-adds per pixel instead of a matrix product.
 vec3 view_position(ivec2 px, float d) {
     vec2 ndc = (vec2(px) + 0.5) / vec2(g_size) * 2.0 - 1.0;
-    vec4 p = frame.inverse_projection * vec4(ndc, 0.5, 1.0);
-    return p.xyz / -p.z * linear_depth(d);
+    vec4 k = frame.inverse_projection[2] * 0.5 + frame.inverse_projection[3];  // ndc.xy = 0
+    vec3 p = ndc.x * frame.inverse_projection[0].xyz + ndc.y * frame.inverse_projection[1].xyz +
+             k.xyz;
+    return p / -k.z * linear_depth(d);
 }
 
 // The tangent along one axis: towards the neighbour (at -step or +step) nearer in depth, as
-// a difference pointing along +step. `ok` is false when neither neighbour is surface.
+// a difference pointing along +step. `ok` is false when neither neighbour is surface. Each
+// neighbour's depth is fetched once.
 vec3 tangent(ivec2 px, ivec2 step, vec3 p, out bool ok) {
     ivec2 a = px - step, b = px + step;
-    bool has_a = all(greaterThanEqual(a, ivec2(0))) && !background(texelFetch(depth_tex, a, 0).r);
-    bool has_b = all(lessThan(b, g_size)) && !background(texelFetch(depth_tex, b, 0).r);
+    bool in_a = all(greaterThanEqual(a, ivec2(0))), in_b = all(lessThan(b, g_size));
+    float da = in_a ? texelFetch(depth_tex, a, 0).r : 0.0;
+    float db = in_b ? texelFetch(depth_tex, b, 0).r : 0.0;
+    bool has_a = in_a && !background(da), has_b = in_b && !background(db);
     ok = has_a || has_b;
-    vec3 pa = has_a ? view_position(a, texelFetch(depth_tex, a, 0).r) : p;
-    vec3 pb = has_b ? view_position(b, texelFetch(depth_tex, b, 0).r) : p;
+    vec3 pa = has_a ? view_position(a, da) : p;
+    vec3 pb = has_b ? view_position(b, db) : p;
     bool use_b = has_b && (!has_a || abs(pb.z - p.z) <= abs(p.z - pa.z));
     return use_b ? pb - p : p - pa;
 }
