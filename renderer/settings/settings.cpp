@@ -287,8 +287,9 @@ SettingsRegistry::SettingsRegistry() {
                   "for all geometry (loses early-Z)",
                   I::Nothing),
         bool_knob("prepass_sort", "prepass and depth", true,
-                  "prepass draws opaque and masked instances front to back (off: instanced "
-                  "groups in the scene's authored order, every hidden layer shaded)",
+                  "prepass draws opaque and masked instances front to back (prepass_mode=depth: "
+                  "whole instanced groups, by their nearest instance; off: instanced groups in "
+                  "the scene's authored order, every hidden layer shaded)",
                   I::Nothing),
         bool_knob("invariant", "prepass and depth", true,
                   "off: forward computes gl_Position with a different but mathematically equal "
