@@ -164,7 +164,8 @@ void print_header(const Options& o, const scene::Scene& scene, const Renderer& r
     std::printf("bench: %s at %ux%u, %d frames after %d warm-up, on %s%s\n", scene.name.c_str(),
                 o.size.width, o.size.height, o.bench_frames, o.bench_warmup,
                 device_info(renderer).name.c_str(),
-                o.ui ? ", inspector drawn offscreen every frame" : "");
+                o.ui ? ", inspector drawn offscreen every frame"
+                     : ", combinations interleaved frame by frame");
 }
 
 void print_ui_cost(const RunResult& plain, const RunResult& with_ui) {
@@ -202,6 +203,35 @@ void bench_combination(const Options& o, Renderer& renderer, const scene::Scene&
         print_run(runs.back(), runs.size() - 1);
     }
     if (ui) print_ui_cost(runs[runs.size() - 2], runs.back());
+}
+
+// Without --ui, every combination's frames interleave (frame i of each in turn, warm-up too).
+// On a shared CPU device the load drifts within a run: measured one after the other, the
+// combinations compared the neighbours' load as much as the settings (atrium 1280x720 on
+// lavapipe beside two other builds: the same shadow pass read 46 to 85 ms across the four
+// runs of one matrix, and off / on ratios swung from 1.3 to 2.4). Interleaved, the medians
+// being compared come from frames that saw the same machine, as --advise and --ui already do.
+void bench_interleaved(const Options& o, Renderer& renderer, const scene::Scene& scene,
+                       const Settings& base,
+                       const std::vector<std::vector<Assignment>>& combinations,
+                       std::vector<RunResult>& runs) {
+    std::vector<Settings> settings;
+    for (const auto& combination : combinations) settings.push_back(combined(base, combination));
+    std::vector<FrameResult> last(combinations.size());
+    std::vector<FrameSource> sources;
+    for (size_t k = 0; k < combinations.size(); ++k)
+        sources.push_back([&, k] {
+            last[k] = renderer.render(scene.camera, settings[k], o.size.width, o.size.height,
+                                      ReadBack::No);
+            return Measured{&last[k], std::nullopt};
+        });
+    std::vector<RunResult> measured = measure(sources, o);
+    for (size_t k = 0; k < measured.size(); ++k) {
+        measured[k].assignments = combinations[k];
+        measured[k].ui = false;  // measure() takes a second source for the inspector's
+        runs.push_back(std::move(measured[k]));
+        print_run(runs.back(), runs.size() - 1);
+    }
 }
 
 void write_results(const Options& o, const scene::Scene& scene, const nlohmann::json& runs) {
@@ -319,8 +349,12 @@ int run_bench(const Options& o) {
             runs_out.push_back(advise_combination(o, renderer, scene, base, combinations[i], i));
     } else {
         std::vector<RunResult> runs;
-        for (const auto& combination : combinations)
-            bench_combination(o, renderer, scene, ui.get(), base, combination, runs);
+        if (ui) {
+            for (const auto& combination : combinations)
+                bench_combination(o, renderer, scene, ui.get(), base, combination, runs);
+        } else {
+            bench_interleaved(o, renderer, scene, base, combinations, runs);
+        }
         runs_out = runs_json(runs, base);
         if (!o.trace.empty()) write_trace(o, scene, renderer, base, runs);
     }

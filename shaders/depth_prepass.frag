@@ -1,22 +1,37 @@
 #version 460
-// Depth prepass: no lighting. Writes the encoded world-space shading normal and the
-// roughness that forward, GTAO and contact shadows read. Defines (default 0):
+// Depth prepass: no lighting. Defines (default 0 unless said):
+//   GBUFFER=1 (default) prepass_mode=gbuffer: writes the encoded world-space shading normal
+//                      (attachment 0) and the roughness (1) that forward, GTAO and contact
+//                      shadows read. GBUFFER=0, prepass_mode=depth: writes no colour; this
+//                      shader then exists only for the alpha test (masked geometry) or a
+//                      diagnostic (counting, surface_id, pixel history): plain opaque
+//                      geometry has no fragment stage at all (DepthPrepass).
 //   ALPHA_MASK=1       MASK materials: alpha test (base colour alpha only) before any other
 //                      texture read; its discard makes the depth test late, so this
 //                      pipeline is drawn after the opaque one, which keeps early-Z.
 //   ALPHA_MASK=2       masked_split=off: one pipeline for all geometry, testing MASK
 //                      materials only; the discard in it costs every draw its early-Z.
 //   COUNT_FRAGMENTS=1  count the fragments that ran (common/count.glsl).
-//   SURFACE_ID=1       also write the surface that won the depth test (attachment 2, u32).
+//   SURFACE_ID=1       also write the surface that won the depth test (u32): attachment 2
+//                      with GBUFFER=1, SURFACE_LOCATION (0, or 1 after the coverage slot)
+//                      with GBUFFER=0.
 //   ALPHA_TO_COVERAGE, COUNT_DISCARDS: see common/alpha_test.glsl (with ALPHA_MASK only).
+//                      With GBUFFER=0 the sharpened alpha goes to output 0, whose attachment
+//                      slot has no image: alpha to coverage reads output 0 whatever is bound.
 //   PIXEL_HISTORY=1    the pixel history replay: records each fragment (common/pixel_history.glsl).
 #extension GL_GOOGLE_include_directive : require
 
+#ifndef GBUFFER
+#define GBUFFER 1
+#endif
 #ifndef ALPHA_MASK
 #define ALPHA_MASK 0
 #endif
 #ifndef SURFACE_ID
 #define SURFACE_ID 0
+#endif
+#ifndef SURFACE_LOCATION
+#define SURFACE_LOCATION 0
 #endif
 
 #include "common/alpha_test.glsl"
@@ -28,20 +43,33 @@
 layout(early_fragment_tests) in;
 #endif
 
+#if GBUFFER
 layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_normal;
-layout(location = 2) in vec2 in_uv0;
 layout(location = 3) in vec4 in_tangent;
+#endif
+#if GBUFFER || ALPHA_MASK
+layout(location = 2) in vec2 in_uv0;
+#endif
 
+// Output 0: the normal (G-buffer), or with GBUFFER=0 the coverage alpha / the replay's
+// stand-in attachment where one of those needs it.
+#define HAS_OUTPUT0 (GBUFFER || PIXEL_HISTORY || (ALPHA_MASK && ALPHA_TO_COVERAGE))
+#if HAS_OUTPUT0
 layout(location = 0) out vec4 out_normal;
-#if PIXEL_HISTORY  // the replay's one attachment is a stand-in for output 0: this is recorded
-float out_roughness;
-#else
+#endif
+#if GBUFFER && !PIXEL_HISTORY
 layout(location = 1) out float out_roughness;
+#else  // the replay's one attachment is a stand-in for output 0: this is recorded
+float out_roughness;
 #endif
 #if SURFACE_ID
 layout(location = 4) flat in uint in_surface_base;
+#if GBUFFER
 layout(location = 2) out uint out_surface;
+#else
+layout(location = SURFACE_LOCATION) out uint out_surface;
+#endif
 #endif
 
 void main() {
@@ -63,13 +91,22 @@ void main() {
     }
 #endif
 #endif
+#if GBUFFER
     out_normal = vec4(encode_normal(shading_normal(vertex_normal(in_normal), in_tangent, in_uv0)),
                       coverage);
     out_roughness = material_roughness(in_uv0);
-#if ALPHA_MASK
-    history_record(alpha, alpha_cutoff(), tested ? kHistoryAlphaTested : 0u, out_normal);
+#elif HAS_OUTPUT0
+    out_normal = vec4(0.0, 0.0, 0.0, coverage);  // no colour: only the alpha is used
+#endif
+#if HAS_OUTPUT0
+    vec4 recorded = out_normal;
 #else
-    history_record(1.0, 0.0, 0u, out_normal);
+    vec4 recorded = vec4(0.0);
+#endif
+#if ALPHA_MASK
+    history_record(alpha, alpha_cutoff(), tested ? kHistoryAlphaTested : 0u, recorded);
+#else
+    history_record(1.0, 0.0, 0u, recorded);
 #endif
 #if SURFACE_ID
     out_surface = in_surface_base + uint(gl_PrimitiveID) + 1u;

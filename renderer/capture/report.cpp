@@ -62,11 +62,15 @@ nlohmann::json passes_json(const std::vector<PassResult>& passes,
         nlohmann::json pass = {{"name", passes[i].name},
                                {"kind", graph::pass_role_name(passes[i].role)}};
         pass.update(measured(i));
-        // Geometry passes: each pipeline's early-Z verdict and its draws (issue 11 part 3).
+        // Geometry passes: each pipeline's early-Z verdict and its draws (issue 11 part 3), and
+        // whether it has a fragment stage at all (issue 14: the Z-only prepass has none).
         if (!passes[i].pipelines.empty()) {
             nlohmann::json pipelines = nlohmann::json::array();
             for (const PipelineReport& r : passes[i].pipelines)
-                pipelines.push_back({{"name", r.name}, {"early_z", r.early_z}, {"draws", r.draws}});
+                pipelines.push_back({{"name", r.name},
+                                     {"early_z", r.early_z},
+                                     {"draws", r.draws},
+                                     {"fragment_stage", r.fragment_stage}});
             pass["pipelines"] = std::move(pipelines);
         }
         out.push_back(std::move(pass));

@@ -8,6 +8,7 @@
 #include "renderer/passes/scene_draw.h"
 #include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
+#include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/functions.h"
 
@@ -78,12 +79,37 @@ ShaderStages DepthPrepass::compile(const Variant& v) const {
             defines.push_back(std::move(d));
         vert_defines.push_back({"PIXEL_HISTORY", "1"});
     }
+    if (!v.gbuffer) {
+        // Z only: the vertex stage hands on just what the alpha test reads.
+        defines.push_back({"GBUFFER", "0"});
+        if (v.coverage_slot) defines.push_back({"SURFACE_LOCATION", "1"});
+        vert_defines.push_back({"SCENE_VARYINGS", v.alpha == AlphaTest::Opaque ? "0" : "1"});
+    }
     ShaderStages s;
     s.vert =
         services_.compiler.compile("depth_prepass.vert", shader::Stage::Vertex, vert_defines).spirv;
+    if (!has_fragment_stage(v)) return s;  // depth only (seed 003's null pixel shader)
     s.frag =
         services_.compiler.compile("depth_prepass.frag", shader::Stage::Fragment, defines).spirv;
     return s;
+}
+
+bool DepthPrepass::has_fragment_stage(const Variant& v) {
+    return v.gbuffer || v.alpha != AlphaTest::Opaque || v.counting || v.surface_id || v.history;
+}
+
+std::vector<VkFormat> DepthPrepass::color_formats(const Variant& v) {
+    std::vector<VkFormat> formats;
+    if (v.gbuffer) {
+        formats = {kNormalFormat, kRoughnessFormat};
+    } else if (v.coverage_slot) {
+        // A slot that is rendered without an image (writes discarded): only output 0's alpha
+        // matters. The format is never used; a float one matches the shader's output type,
+        // which the validation layer checks even for a slot without an image.
+        formats.push_back(kCoverageSlotFormat);
+    }
+    if (v.surface_id) formats.push_back(kSurfaceFormat);
+    return formats;
 }
 
 // Distinct for every variant one frame can use; the defines that change the fragment shader's
@@ -92,6 +118,7 @@ std::string DepthPrepass::pipeline_name(const Variant& v) {
     static constexpr const char* kNames[] = {"depth_prepass opaque", "depth_prepass mask",
                                              "depth_prepass unsplit"};
     std::string name = kNames[int(v.alpha)];
+    if (!v.gbuffer) name += " z-only";
     if (v.alpha_to_coverage) name += " a2c";
     if (v.count_discards) name += " count_discards";
     if (v.counting) name += " counting";
@@ -100,10 +127,14 @@ std::string DepthPrepass::pipeline_name(const Variant& v) {
 }
 
 vk::Pipeline DepthPrepass::create(const Variant& v, const ShaderStages& s) const {
-    if (v.history) return history_.create(s, v.samples, pipeline_name(v));
-    vk::GraphicsPipelineBuilder b = scene_pipeline_builder(layout_.handle(), s.vert, s.frag);
-    b.color_attachment(kNormalFormat).color_attachment(kRoughnessFormat);
-    if (v.surface_id) b.color_attachment(kSurfaceFormat);
+    // The Z-only vertex stages fetch only what they read (unread attributes draw warnings).
+    const VertexInputs inputs = v.gbuffer                      ? VertexInputs::All
+                                : v.alpha == AlphaTest::Opaque ? VertexInputs::Position
+                                                               : VertexInputs::PositionUv;
+    if (v.history) return history_.create(s, v.samples, pipeline_name(v), inputs);
+    vk::GraphicsPipelineBuilder b =
+        scene_pipeline_builder(layout_.handle(), s.vert, s.frag, inputs);
+    for (VkFormat format : color_formats(v)) b.color_attachment(format);
     return b.depth_attachment(v.depth)
         .samples(v.samples)
         .alpha_to_coverage(v.alpha_to_coverage)
@@ -122,7 +153,9 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
                          .surface_id = in.options.surface_id,
                          .samples = in.options.samples,
                          .depth = in.options.depth_format,
-                         .count_draws = res.prepass_counts.draws.valid()};
+                         .count_draws = res.prepass_counts.draws.valid(),
+                         .gbuffer = in.options.gbuffer,
+                         .coverage_slot = !in.options.gbuffer && in.options.alpha_to_coverage};
     // Only the pipeline with the alpha test changes: the opaque one keeps early-Z and its
     // variant, so normal frames share it.
     Variant tested = opaque;
@@ -203,12 +236,16 @@ void DepthPrepass::collect(const FrameCollect& c, std::span<PassResult> own, Fra
 DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInputs& in,
                                          FrameResources& res) const {
     const graph::ImageSize full = graph::ImageSize::relative(1.0f);
-    res.normals = b.create_image(
-        "normals",
-        {.format = kNormalFormat, .size = full, .semantic = graph::Semantic::EncodedNormal});
-    res.roughness = b.create_image(
-        "roughness",
-        {.format = kRoughnessFormat, .size = full, .semantic = graph::Semantic::UnormScalar});
+    const bool gbuffer = in.options.gbuffer;
+    // prepass_mode=depth: no normals or roughness exist (nor are they listed anywhere).
+    if (gbuffer) {
+        res.normals = b.create_image(
+            "normals",
+            {.format = kNormalFormat, .size = full, .semantic = graph::Semantic::EncodedNormal});
+        res.roughness = b.create_image(
+            "roughness",
+            {.format = kRoughnessFormat, .size = full, .semantic = graph::Semantic::UnormScalar});
+    }
     b.read(res.frame_uniforms, Access::UniformRead,
            graph::Shader::Vertex | graph::Shader::Fragment);
     if (res.prepass_counts.valid()) declare_counts(b, res.prepass_counts);
@@ -219,25 +256,30 @@ DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInput
     Msaa msaa;
     if (!in.options.msaa()) {
         b.write(res.depth, Access::DepthAttachment);
-        b.write(res.normals, Access::ColorAttachment);
-        b.write(res.roughness, Access::ColorAttachment);
+        if (gbuffer) {
+            b.write(res.normals, Access::ColorAttachment);
+            b.write(res.roughness, Access::ColorAttachment);
+        }
         if (res.surface_id.valid()) b.write(res.surface_id, Access::ColorAttachment);
         return msaa;
     }
     const VkSampleCountFlagBits samples = in.options.samples;
-    msaa.normals = b.create_image("msaa_normals", {.format = kNormalFormat,
-                                                   .size = full,
-                                                   .samples = samples,
-                                                   .semantic = graph::Semantic::EncodedNormal});
-    msaa.roughness = b.create_image("msaa_roughness", {.format = kRoughnessFormat,
+    if (gbuffer) {
+        msaa.normals = b.create_image("msaa_normals", {.format = kNormalFormat,
                                                        .size = full,
                                                        .samples = samples,
-                                                       .semantic = graph::Semantic::UnormScalar});
+                                                       .semantic = graph::Semantic::EncodedNormal});
+        msaa.roughness =
+            b.create_image("msaa_roughness", {.format = kRoughnessFormat,
+                                              .size = full,
+                                              .samples = samples,
+                                              .semantic = graph::Semantic::UnormScalar});
+        b.write(msaa.normals, Access::ColorAttachment);
+        b.write(msaa.roughness, Access::ColorAttachment);
+        b.write(res.normals, Access::ResolveDst);
+        b.write(res.roughness, Access::ResolveDst);
+    }
     b.write(res.msaa_depth, Access::DepthAttachment);
-    b.write(msaa.normals, Access::ColorAttachment);
-    b.write(msaa.roughness, Access::ColorAttachment);
-    b.write(res.normals, Access::ResolveDst);
-    b.write(res.roughness, Access::ResolveDst);
     if (res.surface_id.valid()) {
         msaa.surface_id =
             b.create_image("msaa_surface_id", {.format = kSurfaceFormat,
@@ -253,37 +295,46 @@ DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInput
     return msaa;
 }
 
+std::vector<VkRenderingAttachmentInfo> DepthPrepass::color_attachments(graph::PassContext& ctx,
+                                                                       const FrameInputs& in,
+                                                                       const FrameResources& res,
+                                                                       const Msaa& msaa) const {
+    const std::array<float, 4> no_normal = {0.5f, 0.5f, 0.5f, 0.0f};  // the zero vector
+    const bool multi = in.options.msaa();
+    // At 1x everything is stored (forward, GTAO, contact shadows and captures read it); at
+    // msaa > 1 only the resolved images are read later, so the samples need no store.
+    auto image = [&](graph::ImageHandle single, graph::ImageHandle samples,
+                     std::array<float, 4> clear) {
+        if (!multi) return color_attachment(ctx.view(single), VK_ATTACHMENT_LOAD_OP_CLEAR, clear);
+        return resolving_color_attachment(ctx.view(samples), ctx.view(single),
+                                          VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                          VK_ATTACHMENT_STORE_OP_DONT_CARE, clear);
+    };
+    std::vector<VkRenderingAttachmentInfo> colors;
+    if (in.options.gbuffer) {
+        colors.push_back(image(res.normals, msaa.normals, no_normal));
+        colors.push_back(image(res.roughness, msaa.roughness, {}));
+    } else if (in.options.alpha_to_coverage) {
+        // The coverage slot: no image, so the alpha it receives only makes the sample mask.
+        colors.push_back(
+            vk::make<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO));
+    }
+    if (res.surface_id.valid()) {  // cleared to 0, none
+        colors.push_back(image(res.surface_id, msaa.surface_id, {}));
+        if (multi) colors.back().resolveMode = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;  // integers
+    }
+    return colors;
+}
+
 void DepthPrepass::begin(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
                          const Msaa& msaa) const {
-    VkCommandBuffer cmd = ctx.cmd();
-    const std::array<float, 4> no_normal = {0.5f, 0.5f, 0.5f, 0.0f};  // the zero vector
-    const size_t count = res.surface_id.valid() ? 3 : 2;  // surface_id: cleared to 0, none
+    const std::vector<VkRenderingAttachmentInfo> colors = color_attachments(ctx, in, res, msaa);
     if (!in.options.msaa()) {
-        // Everything is stored: forward, GTAO, contact shadows and captures read it.
-        const std::array<VkRenderingAttachmentInfo, 3> colors = {
-            color_attachment(ctx.view(res.normals), VK_ATTACHMENT_LOAD_OP_CLEAR, no_normal),
-            color_attachment(ctx.view(res.roughness), VK_ATTACHMENT_LOAD_OP_CLEAR),
-            count == 3 ? color_attachment(ctx.view(res.surface_id), VK_ATTACHMENT_LOAD_OP_CLEAR)
-                       : VkRenderingAttachmentInfo{}};
         const VkRenderingAttachmentInfo depth = depth_attachment(
             ctx.view(res.depth), ctx.layout(res.depth), VK_ATTACHMENT_LOAD_OP_CLEAR,
             VK_ATTACHMENT_STORE_OP_STORE, in.options.far_depth());
-        begin_rendering(cmd, ctx.extent(res.depth), std::span(colors.data(), count), &depth);
+        begin_rendering(ctx.cmd(), ctx.extent(res.depth), colors, &depth);
         return;
-    }
-    // Only the resolved normals and roughness are read later: the samples need no store.
-    std::array<VkRenderingAttachmentInfo, 3> colors = {
-        resolving_color_attachment(ctx.view(msaa.normals), ctx.view(res.normals),
-                                   VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE,
-                                   no_normal),
-        resolving_color_attachment(ctx.view(msaa.roughness), ctx.view(res.roughness),
-                                   VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE),
-        VkRenderingAttachmentInfo{}};
-    if (count == 3) {  // integers resolve to one sample, never an average
-        colors[2] = resolving_color_attachment(ctx.view(msaa.surface_id), ctx.view(res.surface_id),
-                                               VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                               VK_ATTACHMENT_STORE_OP_DONT_CARE);
-        colors[2].resolveMode = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;
     }
     // STORE: forward, skybox and transparent LOAD these samples (seed 000's lesson).
     VkRenderingAttachmentInfo depth = depth_attachment(
@@ -295,7 +346,7 @@ void DepthPrepass::begin(graph::PassContext& ctx, const FrameInputs& in, const F
         depth.resolveImageView = ctx.view(res.depth);
         depth.resolveImageLayout = ctx.layout(res.depth);
     }
-    begin_rendering(cmd, ctx.extent(res.depth), std::span(colors.data(), count), &depth);
+    begin_rendering(ctx.cmd(), ctx.extent(res.depth), colors, &depth);
 }
 
 void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
@@ -320,7 +371,8 @@ void DepthPrepass::add_history(graph::RenderGraph& graph, const FrameInputs& in,
               .alpha_to_coverage = v->alpha_to_coverage,
               .history = true,
               .samples = v->samples,
-              .depth = v->depth};  // no counting: the frame's counts stay the frame's
+              .depth = v->depth,
+              .gbuffer = v->gbuffer};  // no counting: the frame's counts stay the frame's
     }
     Draw draw;
     draw.layout = history_.layout();
@@ -360,6 +412,9 @@ void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const 
                                 &draw.discards, 0, nullptr);
     // prepass_sort: nearest instances first, so the depth test rejects hidden layers before
     // their (normal-mapped) fragment shader runs; off: instanced groups in authored order.
+    // prepass_mode=depth sorts whole instanced groups instead: its opaque fragments cost only
+    // a depth test, less than the ten times more draw calls per-instance order takes (atrium
+    // 1280x720 on lavapipe: the Z-only prepass took longer sorted per instance than unsorted).
     // The frame's draws are queried (count_draws); a history replay's (with `log`) are not.
     const DrawHooks hooks{.queries = log ? nullptr : &queries_, .log = log};
     auto draw_modes = [&](std::span<const AlphaMode> modes) {
@@ -367,7 +422,10 @@ void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const 
         if (!in.options.prepass_sort)
             return draw_groups(cmd, *in.scene, layout, modes, decals, std::nullopt, hooks);
         const auto sorted =
-            sort_by_distance(*in.scene, in.camera_position, modes, DrawOrder::FrontToBack, decals);
+            in.options.gbuffer
+                ? sort_by_distance(*in.scene, in.camera_position, modes, DrawOrder::FrontToBack,
+                                   decals)
+                : sort_groups_front_to_back(*in.scene, in.camera_position, modes, decals);
         return draw_sorted(cmd, *in.scene, layout, sorted, hooks);
     };
     // The log's tags: 0 the first pipeline, 1 the MASK one (add_history's order).

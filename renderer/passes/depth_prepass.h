@@ -1,8 +1,15 @@
 #pragma once
-// depth_prepass (seed 000): fills the scene depth before anything is lit, and writes the
-// world-space shading normal (A2B10G10R10, n * 0.5 + 0.5, normal-mapped) and the roughness
-// (R8) that forward, GTAO and contact shadows read. Depth: the frame's depth_format (D32
-// unless set), cleared to "far", the closer test (GREATER with reverse-Z), writes on.
+// depth_prepass (seed 000): fills the scene depth before anything is lit. Depth: the frame's
+// depth_format (D32 unless set), cleared to "far", the closer test (GREATER with reverse-Z),
+// writes on. prepass_mode=gbuffer (default) also writes the world-space shading normal
+// (A2B10G10R10, n * 0.5 + 0.5, normal-mapped) and the roughness (R8) that forward, GTAO and
+// contact shadows read. prepass_mode=depth is the classic Z-only prepass (seeds 003 / 004): no
+// colour attachment, and the opaque pipeline has no fragment stage and fetches positions
+// only; the MASK pipeline keeps a fragment shader for its alpha test and writes nothing.
+// A diagnostic that needs a fragment shader (counting, surface_id, pixel history) gives the
+// opaque pipeline one that does only that, as the shadow pass does. With alpha_to_coverage the
+// coverage alpha goes to colour slot 0, which has no image (alpha to coverage reads output 0
+// whatever is bound; writes to it are discarded).
 //
 // Two pipelines share the invariant vertex shader: opaque first (no discard: early-Z is
 // guaranteed), then MASK (alpha test before any other texture read). masked_split=off draws
@@ -29,6 +36,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -53,6 +61,9 @@ class DepthPrepass final : public FramePass {
     static constexpr VkFormat kNormalFormat = VK_FORMAT_A2B10G10R10_UNORM_PACK32;
     static constexpr VkFormat kRoughnessFormat = VK_FORMAT_R8_UNORM;
     static constexpr VkFormat kSurfaceFormat = VK_FORMAT_R32_UINT;
+    // prepass_mode=depth with alpha_to_coverage: the pipelines' format for colour slot 0, which
+    // the rendering leaves without an image.
+    static constexpr VkFormat kCoverageSlotFormat = VK_FORMAT_R8_UNORM;
 
     explicit DepthPrepass(const PassServices& services);
 
@@ -79,12 +90,19 @@ class DepthPrepass final : public FramePass {
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
         bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
+        bool gbuffer = true;                   // prepass_mode=gbuffer: normals, roughness
+        bool coverage_slot = false;  // depth mode, alpha_to_coverage: colour slot 0, no image
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(int(alpha), counting, alpha_to_coverage, count_discards, surface_id,
-                               history, int(samples), int(depth), count_draws);
+                               history, int(samples), int(depth), count_draws, gbuffer,
+                               coverage_slot);
         }
     };
+    // Whether the variant has a fragment stage: prepass_mode=depth's plain opaque one has none.
+    static bool has_fragment_stage(const Variant& v);
+    // The colour attachment formats of the variant's rendering, in order.
+    static std::vector<VkFormat> color_formats(const Variant& v);
     static constexpr uint32_t kDiscardSet = 2;
 
     struct Draw {
@@ -113,6 +131,12 @@ class DepthPrepass final : public FramePass {
                 const Msaa& msaa, Draw draw, graph::BufferHandle discards);
     void begin(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
                const Msaa& msaa) const;
+    // The colour attachments begin() renders into (none in prepass_mode=depth without a
+    // diagnostic), in color_formats() order.
+    std::vector<VkRenderingAttachmentInfo> color_attachments(graph::PassContext& ctx,
+                                                             const FrameInputs& in,
+                                                             const FrameResources& res,
+                                                             const Msaa& msaa) const;
     // The pass's draws with `draw`'s pipelines (the frame's or the replay's), logged to `log`.
     void draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw,
                     PipelineUses& uses, DrawLog* log);

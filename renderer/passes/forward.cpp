@@ -70,7 +70,7 @@ ShaderStages ForwardPass::compile(const Variant& v) const {
     if (v.alpha_to_coverage) frag_defines.push_back({"ALPHA_TO_COVERAGE", "1"});
     if (v.history) {
         const bool msaa = v.samples != VK_SAMPLE_COUNT_1_BIT;
-        for (shader::Define& d : PixelHistoryReplay::defines(v.prepass_inputs, false, msaa))
+        for (shader::Define& d : PixelHistoryReplay::defines(v.after_prepass, false, msaa))
             frag_defines.push_back(std::move(d));
         vert_defines.push_back({"PIXEL_HISTORY", "1"});
     }
@@ -106,7 +106,9 @@ vk::Pipeline ForwardPass::create(const Variant& v, const ShaderStages& s) const 
 
 void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const FrameOptions& o = in.options;
-    const Variant opaque{.prepass_inputs = o.prepass,
+    // prepass_mode=depth: the prepass left only depth, so forward computes normal and
+    // roughness itself (its non-PREPASS path), still under EQUAL without depth writes.
+    const Variant opaque{.prepass_inputs = o.gbuffer_prepass(),
                          .non_invariant = !o.invariant,
                          .counting = res.forward_counts.valid(),
                          .sample_shading = o.sample_shading,
@@ -130,8 +132,8 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
     queries_.begin_frame(o.count_draws && !o.prepass, uint32_t(in.scene->draw_groups().size()));
     history_.clear();
     draw.lighting = {.shadow_map = res.shadow_map,
-                     .normals = o.prepass ? res.normals : graph::ImageHandle{},
-                     .roughness = o.prepass ? res.roughness : graph::ImageHandle{},
+                     .normals = o.gbuffer_prepass() ? res.normals : graph::ImageHandle{},
+                     .roughness = o.gbuffer_prepass() ? res.roughness : graph::ImageHandle{},
                      .ao = res.ao,
                      .contact_shadows = res.contact_shadows};
     // The record lambda needs the handles setup creates: they travel in the pass's Data.
@@ -209,10 +211,11 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
 void ForwardPass::add_history(graph::RenderGraph& graph, const FrameInputs& in,
                               const FrameResources& res, const Variant& opaque, const Variant& mask,
                               const Draw& real) {
-    auto twin = [](Variant v) {
+    auto twin = [&in](Variant v) {
         v.counting = false;  // the frame's counts stay the frame's
         v.count_draws = false;
         v.history = true;
+        v.after_prepass = in.options.prepass;  // in either prepass_mode
         return v;
     };
     Draw draw = real;

@@ -5,10 +5,11 @@
 //
 // With the prepass: depth is loaded and never stored (STORE_OP_NONE, read-only layout), the
 // test is EQUAL (or the closer-or-equal one with depth_compare=greater_or_equal), writes off,
-// and normal and roughness come from the prepass images. With EQUAL no forward pipeline has
-// a discard: EQUAL already keeps only what the masked prepass kept, so every one keeps
-// early-Z. greater_or_equal would let the cut-out parts of MASK surfaces through (they are
-// nearer than what the prepass kept), so there MASK keeps its alpha test, in its own pipeline.
+// and normal and roughness come from the prepass images (prepass_mode=gbuffer) or, with the
+// Z-only prepass (prepass_mode=depth), from the material as without a prepass. With EQUAL no
+// forward pipeline has a discard: EQUAL already keeps only what the masked prepass kept, so every
+// one keeps early-Z. greater_or_equal would let the cut-out parts of MASK surfaces through (they
+// are nearer than what the prepass kept), so there MASK keeps its alpha test, in its own pipeline.
 // Without the prepass (prepass=off): depth is cleared and written with the closer test,
 // opaque first, then MASK with a discard in its own pipeline. invariant=off swaps in a
 // vertex shader without `invariant` and with a different (equal in exact arithmetic)
@@ -75,10 +76,14 @@ class ForwardPass final : public FramePass {
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
         bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
+        // history only: the replay reads the depth the prepass left (PIXEL_HISTORY_DEPTH), in
+        // either prepass_mode (prepass_inputs is gbuffer's only).
+        bool after_prepass = false;
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(prepass_inputs, alpha_mask, non_invariant, counting, sample_shading,
-                               alpha_to_coverage, history, int(samples), int(depth), count_draws);
+                               alpha_to_coverage, history, int(samples), int(depth), count_draws,
+                               after_prepass);
         }
     };
 

@@ -102,6 +102,7 @@ scene::Camera effective_camera(const scene::Camera& camera, const FrameOptions& 
 FrameOptions FrameOptions::from(const Settings& s) {
     FrameOptions o;
     o.prepass = s.get_bool("prepass");
+    o.gbuffer = s.get("prepass_mode") == "gbuffer";
     o.depth_equal = s.get("depth_compare") == "equal";
     o.masked_split = s.get_bool("masked_split");
     o.prepass_sort = s.get_bool("prepass_sort");

@@ -69,6 +69,9 @@ enum class DepthChoice : uint8_t { D32f, D24, D16 };
 // The settings of one frame, parsed once (names and meanings: the registry's help text).
 struct FrameOptions {
     bool prepass = true;
+    // prepass_mode=gbuffer: the prepass writes normals and roughness too (forward reads them);
+    // depth: Z only (opaque pipeline without a fragment stage). Meaningful with the prepass.
+    bool gbuffer = true;
     bool depth_equal = true;  // depth_compare=equal (else greater_or_equal; prepass on)
     bool masked_split = true;
     bool prepass_sort = true;           // prepass draws instances front to back
@@ -106,6 +109,11 @@ struct FrameOptions {
     }
     float far_depth() const { return reverse_z ? 0.0f : 1.0f; }
     bool msaa() const { return samples != VK_SAMPLE_COUNT_1_BIT; }
+    // The prepass writes normals and roughness (prepass on, prepass_mode=gbuffer).
+    bool gbuffer_prepass() const { return prepass && gbuffer; }
+    // prepass_mode=depth with the prepass on: forward shades from its own normals, and the
+    // screen-space passes read normals reconstructed from depth.
+    bool depth_only_prepass() const { return prepass && !gbuffer; }
 };
 
 // depth_format's name for `choice` ("d32f", "d24", "d16").
@@ -144,8 +152,10 @@ struct FrameResources {
     graph::BufferHandle frame_uniforms;  // FrameUniforms (imported)
     graph::ImageHandle shadow_map;       // PassServices::preferred_depth_format, absolute size
     graph::ImageHandle depth;            // FrameOptions::depth_format; reverse-Z unless off
-    graph::ImageHandle normals;          // A2B10G10R10, n * 0.5 + 0.5
-    graph::ImageHandle roughness;        // R8
+    // World normals, n * 0.5 + 0.5: the G-buffer prepass's "normals" (A2B10G10R10), or with
+    // prepass_mode=depth normals_from_depth's "depth_normals" (RGBA8, from depth).
+    graph::ImageHandle normals;
+    graph::ImageHandle roughness;        // R8; the G-buffer prepass only
     graph::ImageHandle ao_raw;           // gtao output
     graph::ImageHandle ao_filtered;      // ao_spatial output
     graph::ImageHandle ao;               // ao_temporal output (what forward reads)

@@ -25,6 +25,7 @@ struct PipelineReport {
     std::string name;
     std::string early_z;
     uint32_t draws = 0;
+    bool fragment_stage = true;  // false: depth only (shadow opaque, the Z-only prepass's)
 };
 
 // One pass of a frame, as measured by the GPU.

@@ -18,7 +18,8 @@ namespace ds::passes {
 // was built from (none: depth only) and its alpha-to-coverage state.
 inline PipelineInfo describe_pipeline(std::string name, const ShaderStages& stages,
                                       bool alpha_to_coverage) {
-    return {std::move(name), shader::early_z_verdict(stages.frag, alpha_to_coverage)};
+    return {std::move(name), shader::early_z_verdict(stages.frag, alpha_to_coverage),
+            !stages.frag.empty()};
 }
 
 class PipelineUses {
@@ -28,7 +29,8 @@ class PipelineUses {
     void add(const PipelineInfo& info, uint32_t draws) {
         auto it = std::find_if(list_.begin(), list_.end(),
                                [&](const PipelineReport& r) { return r.name == info.name; });
-        if (it == list_.end()) it = list_.insert(list_.end(), {info.name, info.early_z, 0});
+        if (it == list_.end())
+            it = list_.insert(list_.end(), {info.name, info.early_z, 0, info.fragment_stage});
         it->draws += draws;
     }
     const std::vector<PipelineReport>& list() const { return list_; }

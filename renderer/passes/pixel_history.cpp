@@ -183,10 +183,10 @@ VkPipelineLayout PixelHistoryReplay::layout() const {
 }
 
 vk::Pipeline PixelHistoryReplay::create(const ShaderStages& stages, VkSampleCountFlagBits samples,
-                                        const std::string& name) const {
+                                        const std::string& name, VertexInputs inputs) const {
     // Output 0 goes to the stand-in attachment, the rest is recorded. gl_SampleID in the MSAA
     // variant runs it once per sample.
-    return scene_pipeline_builder(layout(), stages.vert, stages.frag)
+    return scene_pipeline_builder(layout(), stages.vert, stages.frag, inputs)
         .color_attachment(kTargetFormat)
         .samples(samples)
         .build(services_.context, name.c_str());

@@ -81,9 +81,10 @@ class PixelHistoryReplay {
 
     // The instrumented pipelines' layout (created on first use).
     VkPipelineLayout layout() const;
-    // An instrumented pipeline: the scene's vertex layout, the stand-in target, `samples`.
+    // An instrumented pipeline: the scene's vertex layout (the attributes `inputs` names: the
+    // depth-only prepass's read fewer), the stand-in target, `samples`.
     vk::Pipeline create(const ShaderStages& stages, VkSampleCountFlagBits samples,
-                        const std::string& name) const;
+                        const std::string& name, VertexInputs inputs = VertexInputs::All) const;
     // The instrumented variant's fragment defines (the vertex stage takes PIXEL_HISTORY=1).
     static std::vector<shader::Define> defines(bool reads_depth, bool reads_dst, bool msaa);
 

@@ -1,6 +1,7 @@
 #include "renderer/passes/scene_draw.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/passes/draw_queries.h"
@@ -17,8 +18,9 @@ vk::GraphicsPipelineBuilder scene_pipeline_builder(VkPipelineLayout layout,
     if (!frag.empty()) b.shader(VK_SHADER_STAGE_FRAGMENT_BIT, frag);
     b.vertex_binding(0, sizeof(scene::Vertex))
         .vertex_attribute(0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position))
-        .vertex_attribute(2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0))
         .layout(layout);
+    if (inputs != VertexInputs::Position)
+        b.vertex_attribute(2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv0));
     if (inputs == VertexInputs::All) {
         b.vertex_attribute(1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal))
             .vertex_attribute(3, 0, VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -117,6 +119,32 @@ std::vector<InstanceDraw> sort_by_distance(const GpuScene& scene, glm::vec3 came
     return draws;
 }
 
+std::vector<InstanceDraw> sort_groups_front_to_back(const GpuScene& scene, glm::vec3 camera,
+                                                    std::span<const scene::AlphaMode> modes,
+                                                    Decals decals) {
+    struct Item {
+        float distance;
+        InstanceDraw draw;
+    };
+    std::vector<Item> items;
+    const auto& centers = scene.instance_centers();
+    for (const scene::DrawGroup& g : scene.draw_groups()) {
+        if (!selected(g, modes, decals) || g.instance_count == 0) continue;
+        if (scene.meshes()[g.mesh].index_count == 0) continue;
+        float nearest = std::numeric_limits<float>::max();
+        for (uint32_t i = g.first_instance; i < g.first_instance + g.instance_count; ++i)
+            nearest = std::min(nearest, glm::distance(centers[i], camera));
+        items.push_back({nearest, {g.first_instance, &g, g.instance_count}});
+    }
+    // Groups are in the scene's order already: a stable sort keeps it for equal distances.
+    std::stable_sort(items.begin(), items.end(),
+                     [](const Item& a, const Item& b) { return a.distance < b.distance; });
+    std::vector<InstanceDraw> draws;
+    draws.reserve(items.size());
+    for (const Item& item : items) draws.push_back(item.draw);
+    return draws;
+}
+
 std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera,
                                              Decals decals) {
     const scene::AlphaMode blend[] = {scene::AlphaMode::Blend};
@@ -133,12 +161,12 @@ DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
         bind_material(cmd, scene, layout, mesh.material, material);
         vk::fn().cmd_set_cull_mode(cmd, cull_mode(d.group->double_sided));
         if (queries) queries->begin(cmd, uint32_t(d.group - scene.draw_groups().data()));
-        vkCmdDrawIndexed(cmd, mesh.index_count, 1, mesh.first_index, mesh.vertex_offset,
+        vkCmdDrawIndexed(cmd, mesh.index_count, d.count, mesh.first_index, mesh.vertex_offset,
                          d.instance);
         if (queries) queries->end(cmd);
-        if (hooks.log) hooks.log->add(d.instance, 1);
+        if (hooks.log) hooks.log->add(d.instance, d.count);
         ++counts.draws;
-        ++counts.instances;
+        counts.instances += d.count;
     }
     return counts;
 }

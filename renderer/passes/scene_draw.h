@@ -22,7 +22,8 @@ namespace ds::passes {
 // Which vertex attributes the vertex shader reads: unread ones draw performance warnings.
 enum class VertexInputs : uint8_t {
     All,         // position, normal, uv0, tangent (shaders/common/scene_vertex.glsl)
-    PositionUv,  // shaders/shadow.vert
+    PositionUv,  // shaders/shadow.vert; the masked depth-only prepass (SCENE_VARYINGS=1)
+    Position,    // the opaque depth-only prepass (SCENE_VARYINGS=0)
 };
 
 // Pipeline builder with the scene's vertex layout; `frag` may be empty (depth only).
@@ -80,10 +81,11 @@ DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
                        std::span<const scene::AlphaMode> modes, Decals decals,
                        std::optional<VkCullModeFlags> cull = std::nullopt, DrawHooks hooks = {});
 
-// One instance, in the order it must be drawn.
+// One instance (or `count` consecutive instances of one group), in the order it must be drawn.
 struct InstanceDraw {
     uint32_t instance = 0;
     const scene::DrawGroup* group = nullptr;
+    uint32_t count = 1;
 };
 enum class DrawOrder { FrontToBack, BackToFront };
 // Every instance whose alpha mode is in `modes`, ordered by the distance of its bounds'
@@ -91,10 +93,16 @@ enum class DrawOrder { FrontToBack, BackToFront };
 std::vector<InstanceDraw> sort_by_distance(const GpuScene& scene, glm::vec3 camera,
                                            std::span<const scene::AlphaMode> modes, DrawOrder order,
                                            Decals decals);
+// Every selected group as one instanced draw, nearest first by its nearest instance's centre
+// (the group index breaks ties): front to back at the granularity of draw calls, for a pass
+// whose fragments cost less than extra draws (the Z-only prepass).
+std::vector<InstanceDraw> sort_groups_front_to_back(const GpuScene& scene, glm::vec3 camera,
+                                                    std::span<const scene::AlphaMode> modes,
+                                                    Decals decals);
 // Every BLEND instance, back to front (the order blending needs).
 std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera,
                                              Decals decals);
-// Draws them one instance at a time (the order is per instance, not per group).
+// Draws them in order, each its `count` instances (the order is per draw, not per group).
 DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLayout layout,
                        std::span<const InstanceDraw> draws, DrawHooks hooks = {});
 

@@ -272,6 +272,14 @@ SettingsRegistry::SettingsRegistry() {
                   "depth prepass; off: forward writes depth with GREATER (gtao and "
                   "contact_shadows need the prepass and are skipped)",
                   I::Nothing),
+        // Which pipelines the prepass has; forward, GTAO and contact shadows adapt (DESIGN.md
+        // "As built (issue 14: prepass_mode)").
+        enum_knob("prepass_mode", "prepass and depth", {"gbuffer", "depth"},
+                  "prepass on: gbuffer writes depth, normals and roughness (forward reads them); "
+                  "depth is Z only (opaque: no fragment stage, masked: the alpha test), forward "
+                  "computes normals and roughness itself and gtao / contact_shadows read normals "
+                  "reconstructed from depth (normals_from_depth)",
+                  I::Nothing),
         enum_knob("depth_compare", "prepass and depth", {"equal", "greater_or_equal"},
                   "forward pass depth test against the prepass depth (prepass on)", I::Nothing),
         bool_knob("masked_split", "prepass and depth", true,
@@ -279,8 +287,9 @@ SettingsRegistry::SettingsRegistry() {
                   "for all geometry (loses early-Z)",
                   I::Nothing),
         bool_knob("prepass_sort", "prepass and depth", true,
-                  "prepass draws opaque and masked instances front to back (off: instanced "
-                  "groups in the scene's authored order, every hidden layer shaded)",
+                  "prepass draws opaque and masked instances front to back (prepass_mode=depth: "
+                  "whole instanced groups, by their nearest instance; off: instanced groups in "
+                  "the scene's authored order, every hidden layer shaded)",
                   I::Nothing),
         bool_knob("invariant", "prepass and depth", true,
                   "off: forward computes gl_Position with a different but mathematically equal "

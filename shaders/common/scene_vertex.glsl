@@ -24,18 +24,32 @@
 #define PIXEL_HISTORY 0
 #endif
 
+// SCENE_VARYINGS (prepass_mode=depth): what is handed to the fragment stage besides the flat
+// extras above. 2 (default) world position, normal, uv, tangent; 1 uv only (the masked
+// depth-only prepass: its alpha test); 0 nothing (the opaque depth-only prepass, which has
+// no fragment stage, or one that only counts or writes surface_id). The pipeline then
+// fetches only the attributes read (VertexInputs). gl_Position is the same expression and
+// `invariant` either way, which GLSL guarantees bit-identical across shaders.
+#ifndef SCENE_VARYINGS
+#define SCENE_VARYINGS 2
+#endif
+
 #include "bindings.glsl"
 #include "count_draws.glsl"
 
 layout(location = 0) in vec3 in_position;
-layout(location = 1) in vec3 in_normal;
+#if SCENE_VARYINGS >= 1
 layout(location = 2) in vec2 in_uv0;
+layout(location = 2) out vec2 out_uv0;
+#endif
+#if SCENE_VARYINGS >= 2
+layout(location = 1) in vec3 in_normal;
 layout(location = 3) in vec4 in_tangent;
 
 layout(location = 0) out vec3 out_world_position;
 layout(location = 1) out vec3 out_normal;
-layout(location = 2) out vec2 out_uv0;
 layout(location = 3) out vec4 out_tangent;
+#endif
 #if SURFACE_ID
 layout(location = 4) flat out uint out_surface_base;
 #endif
@@ -55,10 +69,14 @@ void main() {
 #else
     gl_Position = frame.view_projection * world;
 #endif
+#if SCENE_VARYINGS >= 2
     out_world_position = world.xyz;
     out_normal = mat3(instance.normal_matrix) * in_normal;
     out_tangent = vec4(mat3(instance.model) * in_tangent.xyz, in_tangent.w);
+#endif
+#if SCENE_VARYINGS >= 1
     out_uv0 = in_uv0;
+#endif
 #if SURFACE_ID
     out_surface_base = instance.surface_base;
 #endif

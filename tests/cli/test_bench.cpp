@@ -61,3 +61,45 @@ TEST(Bench, UiDrawsTheInspectorEveryFrameBesideThePlainFrame) {
     }
     EXPECT_EQ(json["runs"][3]["settings"]["msaa"], "4");
 }
+
+// prepass_mode (issue 14) through the real executable: bench's matrix and JSON settings echo,
+// capture's report.json, the settings listing and a refused value.
+TEST(Bench, PrepassModeMatrixCaptureListingAndRefusal) {
+    const auto dir = ds::test::fresh_dir("bench_prepass_mode");
+    const auto json_path = dir / "bench.json";
+    auto r = run_depthscope(
+        "bench --validate --scene atrium --size 64x36 --frames 2 --warmup 1 "
+        "--matrix prepass_mode=gbuffer,depth --set gtao=off --json " +
+        json_path.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("run 2: prepass_mode=depth"), std::string::npos) << r.out;
+    auto json = nlohmann::json::parse(ds::test::read_file(json_path));
+    ASSERT_EQ(json["runs"].size(), 2u);
+    EXPECT_EQ(json["runs"][0]["settings"]["prepass_mode"], "gbuffer");
+    EXPECT_EQ(json["runs"][1]["settings"]["prepass_mode"], "depth");
+    for (const auto& p : json["runs"][1]["passes"]) {
+        if (p["name"] != "depth_prepass") continue;
+        EXPECT_EQ(p["pipelines"][0]["name"], "depth_prepass opaque z-only");
+        EXPECT_EQ(p["pipelines"][0]["fragment_stage"], false);
+    }
+
+    auto capture = run_depthscope("capture --validate --resources none --scene atrium --size "
+                                  "64x36 --set prepass_mode=depth --out " +
+                                  (dir / "cap").string());
+    ASSERT_EQ(capture.exit_code, 0) << capture.err;
+    const auto report = nlohmann::json::parse(ds::test::read_file(dir / "cap" / "report.json"));
+    EXPECT_EQ(report["settings"]["prepass_mode"], "depth");
+
+    auto listing = run_depthscope("settings");
+    ASSERT_EQ(listing.exit_code, 0) << listing.err;
+    const size_t row = listing.out.find("\nprepass_mode ");
+    ASSERT_NE(row, std::string::npos) << listing.out;
+    const std::string line = listing.out.substr(row + 1, listing.out.find('\n', row + 1) - row - 1);
+    EXPECT_NE(line.find("gbuffer|depth"), std::string::npos) << line;
+
+    auto bad = run_depthscope("capture --set prepass_mode=zonly --out " + (dir / "bad").string());
+    EXPECT_EQ(bad.exit_code, 2) << bad.err;
+    EXPECT_EQ(ds::test::count_lines(bad.err), 1u) << bad.err;
+    EXPECT_EQ(bad.err.rfind("depthscope: error: ", 0), 0u) << bad.err;
+    EXPECT_NE(bad.err.find("gbuffer|depth"), std::string::npos) << bad.err;
+}

@@ -40,12 +40,15 @@ bool lost(const PipelineReport& r) {
     return r.early_z != "guaranteed";
 }
 
-// One line per pipeline the pass drew with: name, draws, early-Z verdict.
+// One line per pipeline the pass drew with: name, draws, early-Z verdict (or that it has no
+// fragment stage, which is early-Z by construction).
 void pipelines(const PassResult& pass) {
     for (const PipelineReport& r : pass.pipelines) {
         ImGui::Text("%s, %u draws:", r.name.c_str(), r.draws);
         ImGui::SameLine();
-        if (lost(r))
+        if (!r.fragment_stage)
+            ImGui::TextDisabled("no fragment stage (depth only)");
+        else if (lost(r))
             ImGui::TextColored(kLostColour, "early-Z %s", r.early_z.c_str());
         else
             ImGui::TextDisabled("early-Z %s", r.early_z.c_str());

@@ -124,17 +124,21 @@ TEST(Report, CountedPassesGiveRasterizedShadedDiscardedAndQuads) {
               (nlohmann::json{{"quads", 160}, {"lanes", 640}, {"lanes_per_shaded", 1.25}}));
 }
 
-// A geometry pass lists its pipelines (name, early-Z verdict, draws) in bind order; a pass
-// that bound none has no "pipelines" key.
+// A geometry pass lists its pipelines (name, early-Z verdict, draws, whether it has a fragment
+// stage) in bind order; a pass that bound none has no "pipelines" key.
 TEST(Report, PassesListTheirPipelinesOnlyWhereTheyDrew) {
     FrameResult frame = two_pass_frame();
-    frame.passes[0].pipelines = {{"depth_prepass opaque", "guaranteed", 12},
+    frame.passes[0].pipelines = {{"depth_prepass opaque z-only", "guaranteed", 12, false},
                                  {"depth_prepass mask", "lost: discard", 3}};
     const nlohmann::json passes = report_of(frame)["passes"];
-    EXPECT_EQ(passes[0]["pipelines"],
-              (nlohmann::json{
-                  {{"name", "depth_prepass opaque"}, {"early_z", "guaranteed"}, {"draws", 12}},
-                  {{"name", "depth_prepass mask"}, {"early_z", "lost: discard"}, {"draws", 3}}}));
+    EXPECT_EQ(passes[0]["pipelines"], (nlohmann::json{{{"name", "depth_prepass opaque z-only"},
+                                                       {"early_z", "guaranteed"},
+                                                       {"draws", 12},
+                                                       {"fragment_stage", false}},
+                                                      {{"name", "depth_prepass mask"},
+                                                       {"early_z", "lost: discard"},
+                                                       {"draws", 3},
+                                                       {"fragment_stage", true}}}));
     EXPECT_FALSE(passes[1].contains("pipelines"));
 }
 

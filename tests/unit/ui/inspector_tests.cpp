@@ -86,6 +86,33 @@ TEST_F(Inspector, SelectingAResourceShowsItDecoded) {
     }
 }
 
+// prepass_mode=depth (issue 14): the resource list is the graph's, so the G-buffer images are
+// simply not there; a viewer left on "normals" shows nothing and says nothing wrong; every
+// resource that is listed decodes, the reconstructed depth_normals included.
+TEST_F(Inspector, DepthPrepassModeListsOnlyItsOwnResources) {
+    auto ui = open("atrium");
+    ui->inspector().queue(ui::SelectResource{"normals"});
+    ui->inspector().queue(ui::SetSetting{"prepass_mode", "depth"});
+    ui->frame();
+    const FrameResult& f = ui->inspector().frame();
+    EXPECT_TRUE(ui->inspector().message().empty()) << ui->inspector().message();
+    EXPECT_FALSE(f.inspected) << "no normals in depth mode";
+    const std::vector<ResourceSummary> resources = f.resources;  // a copy
+    for (const char* absent : {"normals", "roughness"})
+        EXPECT_TRUE(std::none_of(resources.begin(), resources.end(), [&](const ResourceSummary& r) {
+            return r.name == absent;
+        })) << absent;
+    EXPECT_TRUE(has_pass(f, "normals_from_depth"));
+    for (const ResourceSummary& r : resources) {
+        if (!r.is_image) continue;
+        ui->inspector().queue(ui::SelectResource{r.name});
+        ui->frame();
+        const auto& shown = ui->inspector().frame().inspected;
+        ASSERT_TRUE(shown) << r.name;
+        EXPECT_EQ(shown->name, r.name);
+    }
+}
+
 TEST_F(Inspector, SettingsChangeTheRendererAndFramesKeepComing) {
     auto ui = open("atrium");
     ui::Inspector& in = ui->inspector();
