@@ -9,7 +9,7 @@ using graph::Access;
 AoTemporalPass::AoTemporalPass(const PassServices& services)
     : kernel_(services, kShader,
               {KernelBinding::Sampled, KernelBinding::Sampled, KernelBinding::Sampled,
-               KernelBinding::Storage, KernelBinding::Storage},
+               KernelBinding::Sampled, KernelBinding::Storage, KernelBinding::Storage},
               sizeof(Push)) {
     vk::DestroyList nothing_in_flight;
     rebuild_pipelines(nothing_in_flight);
@@ -27,7 +27,7 @@ std::optional<std::string> AoTemporalPass::skipped(const FrameInputs& in) const 
 void AoTemporalPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     if (!res.ao_filtered.valid()) return;
     struct Data {
-        graph::ImageHandle depth, current, out;
+        graph::ImageHandle depth, normals, current, out;
         graph::HistoryImage history;
     };
     const Data& data = graph.add_pass<Data>(
@@ -41,6 +41,7 @@ void AoTemporalPass::add(graph::RenderGraph& graph, const FrameInputs& in, Frame
                                                         .semantic = graph::Semantic::AO});
             b.read(res.frame_uniforms, Access::UniformRead);
             d.depth = b.read(res.depth, Access::Sampled);
+            d.normals = b.read(res.normals, Access::Sampled);
             d.current = b.read(res.ao_filtered, Access::Sampled);
             b.read(d.history.previous, Access::Sampled);
             b.write(d.out, Access::StorageWrite);
@@ -50,9 +51,10 @@ void AoTemporalPass::add(graph::RenderGraph& graph, const FrameInputs& in, Frame
                                                                   const Data& d) {
             last_history_valid_ = ctx.history_valid(d.history);
             const Push push{last_history_valid_ ? 1u : 0u, params_.history_weight,
-                            params_.depth_tolerance};
+                            params_.depth_tolerance, params_.plane_tolerance};
             const BoundImage images[] = {
                 {ctx.view(d.depth), ctx.layout(d.depth)},
+                {ctx.view(d.normals), ctx.layout(d.normals)},
                 {ctx.view(d.current), ctx.layout(d.current)},
                 {ctx.view(d.history.previous), ctx.layout(d.history.previous)},
                 {ctx.view(d.out), ctx.layout(d.out)},

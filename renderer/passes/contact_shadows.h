@@ -1,5 +1,5 @@
 #pragma once
-// Screen-space contact shadows (shaders/contact_shadows.comp): a 16-step ray march from each
+// Screen-space contact shadows (shaders/contact_shadows.comp): an 8-step ray march from each
 // pixel towards the sun against the prepass depth, with a thickness test. Writes
 // FrameResources::contact_shadows, R8_UNORM at full resolution, 1 = lit, 0 = occluded.
 #include <cstdint>
@@ -21,7 +21,7 @@ class ContactShadowsPass final : public FramePass {
 
     static constexpr const char* kShader = "contact_shadows.comp";
     static constexpr VkFormat kFormat = VK_FORMAT_R8_UNORM;
-    static constexpr uint32_t kSteps = 16;
+    static constexpr uint32_t kSteps = 8;
 
     explicit ContactShadowsPass(const PassServices& services);  // builds the pipeline
     const char* name() const override { return "contact_shadows"; }
