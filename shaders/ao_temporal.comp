@@ -123,7 +123,11 @@ void main() {
     }
     RayBasis rays = ray_basis(px, frame.viewport.zw);
     vec3 P = rays.ray * linear_depth(d);
-    float current = upsample_current(px, P, rays);
+    // On the 8-bit grid of ao_out, as ao_filtered was when it was R8: under a still camera
+    // the blend of a value with its own 16-bit history then rounds back to the same byte, so
+    // every later frame is bit-identical to the first (captures, compare and replay rely on
+    // it). Unquantised, a value next to a rounding boundary could flip by one step.
+    float current = round(upsample_current(px, P, rays) * 255.0) / 255.0;
     float result = current;
     if (params.history_valid != 0u) {
         // World position through the rigid view transform's inverse (transpose of the
