@@ -1,12 +1,13 @@
 #pragma once
-// Upsampling and temporal accumulation of the filtered AO (shaders/ao_temporal.comp):
-// ao_filtered (packed, at gtao's resolution) + the graph history "ao_history" ->
-// FrameResources::ao (R8_UNORM at full resolution, what forward reads) and the next history
-// (R16G16_SFLOAT: AO, view distance). Upsamples with bilinear weights times tangent-plane and
-// normal agreement (no AO across depth edges or corners); reprojects with
-// previous_view_projection, drops history taps of another surface (distance mismatch), blends
-// the rest with history_weight. When the graph reports the history invalid (first frame,
-// resize, camera cut) the output is the current value.
+// Temporal accumulation and upsampling of the filtered AO (shaders/ao_temporal.comp), two
+// dispatches: ao_filtered (packed, at gtao's resolution) + the graph history "ao_history"
+// (packed alike: R16G16B16A16_SFLOAT AO, view distance, octahedral view normal, at the same
+// resolution) -> the current history, reprojected with previous_view_projection, taps of
+// another surface (distance mismatch) dropped, the rest blended with history_weight; then the
+// current history -> FrameResources::ao (R8_UNORM at full resolution, what forward reads),
+// bilinear weights times tangent-plane and normal agreement (no AO across depth edges or
+// corners). When the graph reports the history invalid (first frame, resize, camera cut) the
+// history is the current value.
 #include "renderer/graph/graph.h"
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame.h"
@@ -27,17 +28,19 @@ class AoTemporalPass final : public FramePass {
     static constexpr const char* kShader = "ao_temporal.comp";
     static constexpr const char* kHistoryName = "ao_history";
     static constexpr VkFormat kFormat = VK_FORMAT_R8_UNORM;
-    static constexpr VkFormat kHistoryFormat = VK_FORMAT_R16G16_SFLOAT;
+    static constexpr VkFormat kHistoryFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
-    explicit AoTemporalPass(const PassServices& services);  // builds the pipeline
+    explicit AoTemporalPass(const PassServices& services);  // builds the pipelines
     const char* name() const override { return "ao_temporal"; }
-    void rebuild_pipelines(
-        vk::DestroyList& retired) override;  // fail-safe (ComputeKernel::rebuild)
+    // Fail-safe: both dispatches' kernels compile first; on any error both keep theirs.
+    void rebuild_pipelines(vk::DestroyList& retired) override;
     std::optional<std::string> skipped(const FrameInputs& in) const override;
 
-    // Declares "ao_temporal" when resources.ao_filtered is valid: reads depth, normals,
-    // ao_filtered and the previous history (sampled), the frame uniforms; writes resources.ao
-    // and the current history. The graph swaps the history pair after the frame.
+    // Declares "ao_temporal" when resources.ao_filtered is valid: reads ao_filtered and the
+    // previous history (sampled), the frame uniforms, depth and normals (sampled, for the
+    // upsample); writes the current history (at ao_filtered's size; written, then sampled:
+    // GENERAL layout, a barrier between the dispatches) and resources.ao. The graph swaps the
+    // history pair after the frame.
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& resources) override;
 
     Params& params() { return params_; }
@@ -52,7 +55,8 @@ class AoTemporalPass final : public FramePass {
         float plane_tolerance;
     };
 
-    ComputeKernel kernel_;
+    ComputeKernel accumulate_;  // at AO resolution
+    ComputeKernel upsample_;    // at full resolution
     Params params_;
     bool last_history_valid_ = false;
 };
