@@ -23,7 +23,9 @@ class ContactShadowsPass final : public FramePass {
     static constexpr VkFormat kFormat = VK_FORMAT_R8_UNORM;
     static constexpr uint32_t kSteps = 8;
 
-    explicit ContactShadowsPass(const PassServices& services);  // builds the pipeline
+    // Builds the pipeline. steps: more than the default makes a reference (the tests hold the
+    // default to a tolerance against one).
+    explicit ContactShadowsPass(const PassServices& services, uint32_t steps = kSteps);
     const char* name() const override { return "contact_shadows"; }
     void rebuild_pipelines(
         vk::DestroyList& retired) override;  // fail-safe (ComputeKernel::rebuild)
@@ -38,6 +40,7 @@ class ContactShadowsPass final : public FramePass {
 
   private:
     ComputeKernel kernel_;
+    uint32_t steps_;
     Params params_;
 };
 
