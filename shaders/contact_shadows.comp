@@ -8,7 +8,7 @@
 // behind a thin pole is not shadowed by it). Output 1 = lit, 0 = occluded.
 
 #ifndef STEPS
-#define STEPS 16
+#define STEPS 8
 #endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -55,15 +55,21 @@ void main() {
     vec4 clip_end = frame.projection * vec4(origin + L * params.ray_length, 1.0);
     // Per-pixel start offset (deterministic): banding from the fixed step turns into noise.
     float jitter = interleaved_gradient_noise(vec2(px));
+    // Only x, y and w are needed; pixels = (xy / w * 0.5 + 0.5) * size = xy * scale / w + half.
+    vec3 start = vec3(clip_start.xy * 0.5 * vec2(full_size), clip_start.w);
+    vec3 step = vec3(clip_end.xy * 0.5 * vec2(full_size), clip_end.w) - start;
+    vec2 half_size = 0.5 * vec2(full_size);
+    LinearDepth depth_consts = linear_depth_consts();
     float lit = 1.0;
     for (int i = 0; i < STEPS; ++i) {
-        vec4 clip = mix(clip_start, clip_end, (float(i) + jitter) / float(STEPS));
-        if (clip.w <= 0.0) break;  // behind the camera
-        ivec2 q = ivec2(floor((clip.xy / clip.w * 0.5 + 0.5) * vec2(full_size)));
+        vec3 clip = start + step * ((float(i) + jitter) / float(STEPS));
+        if (clip.z <= 0.0) break;  // behind the camera
+        ivec2 q = ivec2(floor(clip.xy / clip.z + half_size));
         if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, full_size))) break;
         float dq = texelFetch(depth_tex, q, 0).r;
         if (is_background(dq)) continue;
-        float behind = clip.w - linear_depth(dq);  // > 0: the ray is behind the visible surface
+        // > 0: the ray is behind the visible surface
+        float behind = clip.z - linear_depth(depth_consts, dq);
         if (behind > slack && behind < params.thickness) {
             lit = 0.0;
             break;

@@ -13,7 +13,7 @@
 // stands for one full-resolution pixel (ao_source_pixel) and samples full-resolution depth.
 
 #ifndef SLICES
-#define SLICES 3  // slice directions per texel (x16 rotations after the spatial filter)
+#define SLICES 2  // slice directions per texel (x16 rotations after the spatial filter)
 #endif
 #ifndef STEPS
 #define STEPS 4  // depth samples per side of a slice
@@ -26,10 +26,12 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 1, binding = 0) uniform sampler2D depth_tex;   // prepass depth
 layout(set = 1, binding = 1) uniform sampler2D normal_tex;  // world normals, n * 0.5 + 0.5
-// R16F, not UNORM: with few slices a pixel's visibility overshoots 1 as often as it falls
-// short on an open plane (only the average over the 4x4 rotations is 1), so clamping before
+// Packed for ao_spatial and ao_temporal, whose taps are then one fetch each: r visibility, g
+// view distance of the source pixel (0: sky), ba its view-space normal (oct_encode). Float,
+// not UNORM: with few slices a pixel's visibility overshoots 1 as often as it falls short on
+// an open plane (only the average over the 4x4 rotations is 1), so clamping before
 // ao_spatial's average would bias open surfaces dark.
-layout(set = 1, binding = 2, r16f) uniform writeonly image2D ao_out;
+layout(set = 1, binding = 2, rgba16f) uniform writeonly image2D ao_out;
 
 layout(push_constant) uniform Params {
     float radius;         // world-space radius (m) in which occluders count
@@ -41,11 +43,12 @@ layout(push_constant) uniform Params {
 // The normal as one slice sees it: n is its signed angle from V in the slice plane.
 struct Slice {
     float cos_n, sin_n;
-    float proj_len;  // length of the normal projected onto the slice plane
+    float inv_proj_len;  // 1 / length of the normal projected onto the slice plane
 };
 
 ivec2 g_full_size;
 RayBasis g_rays;  // around the centre pixel
+LinearDepth g_depth;
 float g_falloff_mul, g_falloff_add;
 
 // Cosine of the horizon angle (from V, in the slice) that pixel q sets on side `side` (+1:
@@ -60,10 +63,12 @@ float g_falloff_mul, g_falloff_add;
 float horizon_cos(ivec2 q, ivec2 src, vec3 P, vec3 N, Slice sl, float side, float low) {
     if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, g_full_size))) return low;
     float d = texelFetch(depth_tex, q, 0).r;
-    vec3 delta = basis_ray(g_rays, vec2(q - src)) * linear_depth(d) - P;  // sky: weight 0
-    float dist = max(length(delta), 1e-6);
-    float weight = clamp(dist * g_falloff_mul + g_falloff_add, 0.0, 1.0);
-    float sin_e = clamp(dot(delta, N) / (dist * sl.proj_len), -1.0, 1.0);
+    vec3 delta = basis_ray(g_rays, vec2(q - src)) * linear_depth(g_depth, d) - P;  // sky: weight 0
+    // One inverse square root gives both the distance and the normalisation.
+    float dist2 = max(dot(delta, delta), 1e-12);
+    float inv_dist = inversesqrt(dist2);
+    float weight = clamp(dist2 * inv_dist * g_falloff_mul + g_falloff_add, 0.0, 1.0);
+    float sin_e = clamp(dot(delta, N) * inv_dist * sl.inv_proj_len, -1.0, 1.0);
     float cos_e = sqrt(1.0 - sin_e * sin_e);
     // cos(n + side * (pi/2 - e)): the tangent's angle moved up by the elevation.
     float shc = sl.cos_n * sin_e - side * sl.sin_n * cos_e;
@@ -83,8 +88,10 @@ float slice_visibility(vec2 omega, ivec2 src, vec3 P, vec3 V, vec3 N, float radi
     float proj_len = length(proj_n);
     if (proj_len < 1e-4) return 1.0;  // normal along the slice normal: the slice sees nothing
     float cos_n = clamp(dot(proj_n, V) / proj_len, 0.0, 1.0);
-    float n = (dot(ortho, proj_n) < 0.0 ? -1.0 : 1.0) * acos(cos_n);  // signed, towards +omega
-    Slice sl = Slice(cos_n, sin(n), proj_len);
+    // n, the normal's signed angle from V (positive towards +omega), enters only through its
+    // cosine and sine: no angle, no sin(acos()).
+    float n_sign = dot(ortho, proj_n) < 0.0 ? -1.0 : 1.0;
+    Slice sl = Slice(cos_n, n_sign * sqrt(1.0 - cos_n * cos_n), 1.0 / proj_len);
 
     // Start from the tangent plane: a surface never occludes itself.
     float low_pos = -sl.sin_n, low_neg = sl.sin_n;  // cos(n + pi/2), cos(n - pi/2)
@@ -101,13 +108,20 @@ float slice_visibility(vec2 omega, ivec2 src, vec3 P, vec3 V, vec3 N, float radi
         hc_neg = max(hc_neg, horizon_cos(ivec2(floor(centre - offset)), src, P, N, sl, -1.0,
                                          low_neg));
     }
-    // Horizon angles from V (negative side first), limited to the hemisphere around n.
-    float h0 = n + clamp(-acos(clamp(hc_neg, -1.0, 1.0)) - n, -kHalfPi, kHalfPi);
-    float h1 = n + clamp(acos(clamp(hc_pos, -1.0, 1.0)) - n, -kHalfPi, kHalfPi);
+    // Horizon angles from V (negative side first). The tangent-plane start keeps each within
+    // the hemisphere around n (hc_pos >= cos(n + pi/2) gives h1 <= n + pi/2, and likewise
+    // h0 >= n - pi/2), so no clamp to it is needed; h1 in [0, pi], h0 in [-pi, 0].
+    hc_neg = clamp(hc_neg, -1.0, 1.0);
+    hc_pos = clamp(hc_pos, -1.0, 1.0);
+    float h0 = -fast_acos(hc_neg), h1 = fast_acos(hc_pos);
+    float sin_h0 = -sqrt(1.0 - hc_neg * hc_neg), sin_h1 = sqrt(1.0 - hc_pos * hc_pos);
     // Closed form of the cosine-weighted arc integral (the paper's eq. 10), weighted by the
-    // projected normal's length so the slices average to the hemisphere integral.
-    float arc0 = cos_n + 2.0 * h0 * sl.sin_n - cos(2.0 * h0 - n);
-    float arc1 = cos_n + 2.0 * h1 * sl.sin_n - cos(2.0 * h1 - n);
+    // projected normal's length so the slices average to the hemisphere integral. Its
+    // cos(2h - n) expanded through cos h, sin h, cos n, sin n: no library cosine per slice.
+    float cos_2h0_n = (2.0 * hc_neg * hc_neg - 1.0) * cos_n + 2.0 * sin_h0 * hc_neg * sl.sin_n;
+    float cos_2h1_n = (2.0 * hc_pos * hc_pos - 1.0) * cos_n + 2.0 * sin_h1 * hc_pos * sl.sin_n;
+    float arc0 = cos_n + 2.0 * h0 * sl.sin_n - cos_2h0_n;
+    float arc1 = cos_n + 2.0 * h1 * sl.sin_n - cos_2h1_n;
     return proj_len * 0.25 * (arc0 + arc1);
 }
 
@@ -120,10 +134,11 @@ void main() {
     ivec2 src = ao_source_pixel(px, ao_size, g_full_size);
     float d = texelFetch(depth_tex, src, 0).r;
     if (is_background(d)) {
-        imageStore(ao_out, px, vec4(1.0));  // sky is never occluded
+        imageStore(ao_out, px, vec4(1.0, 0.0, 0.0, 0.0));  // sky is never occluded
         return;
     }
     g_rays = ray_basis(src, 1.0 / vec2(g_full_size));
+    g_depth = linear_depth_consts();
     vec3 P = g_rays.ray * linear_depth(d);
     vec3 V = normalize(-P);
     vec3 N = world_to_view_dir(decode_normal(texelFetch(normal_tex, src, 0).xyz));
@@ -131,8 +146,9 @@ void main() {
     // Pixels per metre at this distance (full resolution).
     float pixels_per_m = 0.5 * float(g_full_size.y) * abs(frame.projection[1][1]) / -P.z;
     float radius_px = min(params.radius * pixels_per_m, params.max_radius_px);
+    vec4 packed_surface = vec4(1.0, -P.z, oct_encode(N));
     if (radius_px < 1.5) {  // the radius covers about one pixel: nothing to sample
-        imageStore(ao_out, px, vec4(1.0));
+        imageStore(ao_out, px, packed_surface);
         return;
     }
     float falloff_range = max(params.falloff * params.radius, 1e-4);
@@ -144,11 +160,19 @@ void main() {
     float rotation = (float(k) + 0.5) / 16.0;
     float jitter = (float((k * 5u + 3u) & 15u) + 0.5) / 16.0;  // another order of the tile
 
+    // Slice k's direction is at angle (k + rotation) * pi / SLICES: one sine and cosine for
+    // the first, then a fixed rotation per slice.
+    float phi = rotation * kPi / float(SLICES);
+    vec2 omega = vec2(cos(phi), sin(phi));
+    const float kStep = kPi / float(SLICES);
+    const mat2 kNext = mat2(cos(kStep), sin(kStep), -sin(kStep), cos(kStep));
     float visibility = 0.0;
     for (int slice = 0; slice < SLICES; ++slice) {
-        float phi = (float(slice) + rotation) * kPi / float(SLICES);
-        visibility += slice_visibility(vec2(cos(phi), sin(phi)), src, P, V, N, radius_px, jitter);
+        visibility += slice_visibility(omega, src, P, V, N, radius_px, jitter);
+        omega = kNext * omega;
     }
     visibility = max(visibility / float(SLICES), 0.0);  // > 1 allowed, see ao_out
-    imageStore(ao_out, px, vec4(pow(visibility, params.power)));
+    if (params.power != 1.0) visibility = pow(visibility, params.power);
+    packed_surface.x = visibility;
+    imageStore(ao_out, px, packed_surface);
 }

@@ -10,8 +10,7 @@ namespace {
 
 ComputeKernel make_blur_kernel(const PassServices& services) {
     return ComputeKernel(services, AoSpatialPass::kShader,
-                         {KernelBinding::Sampled, KernelBinding::Sampled, KernelBinding::Sampled,
-                          KernelBinding::Storage},
+                         {KernelBinding::Sampled, KernelBinding::Storage},
                          sizeof(AoSpatialPass::Params));
 }
 
@@ -39,22 +38,19 @@ std::optional<std::string> AoSpatialPass::skipped(const FrameInputs& in) const {
 void AoSpatialPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     if (!res.ao_raw.valid()) return;
     struct Data {
-        graph::ImageHandle depth, normals, raw, mid, out;
+        graph::ImageHandle raw, mid, out;
     };
     const Data& data = graph.add_pass<Data>(
         "ao_spatial",
         [&](graph::PassBuilder& b, Data& d) {
-            const VkExtent2D full = b.output_extent(), raw = b.extent(res.ao_raw);
-            d.mid = b.create_image(kIntermediateName,
-                                   {.format = kIntermediateFormat,
-                                    .size = graph::ImageSize::fixed(full.width, raw.height),
-                                    .semantic = graph::Semantic::AO});
-            d.out = b.create_image("ao_filtered", {.format = kFormat,
-                                                   .size = graph::ImageSize::relative(1.0f),
-                                                   .semantic = graph::Semantic::AO});
+            const VkExtent2D raw = b.extent(res.ao_raw);
+            const graph::ImageSize size = graph::ImageSize::fixed(raw.width, raw.height);
+            d.mid = b.create_image(
+                kIntermediateName,
+                {.format = kIntermediateFormat, .size = size, .semantic = graph::Semantic::AO});
+            d.out = b.create_image(
+                "ao_filtered", {.format = kFormat, .size = size, .semantic = graph::Semantic::AO});
             b.read(res.frame_uniforms, Access::UniformRead);
-            d.depth = b.read(res.depth, Access::Sampled);
-            d.normals = b.read(res.normals, Access::Sampled);
             d.raw = b.read(res.ao_raw, Access::Sampled);
             b.write(d.mid, Access::StorageWrite);
             b.read(d.mid, Access::Sampled);
@@ -62,15 +58,13 @@ void AoSpatialPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameR
         },
         [this, frame_set = in.frame_set, frame = in.frame_number](graph::PassContext& ctx,
                                                                   const Data& d) {
-            const BoundImage depth{ctx.view(d.depth), ctx.layout(d.depth)};
-            const BoundImage normals{ctx.view(d.normals), ctx.layout(d.normals)};
             const BoundImage mid{ctx.view(d.mid), ctx.layout(d.mid)};  // GENERAL: both uses
-            const BoundImage first[] = {depth, normals, {ctx.view(d.raw), ctx.layout(d.raw)}, mid};
+            const BoundImage first[] = {{ctx.view(d.raw), ctx.layout(d.raw)}, mid};
             horizontal_.dispatch(ctx.cmd(), frame_set, frame, first, &params_, ctx.extent(d.mid));
             // The graph orders passes; inside this one, the vertical dispatch reads what the
             // horizontal one wrote.
             ctx.dependency(d.mid, Access::StorageWrite, Access::Sampled);
-            const BoundImage second[] = {depth, normals, mid, {ctx.view(d.out), ctx.layout(d.out)}};
+            const BoundImage second[] = {mid, {ctx.view(d.out), ctx.layout(d.out)}};
             vertical_.dispatch(ctx.cmd(), frame_set, frame, second, &params_, ctx.extent(d.out));
         },
         graph::PassKind::Compute);

@@ -8,16 +8,17 @@ namespace ds::passes {
 
 using graph::Access;
 
-ContactShadowsPass::ContactShadowsPass(const PassServices& services)
+ContactShadowsPass::ContactShadowsPass(const PassServices& services, uint32_t steps)
     : kernel_(services, kShader,
               {KernelBinding::Sampled, KernelBinding::Sampled, KernelBinding::Storage},
-              sizeof(Params)) {
+              sizeof(Params)),
+      steps_(steps) {
     vk::DestroyList nothing_in_flight;
     rebuild_pipelines(nothing_in_flight);
 }
 
 void ContactShadowsPass::rebuild_pipelines(vk::DestroyList& retired) {
-    kernel_.rebuild(retired, {{"STEPS", std::to_string(kSteps)}});
+    kernel_.rebuild(retired, {{"STEPS", std::to_string(steps_)}});
 }
 
 std::optional<std::string> ContactShadowsPass::skipped(const FrameInputs& in) const {

@@ -1,5 +1,5 @@
 #pragma once
-// Screen-space contact shadows (shaders/contact_shadows.comp): a 16-step ray march from each
+// Screen-space contact shadows (shaders/contact_shadows.comp): an 8-step ray march from each
 // pixel towards the sun against the prepass depth, with a thickness test. Writes
 // FrameResources::contact_shadows, R8_UNORM at full resolution, 1 = lit, 0 = occluded.
 #include <cstdint>
@@ -21,9 +21,11 @@ class ContactShadowsPass final : public FramePass {
 
     static constexpr const char* kShader = "contact_shadows.comp";
     static constexpr VkFormat kFormat = VK_FORMAT_R8_UNORM;
-    static constexpr uint32_t kSteps = 16;
+    static constexpr uint32_t kSteps = 8;
 
-    explicit ContactShadowsPass(const PassServices& services);  // builds the pipeline
+    // Builds the pipeline. steps: more than the default makes a reference (the tests hold the
+    // default to a tolerance against one).
+    explicit ContactShadowsPass(const PassServices& services, uint32_t steps = kSteps);
     const char* name() const override { return "contact_shadows"; }
     void rebuild_pipelines(
         vk::DestroyList& retired) override;  // fail-safe (ComputeKernel::rebuild)
@@ -38,6 +40,7 @@ class ContactShadowsPass final : public FramePass {
 
   private:
     ComputeKernel kernel_;
+    uint32_t steps_;
     Params params_;
 };
 

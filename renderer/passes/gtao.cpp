@@ -9,11 +9,14 @@ namespace ds::passes {
 
 using graph::Access;
 
-GtaoPass::GtaoPass(const PassServices& services, float resolution_scale)
+GtaoPass::GtaoPass(const PassServices& services, float resolution_scale, uint32_t slices,
+                   uint32_t steps)
     : kernel_(services, kShader,
               {KernelBinding::Sampled, KernelBinding::Sampled, KernelBinding::Storage},
               sizeof(Params)),
-      scale_(resolution_scale) {
+      scale_(resolution_scale),
+      slices_(slices),
+      steps_(steps) {
     if (!(scale_ > 0.0f && scale_ <= 1.0f))
         throw Error("gtao: resolution scale " + std::to_string(scale_) + " is not in (0, 1]");
     vk::DestroyList nothing_in_flight;
@@ -22,7 +25,7 @@ GtaoPass::GtaoPass(const PassServices& services, float resolution_scale)
 
 void GtaoPass::rebuild_pipelines(vk::DestroyList& retired) {
     kernel_.rebuild(retired,
-                    {{"SLICES", std::to_string(kSlices)}, {"STEPS", std::to_string(kSteps)}});
+                    {{"SLICES", std::to_string(slices_)}, {"STEPS", std::to_string(steps_)}});
 }
 
 std::optional<std::string> GtaoPass::skipped(const FrameInputs& in) const {

@@ -1,9 +1,11 @@
 #pragma once
 // GTAO: horizon-based ground-truth ambient occlusion from the prepass depth and normals
-// (shaders/gtao.comp). Writes FrameResources::ao_raw, R16_SFLOAT visibility (1 = unoccluded;
-// a single pixel may exceed 1: only the spatial average is bounded, see gtao.comp), at
-// `resolution_scale` of the output (default half: a quarter of the work on lavapipe;
-// ao_spatial upsamples edge-aware to full resolution).
+// (shaders/gtao.comp). Writes FrameResources::ao_raw, R16G16B16A16_SFLOAT: r visibility (1 =
+// unoccluded; a single texel may exceed 1: only the spatial average is bounded, see
+// gtao.comp), g the view distance (0: sky), ba the octahedral view-space normal of the pixel
+// the texel stands for, so that the filters' taps are one fetch each. At `resolution_scale`
+// of the output (default half: a quarter of the work on lavapipe; ao_spatial filters at this
+// resolution and ao_temporal upsamples edge-aware to full resolution).
 #include <cstdint>
 
 #include "renderer/graph/graph.h"
@@ -23,13 +25,15 @@ class GtaoPass final : public FramePass {
     };
 
     static constexpr const char* kShader = "gtao.comp";
-    static constexpr VkFormat kFormat = VK_FORMAT_R16_SFLOAT;
-    static constexpr uint32_t kSlices = 3;  // x16 rotations of the 4x4 pattern after ao_spatial
+    static constexpr VkFormat kFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    static constexpr uint32_t kSlices = 2;  // x16 rotations of the 4x4 pattern after ao_spatial
     static constexpr uint32_t kSteps = 4;   // per side of a slice
 
     // Builds the pipeline (throws shader::ShaderError / ds::Error). resolution_scale: 0.5
-    // (half, the default) or 1 (full).
-    explicit GtaoPass(const PassServices& services, float resolution_scale = 0.5f);
+    // (half, the default) or 1 (full). slices / steps: more than the defaults make a
+    // high-quality reference (the tests compare the defaults against one).
+    explicit GtaoPass(const PassServices& services, float resolution_scale = 0.5f,
+                      uint32_t slices = kSlices, uint32_t steps = kSteps);
 
     // Fail-safe: see ComputeKernel::rebuild.
     const char* name() const override { return "gtao"; }
@@ -46,6 +50,7 @@ class GtaoPass final : public FramePass {
   private:
     ComputeKernel kernel_;
     float scale_;
+    uint32_t slices_, steps_;
     Params params_;
 };
 

@@ -21,6 +21,25 @@ vec3 view_ray(vec2 uv) {
     return p.xyz / -p.z;  // (p.xyz / p.w) / (-p.z / p.w)
 }
 
+// linear_depth() with the depth convention's branch and constants taken out of a loop: a
+// shader that converts many depth samples makes one of these, then each sample is one
+// multiply-add and one divide (the ternary in linear_depth() makes the compiler evaluate both
+// conventions' divides per sample). The same arithmetic as linear_depth() for either.
+struct LinearDepth {
+    float nf;     // znear * zfar
+    float a, b;   // distance = nf / (a + d * b)
+};
+
+LinearDepth linear_depth_consts() {
+    float n = frame.depth_params.x, f = frame.depth_params.y;
+    return frame.depth_params.z > 0.5 ? LinearDepth(n * f, n, f - n)   // reverse-Z
+                                      : LinearDepth(n * f, f, n - f);  // forward-Z
+}
+
+float linear_depth(LinearDepth c, float d) {
+    return c.nf / (c.a + d * c.b);
+}
+
 vec3 view_position(vec2 uv, float d) {
     return view_ray(uv) * linear_depth(d);
 }
@@ -64,6 +83,32 @@ vec3 decode_normal(vec3 encoded) {
     vec3 n = encoded * 2.0 - 1.0;
     float len2 = dot(n, n);
     return len2 > 1e-8 ? n * inversesqrt(len2) : vec3(0.0, 1.0, 0.0);
+}
+
+// acos(x), x in [-1, 1], to within 7e-5 rad (Abramowitz & Stegun 4.4.45): one square root
+// and three multiply-adds, where a library acos costs several times that per lane on a CPU
+// device. GTAO's horizon angles need far less precision than that.
+float fast_acos(float x) {
+    float a = abs(x);
+    float r = sqrt(1.0 - a) * (1.5707288 + a * (-0.2121144 + a * (0.0742610 + a * -0.0187293)));
+    return x >= 0.0 ? r : kPi - r;
+}
+
+// Octahedral encoding of a unit vector in two numbers in [-1, 1] (Cigolle et al. 2014): the
+// reduced-resolution AO images carry a view-space normal per texel in two channels, so a
+// filter tap is one fetch. Error well below 1e-3 in 16-bit floats.
+vec2 oct_encode(vec3 n) {
+    n /= abs(n.x) + abs(n.y) + abs(n.z);
+    vec2 p = n.xy;
+    if (n.z < 0.0) p = (1.0 - abs(p.yx)) * vec2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
+    return p;
+}
+
+vec3 oct_decode(vec2 e) {
+    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    float t = max(-n.z, 0.0);
+    n.xy += vec2(n.x >= 0.0 ? -t : t, n.y >= 0.0 ? -t : t);
+    return normalize(n);
 }
 
 // frame.view is rigid (rotation + translation), so its upper 3x3 transforms normals too.

@@ -26,6 +26,8 @@ uint32_t texel_size(VkFormat format) {
             return 2;
         case VK_FORMAT_R16G16_SFLOAT:
             return 4;
+        case VK_FORMAT_R16G16B16A16_SFLOAT:  // packed AO: r, g read back (AO, distance)
+            return 8;
         default:
             throw Error("read-back of format " + std::to_string(int(format)) + " not supported");
     }
@@ -37,12 +39,12 @@ HostImage decode(VkFormat format, VkExtent2D extent, const std::byte* data) {
     img.height = extent.height;
     const size_t n = size_t(extent.width) * extent.height;
     img.r.resize(n);
-    if (format == VK_FORMAT_R16G16_SFLOAT) img.g.resize(n);
+    if (format != VK_FORMAT_R8_UNORM && format != VK_FORMAT_R16_SFLOAT) img.g.resize(n);
     for (size_t i = 0; i < n; ++i) {
         if (format == VK_FORMAT_R8_UNORM) {
             img.r[i] = float(uint8_t(data[i])) / 255.0f;
         } else {
-            uint16_t h[2] = {0, 0};
+            uint16_t h[4] = {0, 0, 0, 0};
             std::memcpy(h, data + i * texel_size(format), texel_size(format));
             img.r[i] = glm::unpackHalf1x16(h[0]);
             if (!img.g.empty()) img.g[i] = glm::unpackHalf1x16(h[1]);
@@ -92,6 +94,20 @@ graph::ExternalImage sampled_input(const vk::Image& image, graph::Semantic seman
 }
 
 }  // namespace
+
+glm::ivec2 ao_source_pixel(glm::ivec2 q, glm::ivec2 size, glm::ivec2 full) {
+    const glm::vec2 p = (glm::vec2(q) + 0.5f) * glm::vec2(full) / glm::vec2(size);
+    return glm::min(glm::ivec2(p), full - 1);
+}
+
+glm::vec2 oct_encode(glm::vec3 n) {
+    n /= std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+    glm::vec2 p(n.x, n.y);
+    if (n.z < 0.0f)
+        p = (1.0f - glm::abs(glm::vec2(p.y, p.x))) *
+            glm::vec2(p.x >= 0.0f ? 1.0f : -1.0f, p.y >= 0.0f ? 1.0f : -1.0f);
+    return p;
+}
 
 void write_png(const std::string& path, const HostImage& image) {
     std::vector<uint8_t> bytes(image.r.size());
@@ -154,19 +170,33 @@ void GpuRig::set_uniforms(const passes::FrameUniforms& uniforms) {
     uniforms_ = uniforms;
 }
 
-vk::Image GpuRig::make_r8(uint32_t width, uint32_t height, const std::vector<float>& values) {
-    vk::Image image(*context_, {width, height, 1, VK_FORMAT_R8_UNORM,
+vk::Image GpuRig::make_packed_ao(const SyntheticFrame& frame, uint32_t width, uint32_t height,
+                                 const std::vector<float>& values) {
+    vk::Image image(*context_, {width, height, 1, VK_FORMAT_R16G16B16A16_SFLOAT,
                                 VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                VK_SAMPLE_COUNT_1_BIT, "test r8 input"});
-    std::vector<uint8_t> bytes(values.size());
-    for (size_t i = 0; i < values.size(); ++i)
-        bytes[i] = uint8_t(std::lround(std::clamp(values[i], 0.0f, 1.0f) * 255.0f));
-    upload_image(*context_, image, bytes.data(), bytes.size());
+                                VK_SAMPLE_COUNT_1_BIT, "test packed AO input"});
+    std::vector<uint16_t> halves(values.size() * 4);
+    const glm::ivec2 full{int(frame.width), int(frame.height)};
+    const glm::mat4& view = frame.uniforms.view;
+    for (uint32_t y = 0; y < height; ++y)
+        for (uint32_t x = 0; x < width; ++x) {
+            const glm::ivec2 s = ao_source_pixel({int(x), int(y)}, {int(width), int(height)}, full);
+            const PixelHit& hit = frame.hit(uint32_t(s.x), uint32_t(s.y));
+            const size_t i = size_t(y) * width + x;
+            glm::vec4 texel(1.0f, 0.0f, 0.0f, 0.0f);  // sky
+            if (hit.surface != Surface::Sky) {
+                const float distance = -(view * glm::vec4(hit.position, 1.0f)).z;
+                const glm::vec3 n = glm::normalize(glm::mat3(view) * hit.normal);
+                texel = {values[i], distance, oct_encode(n)};
+            }
+            for (int c = 0; c < 4; ++c) halves[i * 4 + size_t(c)] = glm::packHalf1x16(texel[c]);
+        }
+    upload_image(*context_, image, halves.data(), halves.size() * sizeof(uint16_t));
     return image;
 }
 
-graph::ImageHandle GpuRig::import_r8(graph::RenderGraph& graph, const std::string& name,
-                                     const vk::Image& image) const {
+graph::ImageHandle GpuRig::import_input(graph::RenderGraph& graph, const std::string& name,
+                                        const vk::Image& image) const {
     return graph.import_image(name, sampled_input(image, graph::Semantic::AO));
 }
 

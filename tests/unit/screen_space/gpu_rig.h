@@ -23,13 +23,18 @@
 
 namespace ds::test {
 
-// The first channel (and the second, for two-channel formats) of a read-back image, as floats.
+// The first channel (and the second, for formats with two or more) of a read-back image.
 struct HostImage {
     uint32_t width = 0, height = 0;
     std::vector<float> r, g;
     float at(uint32_t x, uint32_t y) const { return r[size_t(y) * width + x]; }
     float g_at(uint32_t x, uint32_t y) const { return g[size_t(y) * width + x]; }
 };
+
+// The full-resolution pixel a reduced-resolution AO texel stands for (ao_source_pixel in
+// screen_space.glsl) and the octahedral encoding of a unit vector (oct_encode there).
+glm::ivec2 ao_source_pixel(glm::ivec2 q, glm::ivec2 size, glm::ivec2 full);
+glm::vec2 oct_encode(glm::vec3 n);
 
 // 8-bit grayscale PNG of the first channel (to look at).
 void write_png(const std::string& path, const HostImage& image);
@@ -52,11 +57,15 @@ class GpuRig {
     // The prepass images and uniforms the next frames read.
     void upload(const SyntheticFrame& frame);
     void set_uniforms(const passes::FrameUniforms& uniforms);
-    // A sampled R8_UNORM image holding `values` (0..1, row-major), for feeding a pass a known
-    // input in place of the previous pass's output.
-    vk::Image make_r8(uint32_t width, uint32_t height, const std::vector<float>& values);
-    graph::ImageHandle import_r8(graph::RenderGraph& graph, const std::string& name,
-                                 const vk::Image& image) const;
+    // For feeding a pass a known input in place of the previous pass's output: a sampled
+    // R16G16B16A16_SFLOAT image packed as gtao writes ao_raw (and ao_spatial ao_filtered): `values`
+    // (row-major, width x height) as AO, with the view distance and the octahedral view normal of
+    // the pixel of `frame` each texel stands for (sky: 1, 0, 0, 0).
+    vk::Image make_packed_ao(const SyntheticFrame& frame, uint32_t width, uint32_t height,
+                             const std::vector<float>& values);
+    // Such an image imported into `graph` as `name` (semantic AO), ready to sample.
+    graph::ImageHandle import_input(graph::RenderGraph& graph, const std::string& name,
+                                    const vk::Image& image) const;
 
     // One frame: imports the inputs, runs `declare` (the passes under test), copies every
     // image named in `read_back` to the host, submits and waits.

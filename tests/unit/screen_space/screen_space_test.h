@@ -36,8 +36,13 @@ struct ScreenSpacePasses {
     passes::AoTemporalPass temporal;
     passes::ContactShadowsPass contact;
 
-    explicit ScreenSpacePasses(const passes::PassServices& services, float gtao_scale = 0.5f)
-        : gtao(services, gtao_scale), spatial(services), temporal(services), contact(services) {}
+    explicit ScreenSpacePasses(const passes::PassServices& services, float gtao_scale = 0.5f,
+                               uint32_t gtao_slices = passes::GtaoPass::kSlices,
+                               uint32_t gtao_steps = passes::GtaoPass::kSteps)
+        : gtao(services, gtao_scale, gtao_slices, gtao_steps),
+          spatial(services),
+          temporal(services),
+          contact(services) {}
 
     GpuRig::Declare declare() {
         return [this](graph::RenderGraph& g, const passes::FrameInputs& in,

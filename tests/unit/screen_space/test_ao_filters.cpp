@@ -1,5 +1,6 @@
-// ao_spatial and ao_temporal, each fed a known input in place of the previous pass's output,
-// so every expected value follows from the geometry and the filter's definition.
+// ao_spatial and ao_temporal, fed a known input in place of the previous pass's output (packed
+// as gtao writes it: AO, view distance, view normal), so every expected value follows from the
+// geometry and the filters' definitions.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,44 +18,40 @@ float wall_dark(const PixelHit& h) {
     return h.surface == Surface::Box ? 0.2f : 1.0f;
 }
 
-// The full-resolution pixel a raw texel stands for (ao_source_pixel in screen_space.glsl).
-glm::ivec2 source_pixel(glm::ivec2 q, glm::ivec2 raw, glm::ivec2 full) {
-    const glm::vec2 p = (glm::vec2(q) + 0.5f) * glm::vec2(full) / glm::vec2(raw);
-    return glm::min(glm::ivec2(p), full - 1);
-}
-
 std::vector<float> raw_values(const SyntheticFrame& frame, uint32_t w, uint32_t h,
                               const std::function<float(const PixelHit&, glm::ivec2)>& value) {
     std::vector<float> out(size_t(w) * h);
     const glm::ivec2 full{int(frame.width), int(frame.height)};
     for (uint32_t y = 0; y < h; ++y)
         for (uint32_t x = 0; x < w; ++x) {
-            const glm::ivec2 s = source_pixel({int(x), int(y)}, {int(w), int(h)}, full);
+            const glm::ivec2 s = ao_source_pixel({int(x), int(y)}, {int(w), int(h)}, full);
             out[size_t(y) * w + x] =
                 value(frame.hit(uint32_t(s.x), uint32_t(s.y)), {int(x), int(y)});
         }
     return out;
 }
 
-// Runs ao_spatial alone on `raw` (imported as ao_raw) and returns ao_filtered.
-HostImage run_spatial(GpuRig& rig, const vk::Image& raw) {
+// Runs ao_spatial on `raw` (imported as ao_raw), then ao_temporal (no history: its output is
+// the upsampled current value); returns ao_filtered (at raw's size) and ao (full size).
+FrameOutput run_spatial(GpuRig& rig, const vk::Image& raw) {
     passes::AoSpatialPass spatial(rig.services());
+    passes::AoTemporalPass temporal(rig.services());
     graph::RenderGraph graph(rig.context());
-    return rig
-        .run_frame(
-            graph,
-            [&](graph::RenderGraph& g, const passes::FrameInputs& in, passes::FrameResources& res) {
-                res.ao_raw = rig.import_r8(g, "ao_raw", raw);
-                spatial.add(g, in, res);
-            },
-            {"ao_filtered"})
-        .images.at("ao_filtered");
+    return rig.run_frame(
+        graph,
+        [&](graph::RenderGraph& g, const passes::FrameInputs& in, passes::FrameResources& res) {
+            res.ao_raw = rig.import_input(g, "ao_raw", raw);
+            spatial.add(g, in, res);
+            temporal.add(g, in, res);
+        },
+        {"ao_filtered", "ao"});
 }
 
 class AoSpatial : public ScreenSpaceTest, public ::testing::WithParamInterface<float> {};
 
 // No AO crosses the wall's silhouette (floor far behind its top edge) nor the corner (floor
-// against the wall's face): a plain 5x5 blur would mix 0.2 and 1 in a 2-pixel band.
+// against the wall's face), neither in the filter nor in ao_temporal's upsampling: a plain 5x5
+// blur would mix 0.2 and 1 in a 2-pixel band, a plain bilinear upsampling in a 1-pixel one.
 TEST_P(AoSpatial, KeepsDepthAndNormalEdges) {
     const float scale = GetParam();
     const SyntheticFrame frame =
@@ -62,10 +59,10 @@ TEST_P(AoSpatial, KeepsDepthAndNormalEdges) {
     rig().upload(frame);
     const uint32_t w = uint32_t(float(kFilterWidth) * scale),
                    h = uint32_t(float(kFilterHeight) * scale);
-    const vk::Image raw = rig().make_r8(
-        w, h,
+    const vk::Image raw = rig().make_packed_ao(
+        frame, w, h,
         raw_values(frame, w, h, [](const PixelHit& hit, glm::ivec2) { return wall_dark(hit); }));
-    const HostImage out = run_spatial(rig(), raw);
+    const HostImage out = run_spatial(rig(), raw).images.at("ao");
     write_png(png_path(std::string("spatial_edges_") + (scale < 1.0f ? "half" : "full")), out);
 
     size_t floor_next_to_wall = 0;
@@ -92,12 +89,12 @@ TEST_F(AoSpatial, RemovesTheFourByFourPattern) {
         render_synthetic(corner_scene(), corner_camera(), kFilterWidth, kFilterHeight, true);
     rig().upload(frame);
     static const int kBayer[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
-    const vk::Image raw = rig().make_r8(
-        kFilterWidth, kFilterHeight,
+    const vk::Image raw = rig().make_packed_ao(
+        frame, kFilterWidth, kFilterHeight,
         raw_values(frame, kFilterWidth, kFilterHeight, [](const PixelHit&, glm::ivec2 q) {
             return float(kBayer[(q.y & 3) * 4 + (q.x & 3)]) / 15.0f;
         }));
-    const HostImage out = run_spatial(rig(), raw);
+    const HostImage out = run_spatial(rig(), raw).images.at("ao_filtered");
     size_t checked = 0;
     for (uint32_t y = 0; y < kFilterHeight; ++y)
         for (uint32_t x = 0; x < kFilterWidth; ++x)
@@ -118,11 +115,11 @@ struct TemporalRun {
                       const std::function<float(const PixelHit&)>& value) {
         std::vector<float> current(size_t(f.width) * f.height);
         for (size_t i = 0; i < current.size(); ++i) current[i] = value(f.hits[i]);
-        const vk::Image image = rig.make_r8(f.width, f.height, current);
+        const vk::Image image = rig.make_packed_ao(f, f.width, f.height, current);
         return rig.run_frame(
             graph,
             [&](graph::RenderGraph& g, const passes::FrameInputs& in, passes::FrameResources& res) {
-                res.ao_filtered = rig.import_r8(g, "ao_filtered", image);
+                res.ao_filtered = rig.import_input(g, "ao_filtered", image);
                 pass.add(g, in, res);
             },
             {"ao", "ao_history.current"});

@@ -92,27 +92,56 @@ INSTANTIATE_TEST_SUITE_P(Variants, GtaoCorner,
 
 using Gtao = ScreenSpaceTest;
 
-// The whole chain under a static camera: the first frame has no history (ao = ao_filtered
-// exactly); later frames blend a history equal to the current value, so nothing drifts.
+// The whole chain under a static camera: the first frame has no history (ao is the upsampled
+// ao_filtered alone); later frames blend a history equal to the current value, so nothing
+// drifts, not even by one 8-bit step (ao_temporal quantises the current value first).
 TEST_F(Gtao, StaticCameraStaysStable) {
     rig().upload(render_synthetic(corner_scene(), corner_camera(), 240, 160, true, kGtaoSun));
     ScreenSpacePasses passes(rig().services());
     graph::RenderGraph graph(rig().context());
     std::vector<float> first;
     for (int frame = 0; frame < 4; ++frame) {
-        const FrameOutput out = rig().run_frame(graph, passes.declare(), {"ao_filtered", "ao"});
-        const HostImage& ao = out.images.at("ao");
-        const HostImage& current = out.images.at("ao_filtered");
+        const HostImage ao = rig().run_frame(graph, passes.declare(), {"ao"}).images.at("ao");
         EXPECT_EQ(passes.temporal.last_history_valid(), frame > 0);
-        float worst = 0.0f;
-        for (size_t i = 0; i < ao.r.size(); ++i)
-            worst = std::max(worst, std::abs(ao.r[i] - current.r[i]));
-        EXPECT_LE(worst, frame == 0 ? 0.0f : 1.0f / 255.0f) << "frame " << frame;
         if (frame == 0)
             first = ao.r;
         else
             EXPECT_EQ(ao.r, first) << "frame " << frame;
     }
+}
+
+// The AO forward reads, as built (half resolution, kSlices x kSteps, filtered at half
+// resolution and upsampled in ao_temporal), against a high-quality setting of the same
+// shaders (full resolution, 8 slices x 16 steps): the cheap path must not drift beyond the
+// tolerance DESIGN states (issue 14: mean |dAO| <= 0.02, 99th percentile <= 0.1).
+TEST_F(Gtao, DefaultsStayWithinToleranceOfHighQuality) {
+    const SyntheticFrame frame =
+        render_synthetic(corner_scene(), corner_camera(), kGtaoWidth, kGtaoHeight, true, kGtaoSun);
+    rig().upload(frame);
+    const auto ao_of = [&](ScreenSpacePasses& passes) {
+        graph::RenderGraph graph(rig().context());
+        return rig().run_frame(graph, passes.declare(), {"ao"}).images.at("ao");
+    };
+    ScreenSpacePasses defaults(rig().services());
+    ScreenSpacePasses reference(rig().services(), 1.0f, 8, 16);
+    const HostImage a = ao_of(defaults), b = ao_of(reference);
+    write_png(png_path("ao_defaults"), a);
+    write_png(png_path("ao_high_quality"), b);
+    std::vector<float> diff;
+    double sum = 0.0;
+    for (glm::ivec2 p :
+         select_pixels(frame, [](const PixelHit& h) { return h.surface != Surface::Sky; })) {
+        diff.push_back(std::abs(a.at(p.x, p.y) - b.at(p.x, p.y)));
+        sum += diff.back();
+    }
+    ASSERT_GT(diff.size(), 10000u);
+    std::sort(diff.begin(), diff.end());
+    const double mean = sum / double(diff.size());
+    const float p99 = diff[diff.size() * 99 / 100];
+    std::printf("defaults vs high quality: mean |dAO| %.4f, p99 %.4f, max %.4f\n", mean, p99,
+                diff.back());
+    EXPECT_LE(mean, 0.02);
+    EXPECT_LE(p99, 0.1f);
 }
 
 TEST_F(Gtao, SameInputSameOutput) {
