@@ -20,6 +20,26 @@ bool clip_blit(const ViewerBlit& v, TargetSize target, BlitRegion& out) {
     const float cx1 = std::min({x1, v.dst_x + v.dst_w, float(target.width)});
     const float cy1 = std::min({y1, v.dst_y + v.dst_h, float(target.height)});
     if (cx1 - cx0 < 1.0f || cy1 - cy0 < 1.0f) return false;
+    // An integer magnification (zoom 2, 4, 8 ...) with the image's edge on a whole pixel: blit
+    // only the whole texels inside the viewport, so the ratio is exact and every destination
+    // pixel centre lies mid-texel. NEAREST then samples the same texel on every device (at a
+    // near-integer ratio a centre can land within rounding of a texel edge, where NVIDIA and
+    // lavapipe pick neighbours differently); the partial texels at the edges, narrower than
+    // one texel, stay background.
+    const float zx = std::round(scale_x), zy = std::round(scale_y);
+    if (zx >= 1.0f && zy >= 1.0f && std::abs(scale_x - zx) < 1e-4f &&
+        std::abs(scale_y - zy) < 1e-4f) {
+        const float ox = std::round(x0), oy = std::round(y0);
+        out.sx0 = int32_t(std::clamp(std::ceil((cx0 - ox) / zx), 0.0f, float(v.width)));
+        out.sx1 = int32_t(std::clamp(std::floor((cx1 - ox) / zx), 0.0f, float(v.width)));
+        out.sy0 = int32_t(std::clamp(std::ceil((cy0 - oy) / zy), 0.0f, float(v.height)));
+        out.sy1 = int32_t(std::clamp(std::floor((cy1 - oy) / zy), 0.0f, float(v.height)));
+        out.dx0 = int32_t(ox + float(out.sx0) * zx);
+        out.dx1 = int32_t(ox + float(out.sx1) * zx);
+        out.dy0 = int32_t(oy + float(out.sy0) * zy);
+        out.dy1 = int32_t(oy + float(out.sy1) * zy);
+        return out.sx1 > out.sx0 && out.sy1 > out.sy0;
+    }
     // Whole destination pixels, and the source region they show.
     out.dx0 = int32_t(std::floor(cx0));
     out.dy0 = int32_t(std::floor(cy0));
