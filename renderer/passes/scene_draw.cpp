@@ -91,14 +91,27 @@ DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
     return counts;
 }
 
+namespace {
+
+// A draw and the distance it is sorted by (the two sorts below).
+struct DistanceDraw {
+    float distance;
+    InstanceDraw draw;
+};
+
+std::vector<InstanceDraw> draws_of(const std::vector<DistanceDraw>& items) {
+    std::vector<InstanceDraw> draws;
+    draws.reserve(items.size());
+    for (const DistanceDraw& item : items) draws.push_back(item.draw);
+    return draws;
+}
+
+}  // namespace
+
 std::vector<InstanceDraw> sort_by_distance(const GpuScene& scene, glm::vec3 camera,
                                            std::span<const scene::AlphaMode> modes, DrawOrder order,
                                            Decals decals) {
-    struct Item {
-        float distance;
-        InstanceDraw draw;
-    };
-    std::vector<Item> items;
+    std::vector<DistanceDraw> items;
     const auto& centers = scene.instance_centers();
     for (const scene::DrawGroup& g : scene.draw_groups()) {
         if (!selected(g, modes, decals)) continue;
@@ -107,26 +120,19 @@ std::vector<InstanceDraw> sort_by_distance(const GpuScene& scene, glm::vec3 came
             items.push_back({glm::distance(centers[i], camera), {i, &g}});
     }
     const bool back_to_front = order == DrawOrder::BackToFront;
-    std::sort(items.begin(), items.end(), [&](const Item& a, const Item& b) {
+    std::sort(items.begin(), items.end(), [&](const DistanceDraw& a, const DistanceDraw& b) {
         if (a.distance != b.distance) {
             return back_to_front ? a.distance > b.distance : a.distance < b.distance;
         }
         return a.draw.instance < b.draw.instance;
     });
-    std::vector<InstanceDraw> draws;
-    draws.reserve(items.size());
-    for (const Item& item : items) draws.push_back(item.draw);
-    return draws;
+    return draws_of(items);
 }
 
 std::vector<InstanceDraw> sort_groups_front_to_back(const GpuScene& scene, glm::vec3 camera,
                                                     std::span<const scene::AlphaMode> modes,
                                                     Decals decals) {
-    struct Item {
-        float distance;
-        InstanceDraw draw;
-    };
-    std::vector<Item> items;
+    std::vector<DistanceDraw> items;
     const auto& centers = scene.instance_centers();
     for (const scene::DrawGroup& g : scene.draw_groups()) {
         if (!selected(g, modes, decals) || g.instance_count == 0) continue;
@@ -137,12 +143,10 @@ std::vector<InstanceDraw> sort_groups_front_to_back(const GpuScene& scene, glm::
         items.push_back({nearest, {g.first_instance, &g, g.instance_count}});
     }
     // Groups are in the scene's order already: a stable sort keeps it for equal distances.
-    std::stable_sort(items.begin(), items.end(),
-                     [](const Item& a, const Item& b) { return a.distance < b.distance; });
-    std::vector<InstanceDraw> draws;
-    draws.reserve(items.size());
-    for (const Item& item : items) draws.push_back(item.draw);
-    return draws;
+    std::stable_sort(items.begin(), items.end(), [](const DistanceDraw& a, const DistanceDraw& b) {
+        return a.distance < b.distance;
+    });
+    return draws_of(items);
 }
 
 std::vector<InstanceDraw> sort_back_to_front(const GpuScene& scene, glm::vec3 camera,
