@@ -19,6 +19,11 @@
 //                      With GBUFFER=0 the sharpened alpha goes to output 0, whose attachment
 //                      slot has no image: alpha to coverage reads output 0 whatever is bound.
 //   PIXEL_HISTORY=1    the pixel history replay: records each fragment (common/pixel_history.glsl).
+//   LIGHT_SLOT=1       render_path=subpass (seed 002's subpass 0): output 0 is the light, the
+//                      "emissive" output seed 002 gives the G-buffer pass: none here (forward
+//                      adds emission when it lights the same samples under EQUAL), and its
+//                      alpha is the alpha-to-coverage input. Normal and roughness move to 1, 2.
+//                      (A write mask of 0 would need independentBlend, which lavapipe lacks.)
 #extension GL_GOOGLE_include_directive : require
 
 #ifndef GBUFFER
@@ -32,6 +37,9 @@
 #endif
 #ifndef SURFACE_LOCATION
 #define SURFACE_LOCATION 0
+#endif
+#ifndef LIGHT_SLOT
+#define LIGHT_SLOT 0
 #endif
 
 #include "common/alpha_test.glsl"
@@ -53,13 +61,19 @@ layout(location = 2) in vec2 in_uv0;
 #endif
 
 // Output 0: the normal (G-buffer), or with GBUFFER=0 the coverage alpha / the replay's
-// stand-in attachment where one of those needs it.
+// stand-in attachment where one of those needs it. LIGHT_SLOT=1: the light is output 0 and
+// takes the coverage alpha; the normal (G-buffer only) moves to 1.
+#if LIGHT_SLOT
+layout(location = 0) out vec4 out_light;
+#define HAS_OUTPUT0 GBUFFER
+#else
 #define HAS_OUTPUT0 (GBUFFER || PIXEL_HISTORY || (ALPHA_MASK && ALPHA_TO_COVERAGE))
+#endif
 #if HAS_OUTPUT0
-layout(location = 0) out vec4 out_normal;
+layout(location = LIGHT_SLOT) out vec4 out_normal;
 #endif
 #if GBUFFER && !PIXEL_HISTORY
-layout(location = 1) out float out_roughness;
+layout(location = LIGHT_SLOT + 1) out float out_roughness;
 #else  // the replay's one attachment is a stand-in for output 0: this is recorded
 float out_roughness;
 #endif
@@ -110,5 +124,8 @@ void main() {
 #endif
 #if SURFACE_ID
     out_surface = in_surface_base + uint(gl_PrimitiveID) + 1u;
+#endif
+#if LIGHT_SLOT
+    out_light = vec4(0.0, 0.0, 0.0, coverage);
 #endif
 }

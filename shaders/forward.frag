@@ -10,6 +10,9 @@
 //   COUNT_FRAGMENTS=1  count the fragments that ran (common/count.glsl).
 //   ALPHA_TO_COVERAGE=1  with ALPHA_MASK: coverage instead of discard (common/alpha_test.glsl).
 //   PIXEL_HISTORY=1    the pixel history replay: records each fragment (common/pixel_history.glsl).
+//   SUBPASS_INPUTS=N   render_path=subpass (seed 002's subpass 1): normal and roughness are
+//                      the prepass's input attachments (set 4), N samples each, averaged as
+//                      the dynamic path's AVERAGE resolve does.
 #extension GL_GOOGLE_include_directive : require
 
 #ifndef PREPASS
@@ -17,6 +20,9 @@
 #endif
 #ifndef ALPHA_MASK
 #define ALPHA_MASK 0
+#endif
+#ifndef SUBPASS_INPUTS
+#define SUBPASS_INPUTS 0
 #endif
 
 #include "common/alpha_test.glsl"
@@ -35,6 +41,28 @@ layout(location = 3) in vec4 in_tangent;
 
 layout(location = 0) out vec4 out_color;
 
+#if SUBPASS_INPUTS > 1
+layout(input_attachment_index = 0, set = 4, binding = 0) uniform subpassInputMS gbuffer_normals;
+layout(input_attachment_index = 1, set = 4, binding = 1) uniform subpassInputMS gbuffer_roughness;
+#elif SUBPASS_INPUTS == 1
+layout(input_attachment_index = 0, set = 4, binding = 0) uniform subpassInput gbuffer_normals;
+layout(input_attachment_index = 1, set = 4, binding = 1) uniform subpassInput gbuffer_roughness;
+#endif
+
+#if SUBPASS_INPUTS
+// The pixel's encoded normal (xyz) and roughness (w), from tile memory.
+vec4 load_gbuffer() {
+#if SUBPASS_INPUTS > 1
+    vec4 sum = vec4(0.0);
+    for (int i = 0; i < SUBPASS_INPUTS; ++i)
+        sum += vec4(subpassLoad(gbuffer_normals, i).xyz, subpassLoad(gbuffer_roughness, i).r);
+    return sum / float(SUBPASS_INPUTS);
+#else
+    return vec4(subpassLoad(gbuffer_normals).xyz, subpassLoad(gbuffer_roughness).r);
+#endif
+}
+#endif
+
 void main() {
     count_fragment();
     vec4 base = texture(base_color_texture, in_uv0) * material.base_color_factor;
@@ -51,7 +79,11 @@ void main() {
 #endif
     vec3 n_vertex = vertex_normal(in_normal);
     Surface s = material_surface(base, in_uv0);
-#if PREPASS
+#if SUBPASS_INPUTS
+    vec4 gbuffer = load_gbuffer();
+    s.n = decode_normal(gbuffer.xyz);
+    s.roughness = gbuffer.w;
+#elif PREPASS
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     s.n = decode_normal(texelFetch(prepass_normals, pixel, 0).xyz);
     s.roughness = texelFetch(prepass_roughness, pixel, 0).r;

@@ -68,6 +68,12 @@ Use describe(Access access, Shader shader, bool depth) {
                           : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                     VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT};
+        // Seed 002: SHADER_READ_ONLY for colour, the read-only depth layout for depth (which
+        // the depth test may use at the same time).
+        case Access::InputAttachment:
+            return {depth ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL
+                          : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT};
     }
     return {};
 }
@@ -94,7 +100,7 @@ bool is_buffer_only(Access access) {
 bool is_image_only(Access access) {
     return access == Access::ColorAttachment || access == Access::DepthAttachment ||
            access == Access::DepthReadOnly || access == Access::Sampled ||
-           access == Access::ResolveDst;
+           access == Access::ResolveDst || access == Access::InputAttachment;
 }
 
 VkAccessFlags2 write_bits(VkAccessFlags2 access) {
@@ -125,6 +131,8 @@ VkImageUsageFlags image_usage(Access access, bool depth) {
         case Access::ResolveDst:
             return depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
                          : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+        case Access::InputAttachment:
+            return VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT;
         default:
             return 0;
     }
@@ -183,6 +191,8 @@ const char* access_name(Access access) {
             return "transfer dst";
         case Access::ResolveDst:
             return "resolve dst";
+        case Access::InputAttachment:
+            return "input attachment";
     }
     return "?";
 }

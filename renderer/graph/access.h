@@ -22,6 +22,9 @@ enum class Access : uint8_t {
     TransferSrc,       // copy, blit, resolve source
     TransferDst,       // copy, blit, resolve, clear destination
     ResolveDst,        // resolve attachment of dynamic rendering (colour or depth)
+    // Read at the fragment's own pixel (subpassLoad) in a later subpass of a subpass group:
+    // from tile memory on a tiler. Only inside a group (graph/subpass.h).
+    InputAttachment,
 };
 
 // Shader stages of a Sampled / Storage / Uniform access; a bit set. Default resolves to the

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "renderer/format/format.h"
+#include "renderer/graph/dump_subpass.h"
 #include "renderer/graph/names.h"
 
 namespace ds::graph {
@@ -46,6 +47,7 @@ void dump_pass(std::ostream& out, size_t index, const PassInfo& pass, const Pass
                std::span<const ResourceInfo> resources) {
     out << "  " << index + 1 << ". " << pass.name << " (" << pass_kind_name(pass.kind);
     if (pass.role != PassRole::Frame) out << ", " << pass_role_name(pass.role);
+    if (!pass.group.empty()) out << ", subpass " << pass.subpass << " of '" << pass.group << "'";
     out << ")\n";
     for (const Barrier& b : plan.barriers)
         out << "     barrier " << describe_barrier(b, resources) << "\n";
@@ -80,7 +82,8 @@ std::string describe_barrier(const Barrier& b, std::span<const ResourceInfo> res
 }
 
 std::string dump_graph(VkExtent2D output, std::span<const ResourceInfo> resources,
-                       std::span<const PassInfo> passes, const BarrierPlan& plan) {
+                       std::span<const PassInfo> passes, const BarrierPlan& plan,
+                       std::span<const GroupPlan> groups) {
     std::ostringstream out;
     out << "render graph: output " << output.width << "x" << output.height << ", " << passes.size()
         << " passes, " << resources.size() << " resources\n";
@@ -95,6 +98,10 @@ std::string dump_graph(VkExtent2D output, std::span<const ResourceInfo> resource
         out << "end of frame:\n";
         for (const Barrier& b : plan.final_barriers)
             out << "     barrier " << describe_barrier(b, resources) << "\n";
+    }
+    if (!groups.empty()) {
+        out << "subpass groups:\n";
+        dump_groups(out, groups, resources, passes);
     }
     return out.str();
 }

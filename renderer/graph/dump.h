@@ -6,11 +6,14 @@
 #include <string>
 
 #include "renderer/graph/plan.h"
+#include "renderer/graph/subpass.h"
 
 namespace ds::graph {
 
+// `groups`: the compiled frame's subpass groups (render passes), printed after the passes.
 std::string dump_graph(VkExtent2D output, std::span<const ResourceInfo> resources,
-                       std::span<const PassInfo> passes, const BarrierPlan& plan);
+                       std::span<const PassInfo> passes, const BarrierPlan& plan,
+                       std::span<const GroupPlan> groups = {});
 
 // One barrier on one line: "colour: UNDEFINED -> COLOR_ATTACHMENT_OPTIMAL, NONE/NONE -> ...".
 std::string describe_barrier(const Barrier& barrier, std::span<const ResourceInfo> resources);

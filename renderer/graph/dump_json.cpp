@@ -2,6 +2,7 @@
 
 #include "renderer/format/format.h"
 #include "renderer/graph/dump.h"
+#include "renderer/graph/dump_subpass.h"
 #include "renderer/graph/names.h"
 
 namespace ds::graph {
@@ -57,18 +58,21 @@ nlohmann::json pass_json(const PassInfo& pass, const PassPlan& plan,
                             {"access", access_name(a.access)}};
         (is_write(a.access) ? writes : reads).push_back(std::move(j));
     }
-    return {{"name", pass.name},
-            {"kind", pass_kind_name(pass.kind)},
-            {"role", pass_role_name(pass.role)},
-            {"barriers", barriers_json(plan.barriers, resources)},
-            {"reads", reads},
-            {"writes", writes}};
+    nlohmann::json j = {{"name", pass.name},
+                        {"kind", pass_kind_name(pass.kind)},
+                        {"role", pass_role_name(pass.role)},
+                        {"barriers", barriers_json(plan.barriers, resources)},
+                        {"reads", reads},
+                        {"writes", writes}};
+    if (!pass.group.empty()) j["subpass"] = {{"group", pass.group}, {"index", pass.subpass}};
+    return j;
 }
 
 }  // namespace
 
 nlohmann::json graph_json(VkExtent2D output, std::span<const ResourceInfo> resources,
-                          std::span<const PassInfo> passes, const BarrierPlan& plan) {
+                          std::span<const PassInfo> passes, const BarrierPlan& plan,
+                          std::span<const GroupPlan> groups) {
     nlohmann::json res = nlohmann::json::array(), out_passes = nlohmann::json::array();
     for (const ResourceInfo& r : resources) res.push_back(resource_json(r));
     const PassPlan not_compiled;
@@ -78,7 +82,8 @@ nlohmann::json graph_json(VkExtent2D output, std::span<const ResourceInfo> resou
     return {{"output", {{"width", output.width}, {"height", output.height}}},
             {"resources", res},
             {"passes", out_passes},
-            {"end_of_frame", barriers_json(plan.final_barriers, resources)}};
+            {"end_of_frame", barriers_json(plan.final_barriers, resources)},
+            {"subpass_groups", groups_json(groups, resources, passes)}};
 }
 
 }  // namespace ds::graph

@@ -8,10 +8,12 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/graph/plan.h"
+#include "renderer/graph/subpass.h"
 
 namespace ds::graph {
 
 nlohmann::json graph_json(VkExtent2D output, std::span<const ResourceInfo> resources,
-                          std::span<const PassInfo> passes, const BarrierPlan& plan);
+                          std::span<const PassInfo> passes, const BarrierPlan& plan,
+                          std::span<const GroupPlan> groups = {});
 
 }  // namespace ds::graph

@@ -28,7 +28,7 @@ ImageKey image_key(const std::string& name, const ResourceInfo& r) {
 }  // namespace
 
 RenderGraph::RenderGraph(vk::Context& context)
-    : context_(context), cache_(context), profiler_(context) {}
+    : context_(context), cache_(context), profiler_(context), render_passes_(context) {}
 
 RenderGraph::~RenderGraph() = default;
 
@@ -47,6 +47,8 @@ void RenderGraph::begin_frame(VkExtent2D output, vk::DestroyList& retired) {
     histories_.clear();
     pass_data_.clear();
     plan_ = BarrierPlan{};
+    groups_.clear();
+    group_passes_.clear();
     role_ = PassRole::Frame;
     phase_ = Phase::Declaring;
 }
@@ -119,7 +121,11 @@ BufferHandle RenderGraph::import_buffer(const std::string& name, const ExternalB
 void RenderGraph::add_pass(const std::string& name, const Setup& setup, Record record,
                            PassKind kind) {
     require_declaring("add_pass");
-    passes_.push_back(PassInfo{name, kind, {}, role_});
+    PassInfo info;
+    info.name = name;
+    info.kind = kind;
+    info.role = role_;
+    passes_.push_back(std::move(info));
     records_.push_back(std::move(record));
     PassBuilder builder(*this, uint32_t(passes_.size() - 1));
     if (setup) setup(builder);
@@ -135,8 +141,20 @@ void RenderGraph::compile() {
     require_declaring("compile");
     const std::vector<VkFlags> usage = derive_usage(resources_, passes_);
     for (size_t i = 0; i < resources_.size(); ++i) resources_[i].usage = usage[i];
+    groups_ = find_subpass_groups(resources_, passes_);
+    // Tile memory only: attachment usages and TRANSIENT (no TRANSFER_SRC, no sampling).
+    constexpr VkFlags kAttachmentUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                         VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT;
+    for (const GroupPlan& g : groups_)
+        for (const GroupAttachment& a : g.attachments)
+            if (a.transient)
+                resources_[a.resource].usage = (resources_[a.resource].usage & kAttachmentUsage) |
+                                               VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
     realize_resources();
-    plan_ = plan_barriers(resources_, passes_);
+    plan_ = plan_barriers(resources_, passes_, store_writes(groups_, passes_));
+    plan_subpass_groups(groups_, resources_, passes_, plan_);
+    for (const GroupPlan& g : groups_) group_passes_.push_back(render_passes_.get(g, resources_));
     phase_ = Phase::Compiled;
 }
 
@@ -152,6 +170,7 @@ void RenderGraph::realize_resources() {
             CachedImage& entry = cache_.image(image_key(r.name, r));
             b.image = entry.image.handle();
             b.view = entry.image.view();
+            b.lazily_allocated = entry.image.lazily_allocated();
             r.initial = entry.state.discarded();
             b.persistent = &entry.state;
         } else {
@@ -228,19 +247,65 @@ uint64_t RenderGraph::execute(VkCommandBuffer cmd) {
     std::vector<std::string> names;
     for (const PassInfo& p : passes_) names.push_back(p.name);
     profiler_.begin_frame(cmd, id, std::move(names), *retired_);
-    for (uint32_t i = 0; i < passes_.size(); ++i) {
+    for (uint32_t i = 0; i < passes_.size();) {
+        const int group = group_of(groups_, i);
+        if (group >= 0) {
+            execute_group(cmd, uint32_t(group));
+            i = groups_[size_t(group)].last_pass + 1;
+            continue;
+        }
         // The barriers sit inside the label, so a capture shows them under their pass.
         vk::ScopedLabel label(context_.debug(), cmd, passes_[i].name.c_str());
         record_barriers(cmd, plan_.passes[i].barriers);
-        profiler_.begin_pass(cmd, i);
-        PassContext ctx(*this, i, cmd);
-        if (records_[i]) records_[i](ctx);
-        profiler_.end_pass(cmd, i);
+        record_pass(cmd, i);
+        ++i;
     }
     record_barriers(cmd, plan_.final_barriers);
     commit_states();
     phase_ = Phase::Executed;
     return id;
+}
+
+void RenderGraph::record_pass(VkCommandBuffer cmd, uint32_t pass) {
+    profiler_.begin_pass(cmd, pass);
+    PassContext ctx(*this, pass, cmd);
+    if (records_[pass]) records_[pass](ctx);
+    profiler_.end_pass(cmd, pass);
+}
+
+// One render pass: its barriers first, then each subpass's passes in their own labels (and
+// timestamps and statistics, which may sit inside a subpass).
+void RenderGraph::execute_group(VkCommandBuffer cmd, uint32_t index) {
+    const GroupPlan& g = groups_[index];
+    vk::ScopedLabel label(context_.debug(), cmd, g.name.c_str());
+    record_barriers(cmd, g.barriers);
+    std::vector<VkImageView> views;
+    for (const GroupAttachment& a : g.attachments) views.push_back(bindings_[a.resource].view);
+    render_passes_.begin(cmd, group_passes_[index], g, views, *retired_);
+    for (uint32_t s = 0; s < g.subpasses.size(); ++s) {
+        if (s > 0) {
+            auto begin = vk::make<VkSubpassBeginInfo>(VK_STRUCTURE_TYPE_SUBPASS_BEGIN_INFO);
+            begin.contents = VK_SUBPASS_CONTENTS_INLINE;
+            const auto end = vk::make<VkSubpassEndInfo>(VK_STRUCTURE_TYPE_SUBPASS_END_INFO);
+            vkCmdNextSubpass2(cmd, &begin, &end);
+        }
+        for (uint32_t p : g.subpasses[s].passes) {
+            vk::ScopedLabel pass_label(context_.debug(), cmd, passes_[p].name.c_str());
+            record_pass(cmd, p);
+        }
+    }
+    const auto end = vk::make<VkSubpassEndInfo>(VK_STRUCTURE_TYPE_SUBPASS_END_INFO);
+    vkCmdEndRenderPass2(cmd, &end);
+}
+
+VkRenderPass RenderGraph::render_pass_of(uint32_t pass) const {
+    const int group = group_of(groups_, pass);
+    return group < 0 ? VK_NULL_HANDLE : group_passes_[size_t(group)];
+}
+
+bool RenderGraph::lazily_allocated(ImageHandle image) const {
+    resource(image.index, true, "lazily_allocated()");
+    return bindings_[image.index].lazily_allocated;
 }
 
 // What this frame leaves behind is where the next one starts; history pairs swap roles once
@@ -269,11 +334,11 @@ void RenderGraph::invalidate_history() {
 }
 
 std::string RenderGraph::dump() const {
-    return dump_graph(output_, resources_, passes_, plan_);
+    return dump_graph(output_, resources_, passes_, plan_, groups_);
 }
 
 nlohmann::json RenderGraph::dump_json() const {
-    return graph_json(output_, resources_, passes_, plan_);
+    return graph_json(output_, resources_, passes_, plan_, groups_);
 }
 
 ImageHandle RenderGraph::find_image(std::string_view name) const {

@@ -42,6 +42,8 @@
 #include "renderer/graph/cache.h"
 #include "renderer/graph/plan.h"
 #include "renderer/graph/profiler.h"
+#include "renderer/graph/render_pass.h"
+#include "renderer/graph/subpass.h"
 #include "renderer/graph/types.h"
 
 namespace ds::vk {
@@ -73,6 +75,14 @@ class PassBuilder {
     BufferHandle read(BufferHandle buffer, Access access, Shader shader = Shader::Default);
     BufferHandle write(BufferHandle buffer, Access access, Shader shader = Shader::Default);
 
+    // This pass is subpass `index` of render pass `group` (graph/subpass.h): the graph begins
+    // the render pass before the group's first pass, steps subpasses and ends it after the
+    // last; the pass records draws only, with pipelines made for PassContext::render_pass().
+    // Call first, before declaring accesses.
+    void subpass(const std::string& group, uint32_t index);
+    // In a subpass: the attachment's LOAD_OP_CLEAR value (a render pass clears on load).
+    void clear(ImageHandle image, const VkClearValue& value);
+
     VkExtent2D output_extent() const;
     VkExtent2D extent(ImageHandle image) const;
 
@@ -101,6 +111,10 @@ class PassContext {
     VkFormat format(ImageHandle image) const;
     VkDeviceSize size(BufferHandle buffer) const;
     bool history_valid(const HistoryImage& history) const;
+    // Inside a subpass group: its VkRenderPass (pipelines are made for it) and this pass's
+    // subpass index; VK_NULL_HANDLE for a pass on its own (dynamic rendering).
+    VkRenderPass render_pass() const;
+    uint32_t subpass() const;
 
     // A dependency between two steps inside this pass (two dispatches, where the second reads
     // what the first wrote), in the graph's terms: `before` and `after` must both be declared
@@ -174,6 +188,11 @@ class RenderGraph {
     std::span<const ResourceInfo> resources() const { return resources_; }
     std::span<const PassInfo> passes() const { return passes_; }
     const BarrierPlan& plan() const { return plan_; }
+    // The frame's subpass groups (render passes), after compile().
+    std::span<const GroupPlan> subpass_groups() const { return groups_; }
+    // A graph-owned image in LAZILY_ALLOCATED memory (a transient attachment, where the
+    // device has such memory); after compile().
+    bool lazily_allocated(ImageHandle image) const;
     ImageHandle find_image(std::string_view name) const;  // invalid handle when none
     VkImage image(ImageHandle image) const;               // after compile()
     VkImageView view(ImageHandle image) const;
@@ -191,6 +210,7 @@ class RenderGraph {
         VkImageView view = VK_NULL_HANDLE;
         VkBuffer buffer = VK_NULL_HANDLE;
         ResourceState* persistent = nullptr;  // graph-owned: where the end state goes
+        bool lazily_allocated = false;
     };
     struct HistoryRequest {
         std::string name;
@@ -204,11 +224,15 @@ class RenderGraph {
     void realize_resources();
     void realize_history(HistoryRequest& request);
     void record_barriers(VkCommandBuffer cmd, std::span<const Barrier> barriers) const;
+    void record_pass(VkCommandBuffer cmd, uint32_t pass);
+    void execute_group(VkCommandBuffer cmd, uint32_t group);
+    VkRenderPass render_pass_of(uint32_t pass) const;
     void commit_states();
 
     vk::Context& context_;
     ResourceCache cache_;
     PassProfiler profiler_;
+    RenderPassCache render_passes_;
     vk::DestroyList* retired_ = nullptr;
     VkExtent2D output_{0, 0};
     uint64_t frames_ = 0;
@@ -223,6 +247,8 @@ class RenderGraph {
     std::vector<HistoryRequest> histories_;
     std::vector<std::shared_ptr<void>> pass_data_;  // add_pass<Data>'s, until begin_frame()
     BarrierPlan plan_;
+    std::vector<GroupPlan> groups_;
+    std::vector<VkRenderPass> group_passes_;  // per group
 };
 
 std::ostream& operator<<(std::ostream& out, const RenderGraph& graph);

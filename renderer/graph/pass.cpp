@@ -69,8 +69,8 @@ void PassBuilder::declare(uint32_t resource, bool image, Access access, Shader s
         (is_depth_kind(access) || access == Access::ColorAttachment))
         throw Error(where + access_name(access) + " does not fit format " +
                     format::name(r.image.format));
-    const bool attachment =
-        access == Access::ColorAttachment || is_depth_kind(access) || access == Access::ResolveDst;
+    const bool attachment = access == Access::ColorAttachment || is_depth_kind(access) ||
+                            access == Access::ResolveDst || access == Access::InputAttachment;
     if (pass.kind != PassKind::Graphics && attachment)
         throw Error(where + "a " + pass_kind_name(pass.kind) + " pass has no attachments");
     if (pass.kind == PassKind::Transfer && uses_shader_stage(access))
@@ -98,6 +98,24 @@ BufferHandle PassBuilder::read(BufferHandle buffer, Access access, Shader shader
 BufferHandle PassBuilder::write(BufferHandle buffer, Access access, Shader shader) {
     declare(buffer.index, false, access, shader, true);
     return buffer;
+}
+
+void PassBuilder::subpass(const std::string& group, uint32_t index) {
+    PassInfo& pass = graph_.passes_[pass_];
+    if (pass.kind != PassKind::Graphics || group.empty())
+        throw Error("render graph: pass '" + pass.name + "': only a graphics pass is a subpass" +
+                    (group.empty() ? " (of a named group)" : ""));
+    pass.group = group;
+    pass.subpass = index;
+}
+
+void PassBuilder::clear(ImageHandle image, const VkClearValue& value) {
+    PassInfo& pass = graph_.passes_[pass_];
+    graph_.resource(image.index, true, "clear()");
+    if (pass.group.empty())
+        throw Error("render graph: pass '" + pass.name +
+                    "': clear() is for subpasses (a pass on its own clears when it begins)");
+    pass.clears.push_back({image.index, value});
 }
 
 VkExtent2D PassBuilder::output_extent() const {
@@ -165,6 +183,9 @@ void PassContext::dependency(ImageHandle h, Access before, Access after) const {
             return i.resource == h.index && i.access == a;
         });
     };
+    if (!pass.group.empty())
+        throw Error("render graph: pass '" + pass.name +
+                    "' is a subpass: a barrier inside it would be a subpass self-dependency");
     if (!declared(before) || !declared(after))
         throw Error("render graph: pass '" + pass.name + "', '" + r.name +
                     "': dependency() between accesses it did not declare");
@@ -185,6 +206,14 @@ void PassContext::dependency(ImageHandle h, Access before, Access after) const {
                     .dst_stages = dst.stages,
                     .dst_access = dst.access};
     graph_.record_barriers(cmd_, {&b, 1});
+}
+
+VkRenderPass PassContext::render_pass() const {
+    return graph_.render_pass_of(pass_);
+}
+
+uint32_t PassContext::subpass() const {
+    return graph_.passes_[pass_].subpass;
 }
 
 bool PassContext::history_valid(const HistoryImage& history) const {

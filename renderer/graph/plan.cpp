@@ -52,6 +52,12 @@ std::optional<Barrier> step(ResourceState& s, const Use& use, uint32_t resource,
         // Write after read (a transition writes too): waiting for the readers is enough, the
         // write before them is ordered through them and was made available already.
         b.src_stages = s.read_stages;
+        // A real write before those reads (not a transition's): the validation layer's
+        // synchronization check wants a later layout transition to name it again.
+        if (transition && s.write_access) {
+            b.src_stages |= s.write_stages;
+            b.src_access = s.write_access;
+        }
     } else {
         b.src_stages = s.write_stages;
         b.src_access = s.write_access;
@@ -129,16 +135,27 @@ std::vector<PassUse> merge_uses(const PassInfo& pass, std::span<const ResourceIn
     return uses;
 }
 
-BarrierPlan plan_barriers(std::span<const ResourceInfo> resources,
-                          std::span<const PassInfo> passes) {
+BarrierPlan plan_barriers(std::span<const ResourceInfo> resources, std::span<const PassInfo> passes,
+                          std::span<const StoreWrite> store_writes) {
     BarrierPlan plan;
     std::vector<ResourceState> states;
     states.reserve(resources.size());
     for (const ResourceInfo& r : resources) states.push_back(r.initial);
 
-    for (const PassInfo& pass : passes) {
+    for (uint32_t index = 0; index < passes.size(); ++index) {
         PassPlan p;
-        p.uses = merge_uses(pass, resources);
+        p.uses = merge_uses(passes[index], resources);
+        for (const StoreWrite& w : store_writes) {
+            if (w.pass != index) continue;
+            for (PassUse& u : p.uses) {
+                if (u.resource != w.resource) continue;
+                const bool depth = resources[u.resource].depth();
+                u.use.stages |= depth ? VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT
+                                      : VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+                u.use.access |= depth ? VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT
+                                      : VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+            }
+        }
         for (const PassUse& u : p.uses) {
             const bool image = resources[u.resource].is_image;
             if (auto b = step(states[u.resource], u.use, u.resource, image))

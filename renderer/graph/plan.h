@@ -60,11 +60,22 @@ struct AccessInfo {
     Shader shader = Shader::Default;
 };
 
+// An attachment's LOAD_OP_CLEAR value, where a pass of a subpass group asked for it.
+struct AttachmentClear {
+    uint32_t resource = kNoResource;
+    VkClearValue value{};
+};
+
 struct PassInfo {
     std::string name;
     PassKind kind = PassKind::Graphics;
     std::vector<AccessInfo> accesses;  // in declaration order
     PassRole role = PassRole::Frame;
+    // A subpass of a render pass (graph/subpass.h): consecutive passes with the same group
+    // form one VkRenderPass; passes with the same index share a subpass. Empty: on its own.
+    std::string group;
+    uint32_t subpass = 0;
+    std::vector<AttachmentClear> clears;
 };
 
 struct Barrier {
@@ -100,11 +111,18 @@ struct BarrierPlan {
 // layout; any other mix of layouts falls back to GENERAL (valid for all of them).
 std::vector<PassUse> merge_uses(const PassInfo& pass, std::span<const ResourceInfo> resources);
 
+// A render pass's store op writes each attachment after the last subpass that uses it
+// (STORE and DONT_CARE alike): the plan counts that write into the resource's use there.
+struct StoreWrite {
+    uint32_t pass = kNoResource;
+    uint32_t resource = kNoResource;
+};
+
 // Passes run in the given order (no reordering, no culling). A barrier is emitted for
 // read-after-write, write-after-read, write-after-write and any layout change; none for a
 // read after a read in the same layout that the last write is already visible to.
-BarrierPlan plan_barriers(std::span<const ResourceInfo> resources,
-                          std::span<const PassInfo> passes);
+BarrierPlan plan_barriers(std::span<const ResourceInfo> resources, std::span<const PassInfo> passes,
+                          std::span<const StoreWrite> store_writes = {});
 
 // Usage flags of each resource from every access, plus TRANSFER_SRC (the capture layer can
 // read any resource back).

@@ -73,6 +73,7 @@ ShaderStages DepthPrepass::compile(const Variant& v) const {
         defines.push_back({"SURFACE_ID", "1"});
         vert_defines.push_back({"SURFACE_ID", "1"});
     }
+    if (v.render_pass) defines.push_back({"LIGHT_SLOT", "1"});
     if (v.history) {
         for (shader::Define& d :
              PixelHistoryReplay::defines(false, false, v.samples != VK_SAMPLE_COUNT_1_BIT))
@@ -134,6 +135,7 @@ vk::Pipeline DepthPrepass::create(const Variant& v, const ShaderStages& s) const
     if (v.history) return history_.create(s, v.samples, pipeline_name(v), inputs);
     vk::GraphicsPipelineBuilder b =
         scene_pipeline_builder(layout_.handle(), s.vert, s.frag, inputs);
+    if (v.render_pass) b.color_attachment(kHdrFormat).render_pass(v.render_pass, 0);
     for (VkFormat format : color_formats(v)) b.color_attachment(format);
     return b.depth_attachment(v.depth)
         .samples(v.samples)
@@ -155,23 +157,17 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
                          .depth = in.options.depth_format,
                          .count_draws = res.prepass_counts.draws.valid(),
                          .gbuffer = in.options.gbuffer,
-                         .coverage_slot = !in.options.gbuffer && in.options.alpha_to_coverage};
+                         .coverage_slot = !in.options.gbuffer && in.options.alpha_to_coverage &&
+                                          !in.options.subpass};
     // Only the pipeline with the alpha test changes: the opaque one keeps early-Z and its
     // variant, so normal frames share it.
     Variant tested = opaque;
     tested.alpha_to_coverage = in.options.alpha_to_coverage;
     tested.count_discards = in.options.count_discards;
     tested.alpha = in.options.masked_split ? AlphaTest::Mask : AlphaTest::Unsplit;
-    Draw draw;
-    if (in.options.masked_split) {
-        draw.opaque = pipelines_.get(opaque);
-        draw.opaque_info = pipelines_.info(opaque);
-        draw.mask = pipelines_.get(tested);
-        draw.mask_info = pipelines_.info(tested);
-    } else {
-        draw.opaque = pipelines_.get(tested);
-        draw.opaque_info = pipelines_.info(tested);
-    }
+    // A subpass's pipelines need the graph's render pass: record() gets them.
+    const Draw draw =
+        in.options.subpass ? Draw{} : make_draw(opaque, tested, in.options.masked_split);
     // count_discards=on: two counters in a host buffer, zeroed by the host before the submit.
     const graph::BufferHandle discards =
         in.options.count_discards
@@ -186,17 +182,25 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
         Msaa msaa;
         Draw draw;
         graph::BufferHandle discards;
+        Variant opaque, tested;
     };
     graph.add_pass<Data>(
         kName,
         [&](graph::PassBuilder& b, Data& d) {
-            const Msaa msaa = declare(b, in, res);
+            const Msaa msaa =
+                in.options.subpass ? declare_subpass(b, in, res) : declare(b, in, res);
             if (discards.valid())
                 b.write(discards, Access::StorageReadWrite, graph::Shader::Fragment);
-            d = {in, res, msaa, draw, discards};
+            d = {in, res, msaa, draw, discards, opaque, tested};
         },
         [this](graph::PassContext& ctx, const Data& d) {
-            record(ctx, d.in, d.res, d.msaa, d.draw, d.discards);
+            Draw draw = d.draw;
+            if (VkRenderPass pass = ctx.render_pass()) {
+                Variant opaque = d.opaque, tested = d.tested;
+                opaque.render_pass = tested.render_pass = pass;
+                draw = make_draw(opaque, tested, d.in.options.masked_split);
+            }
+            record(ctx, d.in, d.res, d.msaa, draw, d.discards);
         });
     rasterized_.add(graph, in, res, res.prepass_counts,
                     {.samples = in.options.samples,
@@ -358,9 +362,10 @@ void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const 
         write_count_set(ctx, services_.context.device(), draw.counts, res.prepass_counts);
     }
     queries_.reset(cmd);
-    begin(ctx, in, res, msaa);
+    const bool own_rendering = !ctx.render_pass();  // else a subpass of the graph's
+    if (own_rendering) begin(ctx, in, res, msaa);
     draw_scene(cmd, in, draw, uses_, nullptr);
-    vk::fn().cmd_end_rendering(cmd);
+    if (own_rendering) vk::fn().cmd_end_rendering(cmd);
 }
 
 void DepthPrepass::add_history(graph::RenderGraph& graph, const FrameInputs& in,

@@ -92,11 +92,14 @@ class DepthPrepass final : public FramePass {
         bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
         bool gbuffer = true;                   // prepass_mode=gbuffer: normals, roughness
         bool coverage_slot = false;  // depth mode, alpha_to_coverage: colour slot 0, no image
+        // render_path=subpass: subpass 0 of this render pass; LIGHT_SLOT=1 (the light is
+        // colour attachment 0: the surface's emission, none, and alpha-to-coverage's alpha).
+        VkRenderPass render_pass = VK_NULL_HANDLE;
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(int(alpha), counting, alpha_to_coverage, count_discards, surface_id,
                                history, int(samples), int(depth), count_draws, gbuffer,
-                               coverage_slot);
+                               coverage_slot, render_pass);
         }
     };
     // Whether the variant has a fragment stage: prepass_mode=depth's plain opaque one has none.
@@ -125,6 +128,13 @@ class DepthPrepass final : public FramePass {
     };
 
     Msaa declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res) const;
+    // render_path=subpass (depth_prepass_subpass.cpp): subpass 0 of kSubpassGroup. Attachment
+    // 0 is the light (res.hdr, or res.msaa_hdr), cleared; normals and roughness are
+    // multisampled at msaa > 1 and never resolved (forward reads every sample as an input
+    // attachment); the depth resolves after the render pass (depth_resolve).
+    Msaa declare_subpass(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res) const;
+    // The frame's pipelines: the opaque and alpha-tested variants (or the one unsplit one).
+    Draw make_draw(const Variant& opaque, const Variant& tested, bool split);
     VkDescriptorSet discard_set(graph::PassContext& ctx, const FrameInputs& in,
                                 graph::BufferHandle buffer);
     void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,

@@ -42,8 +42,11 @@ vk::Pipeline DepthResolvePass::create(const Variant& v, const ShaderStages& s) c
 
 void DepthResolvePass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const FrameOptions& o = in.options;
-    if (!o.msaa() || native_depth_resolve(services_.context.report(), o.reverse_z)) return;
-    if (o.prepass != (after_ == After::Prepass)) return;
+    // render_path=subpass resolves after the render pass, in this shader: the render pass
+    // plans no depth resolve.
+    if (!o.msaa() || (native_depth_resolve(services_.context.report(), o.reverse_z) && !o.subpass))
+        return;
+    if ((o.prepass && !o.subpass) != (after_ == After::Prepass)) return;
     const graph::ImageHandle msaa_depth = res.msaa_depth, depth = res.depth;
     graph.add_pass(name(), [&](graph::PassBuilder& b) {
         b.read(res.frame_uniforms, graph::Access::UniformRead,

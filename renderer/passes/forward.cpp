@@ -14,13 +14,24 @@ namespace ds::passes {
 using graph::Access;
 using scene::AlphaMode;
 
-namespace {}
+namespace {
+const VkDescriptorPoolSize kInputPoolSizes[] = {{VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT, 2}};
+
+vk::DescriptorSetLayout create_input_set_layout(vk::Context& context) {
+    const VkDescriptorSetLayoutBinding bindings[] = {
+        vk::layout_binding(0, VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT, VK_SHADER_STAGE_FRAGMENT_BIT),
+        vk::layout_binding(1, VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT, VK_SHADER_STAGE_FRAGMENT_BIT)};
+    return vk::DescriptorSetLayout(context, bindings, "forward input attachment set layout");
+}
+}  // namespace
 
 ForwardPass::ForwardPass(const PassServices& services)
     : services_(services),
       lighting_(services.context, services.preferred_depth_format),
       count_layout_(create_count_set_layout(services.context)),
+      input_layout_(create_input_set_layout(services.context)),
       count_sets_(services.context, 1, kCountPoolSizes, "forward count sets"),
+      input_sets_(services.context, 1, kInputPoolSizes, "forward input attachment sets"),
       rasterized_(services, kName),
       pipelines_([this](const Variant& v) { return compile(v); },
                  [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
@@ -34,6 +45,11 @@ ForwardPass::ForwardPass(const PassServices& services)
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
                                           lighting_.layout(), count_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "forward layout");
+    const VkDescriptorSetLayout subpass_sets[] = {services.frame_layout, services.material_layout,
+                                                  lighting_.layout(), count_layout_.handle(),
+                                                  input_layout_.handle()};
+    subpass_layout_ =
+        vk::PipelineLayout(services.context, subpass_sets, {}, "forward subpass layout");
     pipelines_.get({.prepass_inputs = true, .depth = services.preferred_depth_format});
 }
 
@@ -65,6 +81,8 @@ ShaderStages ForwardPass::compile(const Variant& v) const {
     std::vector<shader::Define> vert_defines, frag_defines;
     if (v.non_invariant) vert_defines.push_back({"NON_INVARIANT", "1"});
     if (v.prepass_inputs) frag_defines.push_back({"PREPASS", "1"});
+    if (v.gbuffer_inputs)
+        frag_defines.push_back({"SUBPASS_INPUTS", std::to_string(int(v.samples))});
     if (v.alpha_mask) frag_defines.push_back({"ALPHA_MASK", "1"});
     if (v.counting) add_count_defines(frag_defines, vert_defines, services_.context, v.count_draws);
     if (v.alpha_to_coverage) frag_defines.push_back({"ALPHA_TO_COVERAGE", "1"});
@@ -90,13 +108,16 @@ std::string ForwardPass::pipeline_name(const Variant& v) {
     if (v.alpha_to_coverage) name += " a2c";
     if (v.counting) name += " counting";
     if (v.history) name += " history";
+    if (v.gbuffer_inputs) name += " input attachments";
     return name;
 }
 
 vk::Pipeline ForwardPass::create(const Variant& v, const ShaderStages& s) const {
     if (v.history) return history_.create(s, v.samples, pipeline_name(v));
-    return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
-        .color_attachment(kHdrFormat)
+    vk::GraphicsPipelineBuilder b = scene_pipeline_builder(
+        v.gbuffer_inputs ? subpass_layout_.handle() : layout_.handle(), s.vert, s.frag);
+    if (v.render_pass) b.render_pass(v.render_pass, 1);
+    return b.color_attachment(kHdrFormat)
         .depth_attachment(v.depth)
         .samples(v.samples)
         .sample_shading(v.sample_shading ? 1.0f : 0.0f)
@@ -108,48 +129,64 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
     const FrameOptions& o = in.options;
     // prepass_mode=depth: the prepass left only depth, so forward computes normal and
     // roughness itself (its non-PREPASS path), still under EQUAL without depth writes.
-    const Variant opaque{.prepass_inputs = o.gbuffer_prepass(),
+    // render_path=subpass: the G-buffer arrives as input attachments instead (subpass 1).
+    const Variant opaque{.prepass_inputs = o.gbuffer_prepass() && !o.subpass,
                          .non_invariant = !o.invariant,
                          .counting = res.forward_counts.valid(),
                          .sample_shading = o.sample_shading,
                          .samples = o.samples,
                          .depth = o.depth_format,
-                         .count_draws = res.forward_counts.draws.valid()};
+                         .count_draws = res.forward_counts.draws.valid(),
+                         .gbuffer_inputs = o.subpass && o.gbuffer};
     // The pipelines with the alpha test: alpha-to-coverage replaces their discard.
     Variant mask = opaque;
     mask.alpha_mask = true;
     mask.alpha_to_coverage = o.alpha_to_coverage;
-    Draw draw;
-    draw.opaque = pipelines_.get(opaque);
-    draw.opaque_info = pipelines_.info(opaque);
     // Only EQUAL makes the alpha test redundant: with greater_or_equal the cut-out parts of a
     // MASK surface are nearer than what the prepass kept there, and would pass.
-    if (!o.prepass || !o.depth_equal) {
-        draw.mask = pipelines_.get(mask);
-        draw.mask_info = pipelines_.info(mask);
-    }
+    const bool with_mask = !o.prepass || !o.depth_equal;
+    // A subpass's pipelines need the graph's render pass: record() gets them.
+    Draw draw = o.subpass ? Draw{} : make_draw(opaque, mask, with_mask);
     uses_.clear();
     queries_.begin_frame(o.count_draws && !o.prepass, uint32_t(in.scene->draw_groups().size()));
     history_.clear();
+    const bool sampled_gbuffer = o.gbuffer_prepass() && !o.subpass;
     draw.lighting = {.shadow_map = res.shadow_map,
-                     .normals = o.gbuffer_prepass() ? res.normals : graph::ImageHandle{},
-                     .roughness = o.gbuffer_prepass() ? res.roughness : graph::ImageHandle{},
+                     .normals = sampled_gbuffer ? res.normals : graph::ImageHandle{},
+                     .roughness = sampled_gbuffer ? res.roughness : graph::ImageHandle{},
                      .ao = res.ao,
                      .contact_shadows = res.contact_shadows};
     // The record lambda needs the handles setup creates: they travel in the pass's Data.
-    if (in.pixel) add_history(graph, in, res, opaque, mask, draw);
+    // Not between the subpasses: a replay there would split the render pass.
+    if (in.pixel && !o.subpass) add_history(graph, in, res, opaque, mask, draw);
     struct Data {
         FrameInputs in;
         FrameResources res;
         Draw draw;
+        Variant opaque, mask;
+        bool with_mask;
     };
     graph.add_pass<Data>(
         kName,
         [&](graph::PassBuilder& b, Data& d) {
-            declare(b, in, res, draw.lighting);
-            d = {in, res, draw};
+            if (o.subpass)
+                declare_subpass(b, in, res, draw.lighting);
+            else
+                declare(b, in, res, draw.lighting);
+            d = {in, res, draw, opaque, mask, with_mask};
         },
-        [this](graph::PassContext& ctx, const Data& d) { record(ctx, d.in, d.res, d.draw); });
+        [this](graph::PassContext& ctx, const Data& d) {
+            Draw draw = d.draw;
+            if (VkRenderPass pass = ctx.render_pass()) {
+                Variant opaque = d.opaque, mask = d.mask;
+                opaque.render_pass = mask.render_pass = pass;
+                const LightingInputs lighting = draw.lighting;
+                draw = make_draw(opaque, mask, d.with_mask);
+                draw.lighting = lighting;
+                draw.layout = opaque.gbuffer_inputs ? subpass_layout_.handle() : VK_NULL_HANDLE;
+            }
+            record(ctx, d.in, d.res, draw);
+        });
     using Vertex = RasterizedCount::Vertex;
     rasterized_.add(graph, in, res, res.forward_counts,
                     {.vertex = o.invariant ? Vertex::Scene : Vertex::SceneNonInvariant,
@@ -199,13 +236,19 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     const VkDescriptorSet lighting = lighting_.write(ctx, in.frame_number, draw.lighting);
 
     queries_.reset(cmd);
-    begin(ctx, o, res);
+    const bool own_rendering = !ctx.render_pass();  // else subpass 1 of the graph's
+    if (own_rendering) begin(ctx, o, res);
+    if (draw.layout == subpass_layout_.handle()) {
+        const VkDescriptorSet inputs = input_set(ctx, in, res);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.layout, 4, 1, &inputs, 0,
+                                nullptr);
+    }
     const VkCompareOp test = !o.prepass      ? o.closer()
                              : o.depth_equal ? VK_COMPARE_OP_EQUAL
                                              : o.closer_or_equal();
     set_depth_state(cmd, /*test=*/true, /*write=*/!o.prepass, test);
     draw_scene(cmd, in, draw, lighting, counts, uses_, nullptr);
-    vk::fn().cmd_end_rendering(cmd);
+    if (own_rendering) vk::fn().cmd_end_rendering(cmd);
 }
 
 void ForwardPass::add_history(graph::RenderGraph& graph, const FrameInputs& in,

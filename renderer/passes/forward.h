@@ -50,8 +50,7 @@ class ForwardPass final : public FramePass {
   public:
     static constexpr const char* kName = "forward";
     static constexpr VkFormat kHdrFormat = passes::kHdrFormat;
-    // Linear radiance behind everything when the sky pass is off.
-    static constexpr std::array<float, 4> kBackground = {0.25f, 0.42f, 0.85f, 1.0f};
+    static constexpr std::array<float, 4> kBackground = kHdrBackground;
 
     explicit ForwardPass(const PassServices& services);
 
@@ -79,11 +78,15 @@ class ForwardPass final : public FramePass {
         // history only: the replay reads the depth the prepass left (PIXEL_HISTORY_DEPTH), in
         // either prepass_mode (prepass_inputs is gbuffer's only).
         bool after_prepass = false;
+        // render_path=subpass: subpass 1 of this render pass; with gbuffer_inputs, normals
+        // and roughness come from input attachments (SUBPASS_INPUTS=samples), set 4.
+        VkRenderPass render_pass = VK_NULL_HANDLE;
+        bool gbuffer_inputs = false;
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(prepass_inputs, alpha_mask, non_invariant, counting, sample_shading,
                                alpha_to_coverage, history, int(samples), int(depth), count_draws,
-                               after_prepass);
+                               after_prepass, render_pass, gbuffer_inputs);
         }
     };
 
@@ -113,12 +116,24 @@ class ForwardPass final : public FramePass {
     void add_history(graph::RenderGraph& graph, const FrameInputs& in, const FrameResources& res,
                      const Variant& opaque, const Variant& mask, const Draw& draw);
     bool native_resolve(const FrameOptions& o) const;
+    // The frame's pipelines for `opaque` and `mask` (mask: none where EQUAL does its work).
+    Draw make_draw(const Variant& opaque, const Variant& mask, bool with_mask);
+    // render_path=subpass (forward_subpass.cpp): subpass 1 of kSubpassGroup, reading the light
+    // the prepass cleared, its depth read-only, its normals and roughness as input attachments.
+    void declare_subpass(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res,
+                         const LightingInputs& lighting) const;
+    // Set 4 of the subpass pipelines: the input attachments, written for this frame.
+    VkDescriptorSet input_set(graph::PassContext& ctx, const FrameInputs& in,
+                              const FrameResources& res);
 
     PassServices services_;
     LightingSet lighting_;
     vk::DescriptorSetLayout count_layout_;
     vk::PipelineLayout layout_;
+    vk::DescriptorSetLayout input_layout_;  // set 4 of subpass_layout_
+    vk::PipelineLayout subpass_layout_;     // layout_'s sets and the input attachments
     FrameDescriptorPool count_sets_;
+    FrameDescriptorPool input_sets_;
     RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
     PipelineUses uses_;  // this frame's

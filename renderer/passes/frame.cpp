@@ -139,6 +139,14 @@ FrameOptions FrameOptions::from(const Settings& s) {
     o.surface_id =
         (s.get_bool("surface_id") || o.zfight || o.equal_check || o.count_draws) && o.prepass;
     o.depth_choice = depth_choice_of(s.get("depth_format"));
+    o.subpass = s.get("render_path") == "subpass" && o.prepass;
+    if (o.subpass) {
+        // Nothing may run between the subpasses, and a render pass leaves no room for the
+        // per-pass instruments (query resets, storage counters read by the next subpass).
+        o.gtao = o.contact_shadows = false;
+        o.equal_check = o.count_draws = o.count_fragments = o.count_discards = false;
+        o.zfight = o.depth_precision = o.surface_id = false;
+    }
     o.znear = plane(s, "znear");
     o.zfar = plane(s, "zfar");
     return o;

@@ -62,6 +62,11 @@ inline constexpr uint32_t kFrameReverseZ = 1u << 3;
 // Formats of the frame's imported colour targets (FrameTargets creates them).
 inline constexpr VkFormat kFinalFormat = VK_FORMAT_R8G8B8A8_SRGB;      // tonemap writes it
 inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // scene colour
+// The scene colour's clear: linear radiance behind everything when the sky pass is off.
+inline constexpr std::array<float, 4> kHdrBackground = {0.25f, 0.42f, 0.85f, 1.0f};
+
+// render_path=subpass: the render pass prepass (subpass 0) and forward + skybox (subpass 1) form.
+inline constexpr const char* kSubpassGroup = "gbuffer_lighting";
 
 // depth_format's choices; the VkFormat each names depends on the device (resolve_depth_format).
 enum class DepthChoice : uint8_t { D32f, D24, D16 };
@@ -73,6 +78,10 @@ struct FrameOptions {
     // depth: Z only (opaque pipeline without a fragment stage). Meaningful with the prepass.
     bool gbuffer = true;
     bool depth_equal = true;  // depth_compare=equal (else greater_or_equal; prepass on)
+    // render_path=subpass (effective: with the prepass): prepass, forward and skybox are the
+    // two subpasses of one render pass (kSubpassGroup); the passes that need neighbours
+    // (gtao, contact_shadows) or instrument a pass (counts, surface_id, zfight, ...) are off.
+    bool subpass = false;
     bool masked_split = true;
     bool prepass_sort = true;           // prepass draws instances front to back
     std::optional<float> alpha_cutoff;  // none: each material's own

@@ -42,6 +42,7 @@ vk::Pipeline create_fullscreen(vk::Context& context, const FullscreenPipeline& p
         .layout(p.layout);
     if (p.color != VK_FORMAT_UNDEFINED) b.color_attachment(p.color);
     if (p.depth != VK_FORMAT_UNDEFINED) b.depth_attachment(p.depth);
+    if (p.render_pass) b.render_pass(p.render_pass, p.subpass);
     return b.build(context, p.name);
 }
 
@@ -217,7 +218,14 @@ void collect_counts(const HostReadback& readback, const CountImages& counts, Pas
 }
 
 std::string off_or_without_prepass(const FrameInputs& in, const char* knob) {
-    return in.settings->get_bool(knob) ? std::string("prepass off") : std::string(knob) + "=off";
+    if (!in.settings->get_bool(knob)) return std::string(knob) + "=off";
+    if (in.options.subpass) return subpass_path_reason();
+    return "prepass off";
+}
+
+std::string subpass_path_reason() {
+    return "render_path=subpass: nothing runs between the subpasses, and tile memory holds no "
+           "neighbours";
 }
 
 VkResolveModeFlagBits native_depth_resolve(const vk::DeviceReport& report, bool reverse_z) {

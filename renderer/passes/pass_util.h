@@ -71,6 +71,8 @@ struct FullscreenPipeline {
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     VkPipelineLayout layout = VK_NULL_HANDLE;
     const char* name = "";
+    VkRenderPass render_pass = VK_NULL_HANDLE;  // a subpass of it (render_path=subpass)
+    uint32_t subpass = 0;
 };
 ShaderStages compile_fullscreen(shader::Compiler& compiler, const char* fragment);
 vk::Pipeline create_fullscreen(vk::Context& context, const FullscreenPipeline& pipeline,
@@ -97,8 +99,11 @@ void begin_hdr_over_depth(graph::PassContext& ctx, const FrameResources& res, bo
                           bool resolve);
 
 // Why a pass that needs the prepass's depth and normals (gtao and its filters, contact
-// shadows) is not in the frame: "<knob>=off", or "prepass off" when the knob is on.
+// shadows) is not in the frame: "<knob>=off", or "prepass off" / the subpass path's reason
+// when the knob is on.
 std::string off_or_without_prepass(const FrameInputs& in, const char* knob);
+// Why a pass is not in a render_path=subpass frame.
+std::string subpass_path_reason();
 
 // The resolve mode that keeps the nearest depth (reverse-Z: MAX, else MIN) when `report`
 // offers it; NONE otherwise (then the depth_resolve pass resolves in a shader).

@@ -32,7 +32,9 @@ vk::Pipeline SkyboxPass::create(const Variant& v, const ShaderStages& s) const {
                               .depth = v.depth,
                               .samples = v.samples,
                               .layout = layout_.handle(),
-                              .name = "skybox"},
+                              .name = "skybox",
+                              .render_pass = v.render_pass,
+                              .subpass = 1},
                              s);
 }
 
@@ -43,8 +45,7 @@ std::optional<std::string> SkyboxPass::skipped(const FrameInputs& in) const {
 
 void SkyboxPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     if (!in.options.sky) return;
-    const VkPipeline pipeline =
-        pipelines_.get({.samples = in.options.samples, .depth = in.options.depth_format});
+    const Variant variant{.samples = in.options.samples, .depth = in.options.depth_format};
     // msaa > 1: into the multisampled colour, against the multisampled depth, before
     // transparent resolves: a silhouette pixel's sky samples blend with its surface samples.
     const bool msaa = in.options.msaa();
@@ -57,27 +58,33 @@ void SkyboxPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
     graph.add_pass<Data>(
         kName,
         [&](graph::PassBuilder& b, Data& d) {
+            if (in.options.subpass) b.subpass(kSubpassGroup, 1);
             b.read(depth_image, Access::DepthReadOnly);
             b.write(hdr, Access::ColorAttachment);
             b.read(res.frame_uniforms, Access::UniformRead,
                    graph::Shader::Vertex | graph::Shader::Fragment);
             d = {in, hdr, depth_image};
         },
-        [this, pipeline](graph::PassContext& ctx, const Data& d) {
+        [this, variant](graph::PassContext& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
-            const VkRenderingAttachmentInfo color =
-                color_attachment(ctx.view(d.hdr), VK_ATTACHMENT_LOAD_OP_LOAD);
-            const VkRenderingAttachmentInfo depth =
-                depth_attachment(ctx.view(d.depth), ctx.layout(d.depth), VK_ATTACHMENT_LOAD_OP_LOAD,
-                                 VK_ATTACHMENT_STORE_OP_NONE);
-            begin_rendering(cmd, ctx.extent(d.hdr), {&color, 1}, &depth);
+            Variant v = variant;
+            v.render_pass = ctx.render_pass();  // null: its own rendering
+            const VkPipeline pipeline = pipelines_.get(v);
+            if (!v.render_pass) {
+                const VkRenderingAttachmentInfo color =
+                    color_attachment(ctx.view(d.hdr), VK_ATTACHMENT_LOAD_OP_LOAD);
+                const VkRenderingAttachmentInfo depth =
+                    depth_attachment(ctx.view(d.depth), ctx.layout(d.depth),
+                                     VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_NONE);
+                begin_rendering(cmd, ctx.extent(d.hdr), {&color, 1}, &depth);
+            }
             set_depth_state(cmd, /*test=*/true, /*write=*/false, d.in.options.closer_or_equal());
             vk::fn().cmd_set_cull_mode(cmd, VK_CULL_MODE_NONE);
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.handle(), 0, 1,
                                     &d.in.frame_set, 0, nullptr);
             vkCmdDraw(cmd, 3, 1, 0, 0);
-            vk::fn().cmd_end_rendering(cmd);
+            if (!v.render_pass) vk::fn().cmd_end_rendering(cmd);
         });
 }
 

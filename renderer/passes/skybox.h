@@ -25,7 +25,8 @@ class SkyboxPass final : public FramePass {
     const char* name() const override { return kName; }
     void rebuild_pipelines(vk::DestroyList& retired) override;
     std::optional<std::string> skipped(const FrameInputs& in) const override;
-    // Reads res.depth (read-only attachment), draws into res.hdr.
+    // Reads res.depth (read-only attachment), draws into res.hdr. render_path=subpass: in
+    // subpass 1 of kSubpassGroup, after forward (so before decals, which are not in it).
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
 
   private:
@@ -33,8 +34,9 @@ class SkyboxPass final : public FramePass {
     struct Variant {
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;
+        VkRenderPass render_pass = VK_NULL_HANDLE;  // render_path=subpass: its subpass 1
         bool operator==(const Variant&) const = default;
-        size_t hash() const { return hash_fields(int(samples), int(depth)); }
+        size_t hash() const { return hash_fields(int(samples), int(depth), render_pass); }
     };
 
     ShaderStages compile(const Variant& variant) const;

@@ -280,6 +280,13 @@ SettingsRegistry::SettingsRegistry() {
                   "computes normals and roughness itself and gtao / contact_shadows read normals "
                   "reconstructed from depth (normals_from_depth)",
                   I::Nothing),
+        // Seed 002's tiler path (DESIGN.md "As built (issue 15: the subpass path)").
+        enum_knob("render_path", "prepass and depth", {"dynamic", "subpass"},
+                  "dynamic: every pass on its own (dynamic rendering); subpass: depth prepass, "
+                  "forward and sky as two subpasses of one render pass, forward reading normals "
+                  "and roughness as input attachments (tile memory on a tiler); needs the prepass; "
+                  "gtao, contact_shadows and the per-pass diagnostics do not run on it",
+                  I::Nothing),
         enum_knob("depth_compare", "prepass and depth", {"equal", "greater_or_equal"},
                   "forward pass depth test against the prepass depth (prepass on)", I::Nothing),
         bool_knob("masked_split", "prepass and depth", true,

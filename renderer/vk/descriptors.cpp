@@ -102,6 +102,13 @@ DescriptorWriter& DescriptorWriter::storage_image(uint32_t binding, VkImageView 
     return *this;
 }
 
+DescriptorWriter& DescriptorWriter::input_attachment(uint32_t binding, VkImageView view,
+                                                     VkImageLayout layout) {
+    image(binding, view, VK_NULL_HANDLE, layout);
+    writes_.back().descriptorType = VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT;
+    return *this;
+}
+
 void DescriptorWriter::update(VkDevice device, VkDescriptorSet set) {
     for (VkWriteDescriptorSet& w : writes_) w.dstSet = set;
     vkUpdateDescriptorSets(device, uint32_t(writes_.size()), writes_.data(), 0, nullptr);

@@ -71,6 +71,7 @@ class DescriptorWriter {
                             VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     DescriptorWriter& storage_image(uint32_t binding, VkImageView view,
                                     VkImageLayout layout = VK_IMAGE_LAYOUT_GENERAL);
+    DescriptorWriter& input_attachment(uint32_t binding, VkImageView view, VkImageLayout layout);
     void update(VkDevice device, VkDescriptorSet set);
 
   private:

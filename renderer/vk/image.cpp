@@ -84,7 +84,9 @@ Image::Image(Context& context, const ImageDesc& desc) : context_(&context), desc
         vkGetImageMemoryRequirements2(device, &req_info, &req);
         AllocationRequest request;
         request.requirements = req.memoryRequirements;
-        request.usage = MemoryUsage::GpuOnly;
+        // A transient attachment (tile memory only) takes lazily allocated memory if any.
+        request.usage = desc.usage & VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT ? MemoryUsage::Lazy
+                                                                             : MemoryUsage::GpuOnly;
         request.kind = ResourceKind::Optimal;
         request.dedicated =
             dedicated.prefersDedicatedAllocation || dedicated.requiresDedicatedAllocation;

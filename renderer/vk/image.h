@@ -47,6 +47,7 @@ class Image {
     uint32_t mip_levels() const { return desc_.mip_levels; }
     VkSampleCountFlagBits samples() const { return desc_.samples; }
     VkImageAspectFlags aspect() const { return aspect_flags(desc_.format); }
+    bool lazily_allocated() const { return allocation_.lazily_allocated; }
 
   private:
     Context* context_ = nullptr;

@@ -25,6 +25,9 @@ TypeWish wish_for(MemoryUsage usage) {
         case MemoryUsage::Readback:
             return {VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT,
                     VK_MEMORY_PROPERTY_HOST_CACHED_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT};
+        case MemoryUsage::Lazy:
+            return {0,
+                    VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT | VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT};
     }
     return {0, 0};
 }
@@ -37,6 +40,8 @@ const char* usage_name(MemoryUsage usage) {
             return "upload";
         case MemoryUsage::Readback:
             return "readback";
+        case MemoryUsage::Lazy:
+            return "lazily allocated";
     }
     return "?";
 }
@@ -133,6 +138,8 @@ Allocation Allocator::allocate_dedicated(const AllocationRequest& request, uint3
     a.mapped = map_if_host_visible(a.memory, type);
     a.memory_type = type;
     a.coherent = props_.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    a.lazily_allocated =
+        props_.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT;
     a.pool = -1;
     ++dedicated_count_;
     dedicated_bytes_ += a.size;
@@ -158,7 +165,8 @@ Allocation Allocator::allocate(const AllocationRequest& request) {
                     bytes_text(max_allocation_) + ")");
     const uint32_t type = choose_memory_type(req.memoryTypeBits, request.usage);
     // Anything over half a block would waste most of a block: give it its own memory.
-    if (request.dedicated || req.size > block_size_ / 2) return allocate_dedicated(request, type);
+    if (request.dedicated || request.usage == MemoryUsage::Lazy || req.size > block_size_ / 2)
+        return allocate_dedicated(request, type);
 
     int32_t pool_index = -1;
     Pool& pool = pool_for(type, request.kind, pool_index);
@@ -180,6 +188,8 @@ Allocation Allocator::allocate(const AllocationRequest& request) {
     a.mapped = pool.mapped[sub->block] ? pool.mapped[sub->block] + sub->offset : nullptr;
     a.memory_type = type;
     a.coherent = props_.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    a.lazily_allocated =
+        props_.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT;
     a.pool = pool_index;
     a.sub = *sub;
     return a;

@@ -17,6 +17,9 @@ enum class MemoryUsage : uint8_t {
     GpuOnly,   // DEVICE_LOCAL: attachments, textures, vertex data
     Upload,    // HOST_VISIBLE (coherent preferred): staging, per-frame constants
     Readback,  // HOST_VISIBLE (cached preferred): image and query read-back
+    // Transient attachments (tile memory on a tiler): LAZILY_ALLOCATED where the device has
+    // it, else what GpuOnly gets. Always a dedicated allocation.
+    Lazy,
 };
 
 // Linear (buffers, linear images) and optimal images live in separate pools: that is how
@@ -40,6 +43,7 @@ struct Allocation {
     std::byte* mapped = nullptr;  // host-visible memory only; already offset
     uint32_t memory_type = 0;
     bool coherent = true;
+    bool lazily_allocated = false;  // the memory type is LAZILY_ALLOCATED
     // Bookkeeping for free(): pool index, or -1 for a dedicated allocation.
     int32_t pool = -1;
     SubAllocation sub;

@@ -197,6 +197,12 @@ std::vector<VkPipelineShaderStageCreateInfo> GraphicsPipelineBuilder::create_sta
     return stages;
 }
 
+GraphicsPipelineBuilder& GraphicsPipelineBuilder::render_pass(VkRenderPass pass, uint32_t subpass) {
+    render_pass_ = pass;
+    subpass_ = subpass;
+    return *this;
+}
+
 Pipeline GraphicsPipelineBuilder::build(Context& context, const char* name) const {
     VkDevice device = context.device();
     Modules modules{device, {}};
@@ -231,7 +237,9 @@ Pipeline GraphicsPipelineBuilder::build(Context& context, const char* name) cons
     rendering.depthAttachmentFormat = depth_format_;
 
     auto info = make<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
-                                                   &rendering);
+                                                   render_pass_ ? nullptr : &rendering);
+    info.renderPass = render_pass_;
+    info.subpass = subpass_;
     info.stageCount = uint32_t(stages.size());
     info.pStages = stages.data();
     info.pVertexInputState = &vertex;

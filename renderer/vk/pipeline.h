@@ -31,6 +31,8 @@ class PipelineLayout {
   private:
     VkDevice device_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkRenderPass render_pass_ = VK_NULL_HANDLE;
+    uint32_t subpass_ = 0;
 };
 
 class Pipeline {
@@ -74,6 +76,9 @@ class GraphicsPipelineBuilder {
     // Static depth bias (depthBiasConstantFactor, depthBiasSlopeFactor; no clamp).
     GraphicsPipelineBuilder& depth_bias(float constant, float slope);
     GraphicsPipelineBuilder& layout(VkPipelineLayout layout);
+    // For subpass `subpass` of a VkRenderPass (render graph subpass groups) instead of dynamic
+    // rendering; the colour attachments must still be listed (their blend states).
+    GraphicsPipelineBuilder& render_pass(VkRenderPass pass, uint32_t subpass);
 
     Pipeline build(Context& context, const char* name = nullptr) const;  // throws ds::Error
 
@@ -97,6 +102,8 @@ class GraphicsPipelineBuilder {
     VkFrontFace front_face_ = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     float depth_bias_constant_ = 0.0f, depth_bias_slope_ = 0.0f;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkRenderPass render_pass_ = VK_NULL_HANDLE;
+    uint32_t subpass_ = 0;
 };
 
 // A compute pipeline from SPIR-V (the module is destroyed once the pipeline exists).
