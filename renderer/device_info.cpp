@@ -43,6 +43,7 @@ DeviceInfo device_info(const Renderer& renderer) {
     const VkSampleCountFlags samples = d.color_sample_counts & d.depth_sample_counts;
     for (int n = 1; n <= 8; n *= 2)
         if (samples & VkSampleCountFlags(n)) info.msaa_counts.push_back(n);
+    info.standard_sample_locations = d.standard_sample_locations;
     info.fragment_counts = d.fragment_stores_and_atomics;
     info.draw_counts =
         d.fragment_stores_and_atomics && d.occlusion_query_precise && d.geometry_shader;

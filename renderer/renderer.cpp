@@ -16,6 +16,7 @@
 #include "renderer/graph/graph.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
+#include "renderer/passes/msaa_samples.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
@@ -52,6 +53,20 @@ void check_device(const vk::DeviceReport& report, passes::FrameOptions& options)
 }
 
 constexpr const char* kFinalImageName = "final";
+
+// The sample view's rectangle: it starts inside the frame (the pass clamps its far corner), is
+// not empty and not larger than the pass reads.
+void check_sample_query(const std::optional<SampleQuery>& q, uint32_t width, uint32_t height) {
+    if (!q) return;
+    const std::string rect = std::to_string(q->x) + "," + std::to_string(q->y) + " " +
+                             std::to_string(q->width) + "x" + std::to_string(q->height);
+    if (q->x >= width || q->y >= height || q->width == 0 || q->height == 0)
+        throw Error("render: sample rectangle " + rect + " is empty or outside the frame (" +
+                    std::to_string(width) + "x" + std::to_string(height) + ")");
+    if (uint64_t(q->width) * q->height > passes::MsaaSamplesPass::kMaxPixels)
+        throw Error("render: sample rectangle " + rect + " has more than " +
+                    std::to_string(passes::MsaaSamplesPass::kMaxPixels) + " pixels");
+}
 
 std::vector<ResourceSummary> summarize(const graph::RenderGraph& graph) {
     std::vector<ResourceSummary> out;
@@ -434,14 +449,16 @@ uint64_t Renderer::Impl::record(Slot& slot, VkCommandBuffer cmd) {
 
 FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& settings,
                              uint32_t width, uint32_t height, ReadBack read_back,
-                             const InspectRequest& inspect,
-                             const std::optional<PixelQuery>& pixel) {
-    return render(scene_camera, settings, width, height, read_back, std::span(&inspect, 1), pixel);
+                             const InspectRequest& inspect, const std::optional<PixelQuery>& pixel,
+                             const std::optional<SampleQuery>& samples) {
+    return render(scene_camera, settings, width, height, read_back, std::span(&inspect, 1), pixel,
+                  samples);
 }
 FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& settings,
                              uint32_t width, uint32_t height, ReadBack read_back,
                              std::span<const InspectRequest> inspect,
-                             const std::optional<PixelQuery>& pixel) {
+                             const std::optional<PixelQuery>& pixel,
+                             const std::optional<SampleQuery>& samples) {
     Impl& r = live();
     if (!r.scene) throw Error("render: no scene (call set_scene first)");
     if (width == 0 || height == 0)
@@ -451,7 +468,11 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
         throw Error("render: pixel " + std::to_string(pixel->x) + "," + std::to_string(pixel->y) +
                     " is outside the frame (" + std::to_string(width) + "x" +
                     std::to_string(height) + ")");
-    const passes::FrameOptions options = r.options_for(settings);
+    check_sample_query(samples, width, height);
+    passes::FrameOptions options = r.options_for(settings);
+    // The sample view names the surface of every sample: the prepass writes them for it.
+    if (samples && options.prepass && r.context->report().geometry_shader)
+        options.surface_id = true;
     // The scene camera with the znear / zfar knobs, checked before the frame begins; the
     // frame uses only this one.
     const scene::Camera camera = passes::effective_camera(scene_camera, options);
@@ -473,7 +494,8 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
                                  .settings = &settings,
                                  .read_back = read_back,
                                  .inspect = {inspect.begin(), inspect.end()},
-                                 .pixel = pixel};
+                                 .pixel = pixel,
+                                 .samples = samples};
     const passes::FrameResources res = r.build_graph(in, slot, frame.retired);
     r.write_uniforms(slot, camera, in, res);
     r.graph->compile();

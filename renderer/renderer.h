@@ -52,15 +52,20 @@ class Renderer {
     // depth_format the device lacks, or planes (`camera`'s with the znear / zfar knobs) that
     // are not 0 < znear < zfar.
     // `pixel`: FrameResult::pixel_history for that pixel (ds::Error outside the frame).
+    // `samples`: FrameResult::msaa_samples for that rectangle, clamped to the frame (ds::Error
+    // when it starts outside the frame, is empty or larger than MsaaSamplesPass::kMaxPixels);
+    // such a frame has surface_id on (with the prepass) whatever the settings say.
     FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
                        uint32_t height, ReadBack read_back = ReadBack::Yes,
                        const InspectRequest& inspect = {},
-                       const std::optional<PixelQuery>& pixel = std::nullopt);
+                       const std::optional<PixelQuery>& pixel = std::nullopt,
+                       const std::optional<SampleQuery>& samples = std::nullopt);
     // The same with several images read back: the first is FrameResult::inspected, the others
     // FrameResult::overlays (the viewer's overlays and what it derives views from).
     FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
                        uint32_t height, ReadBack read_back, std::span<const InspectRequest> inspect,
-                       const std::optional<PixelQuery>& pixel = std::nullopt);
+                       const std::optional<PixelQuery>& pixel = std::nullopt,
+                       const std::optional<SampleQuery>& samples = std::nullopt);
     // A camera cut: the next frame's temporal passes start over (no history, and its
     // previous_view_projection is its own). set_scene() and a new size imply one.
     void camera_cut();

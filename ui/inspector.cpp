@@ -300,10 +300,11 @@ void Inspector::pick_pixel(const PickPixel& pick) {
         FrameResult f;
         worker_->exclusive([&](Renderer& r) {
             f = r.render(camera_.camera(), settings_, size.width, size.height, ReadBack::No,
-                         InspectRequest{}, PixelQuery{x, y});
+                         InspectRequest{}, PixelQuery{x, y}, SampleQuery{x, y, 1, 1});
         });
         pixel_history_ = f.pixel_history;
         pixel_depth_ = f.depth;
+        pixel_samples_ = f.msaa_samples;
         pixel_label_ =
             scene_.name + " at " + std::to_string(size.width) + "x" + std::to_string(size.height);
         pixel_error_.clear();
@@ -401,6 +402,28 @@ ViewerBlit Inspector::viewer_blit() const {
     b.nearest = zoom >= sx;
     b.version = view_version_;
     return b;
+}
+
+const MsaaSamples* Inspector::shown_samples() const {
+    if (!frame_.msaa_samples || !sample_view_wanted()) return nullptr;
+    return &*frame_.msaa_samples;
+}
+
+std::optional<SurfaceInfo> Inspector::describe_surface(uint32_t id) const {
+    return renderer_.describe_surface(id);
+}
+
+std::optional<PixelSampleList> Inspector::sample_list_at(uint32_t x, uint32_t y) const {
+    const MsaaSamples* samples = shown_samples();
+    if (!samples || !frame_.depth) return std::nullopt;
+    return sample_list(*samples, x, y, *frame_.depth, device_.standard_sample_locations,
+                       [this](uint32_t id) { return describe_surface(id); });
+}
+
+std::vector<CoverageRow> Inspector::pixel_coverage() const {
+    if (!pixel_history_ || !pixel_samples_ || pixel_samples_->samples < 2) return {};
+    return coverage_rows(*pixel_history_, *pixel_samples_,
+                         [this](uint32_t id) { return describe_surface(id); });
 }
 
 }  // namespace ds::ui

@@ -34,6 +34,7 @@
 #include "ui/camera_controller.h"
 #include "ui/compare.h"
 #include "ui/render_worker.h"
+#include "ui/sample_view.h"
 #include "ui/shader_watch.h"
 #include "ui/view_composer.h"
 #include "ui/viewer_blit.h"
@@ -116,6 +117,8 @@ struct ViewerState {
     std::vector<Overlay> overlays;   // blended in order: the last on top
     bool shared_count_scale = true;  // a pass's count images share one heat scale and legend
     CompareState compare;            // the live frame against a pinned capture
+    // Zoomed in to kSampleViewZoom or more: draw each pixel's samples (ui/sample_view.h).
+    bool sample_view = true;
     // Filled by the viewer panel.
     float x = 0, y = 0, w = 0, h = 0;  // the image area, in framebuffer pixels
     std::optional<view::Readout> hover;
@@ -219,6 +222,20 @@ class Inspector {
     const std::string& pixel_label() const { return pixel_label_; }
     const std::string& pixel_error() const { return pixel_error_; }
     uint64_t pixel_picks() const { return pixel_picks_; }  // PickPixel actions applied so far
+    // The picked pixel's samples, read by the pick's frame (none before a pick).
+    const std::optional<MsaaSamples>& pixel_samples() const { return pixel_samples_; }
+    // The sample view: on and zoomed in far enough (the next frame asks for samples).
+    bool sample_view_wanted() const {
+        return viewer_.sample_view && viewer_.zoom >= kSampleViewZoom;
+    }
+    // The shown frame's samples when it has them (zoomed in), else null.
+    const MsaaSamples* shown_samples() const;
+    // Texel (x, y)'s samples in the shown frame (the hover list); none outside what was read.
+    std::optional<PixelSampleList> sample_list_at(uint32_t x, uint32_t y) const;
+    // The picked pixel's prepass coverage per fragment (msaa > 1; empty otherwise).
+    std::vector<CoverageRow> pixel_coverage() const;
+    // Renderer::describe_surface (safe from the UI thread: see RenderWorker).
+    std::optional<SurfaceInfo> describe_surface(uint32_t id) const;
     const scene::Camera& camera() const { return camera_.camera(); }
     CameraInput& camera_input() { return camera_input_; }
     // The render size the next frame uses: the viewer's area times render_scale (the pinned
@@ -308,6 +325,7 @@ class Inspector {
     std::string advice_label_, advice_error_;
     std::optional<PixelHistory> pixel_history_;
     std::optional<DepthResult> pixel_depth_;
+    std::optional<MsaaSamples> pixel_samples_;
     std::string pixel_label_, pixel_error_;
     uint64_t pixel_picks_ = 0;
     uint64_t updates_ = 0;

@@ -31,11 +31,17 @@ bool same_requests(const std::vector<InspectRequest>& a, const std::vector<Inspe
                       });
 }
 
+bool same_rect(const std::optional<SampleQuery>& a, const std::optional<SampleQuery>& b) {
+    if (!a || !b) return a.has_value() == b.has_value();
+    return a->x == b->x && a->y == b->y && a->width == b->width && a->height == b->height;
+}
+
 // Whether two jobs render the same frame (ids and cuts aside).
 bool same_frame(const FrameJob& a, const FrameJob& b) {
     return same_camera(a.camera, b.camera) && a.settings.diff(b.settings).empty() &&
            a.size.width == b.size.width && a.size.height == b.size.height &&
-           a.read_back == b.read_back && same_requests(a.inspect, b.inspect);
+           a.read_back == b.read_back && same_requests(a.inspect, b.inspect) &&
+           same_rect(a.samples, b.samples);
 }
 
 // Everything of the viewer's state that the decoded view depends on, as text: when it changes,
@@ -87,6 +93,13 @@ FrameJob Inspector::next_job() const {
     job.read_back = viewer_.resource == kZfightImage || compare_.active(viewer_.compare)
                         ? ReadBack::Color
                         : ReadBack::No;
+    // Zoomed in: every sample of the texels in view (full-size frames only: the rectangle is
+    // in the full size's texels).
+    const bool full_size =
+        job.size.width == job.nominal.width && job.size.height == job.nominal.height;
+    if (sample_view_wanted() && full_size && !compare_.active(viewer_.compare))
+        job.samples = visible_sample_rect(viewer_.centre.x, viewer_.centre.y, viewer_.zoom,
+                                          viewer_.w, viewer_.h, job.size.width, job.size.height);
     return job;
 }
 

@@ -106,7 +106,7 @@ FinishedFrame RenderWorker::render(const FrameJob& job) {
         try {
             if (job.camera_cut) renderer_.camera_cut();
             out.frame = renderer_.render(job.camera, job.settings, job.size.width, job.size.height,
-                                         job.read_back, job.inspect);
+                                         job.read_back, job.inspect, std::nullopt, job.samples);
         } catch (const std::exception& e) {
             out.error = e.what();
         }

@@ -35,7 +35,8 @@ struct FrameJob {
     bool camera_cut = false;  // the temporal passes start over (Renderer::camera_cut)
     ReadBack read_back = ReadBack::No;
     std::vector<InspectRequest> inspect;
-    uint64_t id = 0;  // set by post()
+    std::optional<SampleQuery> samples;  // the sample view's rectangle (zoomed in)
+    uint64_t id = 0;                     // set by post()
 };
 
 struct FinishedFrame {

@@ -16,6 +16,9 @@ struct DeviceInfo {
     // What the frame may ask of it (bench --soak's combinations): the msaa sample counts it
     // supports, and whether count_fragments, count_draws and surface_id / zfight can run.
     std::vector<int> msaa_counts;
+    // VkPhysicalDeviceLimits::standardSampleLocations: samples lie where the spec's table puts
+    // them (view/sample_positions.h); false: the sample view's positions are approximate.
+    bool standard_sample_locations = false;
     bool fragment_counts = false;
     bool draw_counts = false;
     bool surface_ids = false;

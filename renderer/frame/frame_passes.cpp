@@ -14,6 +14,7 @@
 #include "renderer/passes/gtao.h"
 #include "renderer/passes/inspect.h"
 #include "renderer/passes/msaa_probe.h"
+#include "renderer/passes/msaa_samples.h"
 #include "renderer/passes/normals_from_depth.h"
 #include "renderer/passes/readback_copy.h"
 #include "renderer/passes/shadow.h"
@@ -58,6 +59,7 @@ std::vector<std::unique_ptr<passes::FramePass>> make_frame_passes(const passes::
     add(std::make_unique<ReadbackCopyPass>(s, Copy::Counts));
     add(std::make_unique<DrawCountsPass>(s));  // count_draws: after every pass it reads
     add(std::make_unique<MsaaProbePass>(s));
+    add(std::make_unique<MsaaSamplesPass>(s));  // the sample view's rectangle (SampleQuery)
     add(std::make_unique<InspectPass>(s));
     return list;
 }

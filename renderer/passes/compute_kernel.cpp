@@ -155,7 +155,7 @@ void LazyComputePipeline::rebuild(vk::DestroyList& retired) {
 void LazyComputePipeline::build(vk::DestroyList& retired) {
     vk::Pipeline pipeline = vk::create_compute_pipeline(
         services_.context, layout_,
-        services_.compiler.compile(shader_, shader::Stage::Compute).spirv, name_);
+        services_.compiler.compile(shader_, shader::Stage::Compute, defines_).spirv, name_);
     if (pipeline_) retired.defer(std::move(pipeline_));
     pipeline_ = std::move(pipeline);
 }

@@ -98,8 +98,12 @@ graph::ImageHandle add_depth_normals_pass(graph::RenderGraph& graph, const char*
 // out costs nothing) and rebuilt fail-safe (a shader error keeps the current one).
 class LazyComputePipeline {
   public:
-    LazyComputePipeline(const PassServices& services, std::string shader, const char* name)
-        : services_(services), shader_(std::move(shader)), name_(name) {}
+    LazyComputePipeline(const PassServices& services, std::string shader, const char* name,
+                        std::vector<shader::Define> defines = {})
+        : services_(services),
+          shader_(std::move(shader)),
+          name_(name),
+          defines_(std::move(defines)) {}
 
     VkPipeline get(VkPipelineLayout layout);  // throws shader::ShaderError / ds::Error
     void rebuild(vk::DestroyList& retired);   // only if built
@@ -110,6 +114,7 @@ class LazyComputePipeline {
     PassServices services_;
     std::string shader_;
     const char* name_;
+    std::vector<shader::Define> defines_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     vk::Pipeline pipeline_;
 };

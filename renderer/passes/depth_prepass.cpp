@@ -292,6 +292,7 @@ DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInput
                                                .semantic = graph::Semantic::SurfaceId});
         b.write(msaa.surface_id, Access::ColorAttachment);
         b.write(res.surface_id, Access::ResolveDst);
+        res.msaa_surface_id = msaa.surface_id;
     }
     // Without a native nearest-sample resolve, depth_resolve writes res.depth next.
     if (native_depth_resolve(services_.context.report(), in.options.reverse_z))
@@ -326,6 +327,8 @@ std::vector<VkRenderingAttachmentInfo> DepthPrepass::color_attachments(graph::Pa
     if (res.surface_id.valid()) {  // cleared to 0, none
         colors.push_back(image(res.surface_id, msaa.surface_id, {}));
         if (multi) colors.back().resolveMode = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;  // integers
+        // The sample view reads every sample after the frame (msaa_samples).
+        if (multi && in.samples) colors.back().storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     }
     return colors;
 }

@@ -175,6 +175,9 @@ struct FrameResources {
     // multisampled HDR colour that transparent resolves into hdr.
     graph::ImageHandle msaa_depth;
     graph::ImageHandle msaa_hdr;
+    // msaa > 1 with surface_id: the prepass's per-sample surface ids (a transient, STOREd only
+    // when the frame has a SampleQuery: msaa_samples reads it).
+    graph::ImageHandle msaa_surface_id;
     graph::ImageHandle final_image;  // R8G8B8A8_SRGB (imported; tonemap writes it)
     // With count_fragments=on: each counting pass's CountImages (those that run).
     CountImages shadow_counts;  // kShadowMapSize square
@@ -219,6 +222,7 @@ struct FrameInputs {
     ReadBack read_back = ReadBack::Yes;   // what the caller reads back after the fence
     std::vector<InspectRequest> inspect;  // resources to read back through the inspect pass
     std::optional<PixelQuery> pixel;      // pixel history: the geometry passes replay for it
+    std::optional<SampleQuery> samples;   // the sample view: msaa_samples reads these pixels
 };
 
 }  // namespace ds::passes

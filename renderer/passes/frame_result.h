@@ -6,6 +6,7 @@
 #include <compare>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -205,6 +206,34 @@ struct PixelHistory {
     uint64_t dropped = 0;  // records past a replay's buffer (then fragments are incomplete)
 };
 
+// The MSAA sample view (issue 15): every sample of a rectangle of the frame, as the frame left
+// it (after transparent, before any resolve): the winning surface (the prepass's per-sample
+// surface_id; 0 none), the depth and the HDR colour. At msaa=1 the one sample is the pixel.
+struct SampleQuery {
+    uint32_t x = 0, y = 0, width = 1, height = 1;  // pixels, row 0 = top
+};
+struct PixelSample {
+    uint32_t surface = 0;  // Renderer::describe_surface; 0 nothing (or surface_ids is false)
+    float depth = 0;       // as the depth format stores it (reverse-Z unless off)
+    std::array<float, 4> color{};
+};
+struct MsaaSamples {
+    SampleQuery rect;  // as read: clamped to the frame
+    uint32_t samples = 1;
+    bool surface_ids = false;  // false: no prepass this frame, so no surface per sample
+    // Per pixel of `rect`, row by row, `samples` consecutive.
+    std::vector<PixelSample> values;
+    bool contains(uint32_t x, uint32_t y) const {
+        return x >= rect.x && y >= rect.y && x - rect.x < rect.width && y - rect.y < rect.height;
+    }
+    // The samples of frame pixel (x, y); empty outside `rect`.
+    std::span<const PixelSample> pixel(uint32_t x, uint32_t y) const {
+        if (!contains(x, y) || values.empty()) return {};
+        const size_t i = (size_t(y - rect.y) * rect.width + (x - rect.x)) * samples;
+        return std::span(values).subspan(i, samples);
+    }
+};
+
 struct FrameResult {
     uint32_t width = 0, height = 0;
     std::vector<uint8_t> rgba8;      // final image, sRGB-encoded, tightly packed, top row first;
@@ -241,6 +270,8 @@ struct FrameResult {
     std::vector<InspectedImage> overlays;
     // PixelQuery: every fragment that covered the pixel; none when nothing was asked.
     std::optional<PixelHistory> pixel_history;
+    // SampleQuery: the rectangle's samples; none when nothing was asked.
+    std::optional<MsaaSamples> msaa_samples;
 };
 
 // Read back one graph image by name at the end of the frame ("final": the tonemapped image;

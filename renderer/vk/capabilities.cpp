@@ -139,6 +139,7 @@ void probe_properties(VkPhysicalDevice device, DeviceReport& r) {
     r.device_id = base.deviceID;
     r.color_sample_counts = base.limits.framebufferColorSampleCounts;
     r.depth_sample_counts = base.limits.framebufferDepthSampleCounts;
+    r.standard_sample_locations = base.limits.standardSampleLocations;
     r.timestamps = base.limits.timestampComputeAndGraphics;
     r.timestamp_period_ns = base.limits.timestampPeriod;
     if (base.apiVersion < VK_API_VERSION_1_2) return;
@@ -247,6 +248,7 @@ std::string format_report(const DeviceReport& r) {
     for (VkFormat f : r.depth_formats) out << format::name(f) << " ";
     out << "(using " << format::name(r.depth_format) << ")\n";
     out << "  colour sample counts: " << sample_counts_text(r.color_sample_counts) << "\n";
+    out << "  standard sample locations: " << (r.standard_sample_locations ? "yes" : "no") << "\n";
     out << "  depth sample counts:  " << sample_counts_text(r.depth_sample_counts) << "\n";
     out << "  depth resolve modes:  " << resolve_modes_text(r.depth_resolve_modes)
         << ((r.depth_resolve_modes & VK_RESOLVE_MODE_MAX_BIT) ? "" : " (MAX: shader fallback)")

@@ -54,6 +54,7 @@ struct DeviceReport {
     VkFormat depth_format = VK_FORMAT_UNDEFINED;  // the one the renderer uses
     VkSampleCountFlags color_sample_counts = 0;
     VkSampleCountFlags depth_sample_counts = 0;
+    bool standard_sample_locations = false;  // the spec's table places the samples
     VkResolveModeFlags depth_resolve_modes = 0;
     VkResolveModeFlags stencil_resolve_modes = 0;
     bool timestamps = false;  // timestampComputeAndGraphics

@@ -3,8 +3,12 @@
 // the user asked for as actions (Inspector::apply carries them out); view-only state (the
 // viewer's zoom and decode range, the camera input) it writes directly. No Vulkan calls.
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <imgui.h>
 
 #include "ui/inspector.h"
 
@@ -65,6 +69,11 @@ std::vector<size_t> draw_rows(const std::vector<DrawReport>& draws, const std::s
 
 // Shared widgets.
 void help_marker(const char* text);  // "(?)" with a tooltip
+// The sample view (viewer_samples.cpp): every visible pixel's samples over the image when
+// zoomed in (the hovered texel outlined), a pixel's sample list (hover tooltip, Pixel panel).
+void draw_samples(const PanelIo& io, ImVec2 scale, std::optional<std::array<uint32_t, 2>> hover);
+void sample_table(const PixelSampleList& list);
+void sample_tooltip(const PanelIo& io, uint32_t x, uint32_t y);
 // The last capture's folder (or its error) and, with the compare view on, what it shows: the
 // viewer's status line and the Compare panel's.
 void capture_status(const Inspector& inspector);

@@ -97,6 +97,54 @@ void history_table(const Inspector& in) {
     ImGui::EndTable();
 }
 
+// The picked pixel's samples (msaa > 1) and, per prepass fragment, the samples it was
+// rasterized to (gl_SampleMaskIn: before the alpha test or alpha to coverage) against those its
+// triangle holds at the end of the frame (after alpha to coverage and every depth test).
+void samples_section(const Inspector& in) {
+    const std::optional<MsaaSamples>& samples = in.pixel_samples();
+    const PixelHistory& h = *in.pixel_history();
+    if (!samples || samples->samples < 2 || !in.pixel_depth()) return;
+    if (!ImGui::CollapsingHeader("samples and coverage", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const std::optional<PixelSampleList> list =
+        sample_list(*samples, h.x, h.y, *in.pixel_depth(), in.device().standard_sample_locations,
+                    [&in](uint32_t id) { return in.describe_surface(id); });
+    if (list) sample_table(*list);
+    const std::vector<CoverageRow> rows = in.pixel_coverage();
+    if (rows.empty()) return;
+    const bool a2c = in.settings().get_bool("alpha_to_coverage");
+    ImGui::SameLine();
+    help_marker(
+        "Per prepass triangle: 'rasterized' is its coverage before any alpha test "
+        "(gl_SampleMaskIn, from the replay's per-sample records); 'kept' the samples its "
+        "triangle holds at the end of the frame (the per-sample surface_id): with "
+        "alpha_to_coverage on, a masked triangle's rasterized samples missing from "
+        "'kept' were cut by its alpha, unless a nearer surface won them (see depth).");
+    constexpr ImGuiTableFlags flags =
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
+    if (!ImGui::BeginTable("coverage", 5, flags)) return;
+    for (const char* c : {"surface", "prim", "alpha", "rasterized (before)", "kept (after)"})
+        ImGui::TableSetupColumn(c);
+    ImGui::TableHeadersRow();
+    for (const CoverageRow& r : rows) {
+        const SurfaceName name = in.scene().instance_name(r.instance);
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::Text("%s / %s", name.mesh.c_str(), name.material.c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%u", r.primitive);
+        ImGui::TableNextColumn();
+        if (r.alpha)
+            ImGui::Text("%.3f%s", *r.alpha, a2c ? " (a2c)" : "");
+        else
+            ImGui::TextDisabled("opaque");
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(mask_text(r.rasterized, samples->samples).c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(mask_text(r.kept, samples->samples).c_str());
+    }
+    ImGui::EndTable();
+}
+
 }  // namespace
 
 void pixel_panel(PanelIo& io, const PanelLayout& layout) {
@@ -126,9 +174,10 @@ void pixel_panel(PanelIo& io, const PanelLayout& layout) {
         "was tested; 'shaded': the fragment shader ran (early-Z pipelines: only if it passed).");
     if (!in.pixel_error().empty())
         ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", in.pixel_error().c_str());
-    if (in.pixel_history() && in.pixel_depth())
+    if (in.pixel_history() && in.pixel_depth()) {
+        samples_section(in);
         history_table(in);
-    else
+    } else
         ImGui::TextDisabled("pick a pixel: the viewer's \"pick\" mouse mode (or Alt) and a click");
     ImGui::End();
 }

@@ -113,6 +113,14 @@ void zoom_controls(ViewerState& v, const DecodedView& view) {
         v.zoom = std::min(v.w / float(view.width), v.h / float(view.height));
         v.centre = {0.5f, 0.5f};
     }
+    ImGui::SameLine();
+    ImGui::Checkbox("samples", &v.sample_view);
+    ImGui::SameLine();
+    help_marker(
+        "Zoomed in to 8x or more: each pixel's MSAA samples at their positions, coloured "
+        "by the surface that holds each (the surface_id view's colours; dark blue: "
+        "none). Hovering a pixel lists its samples: surface, depth, colour. Those frames "
+        "turn surface_id on.");
 }
 
 // What the mouse drives over the image: the camera or the image's zoom and pan.
@@ -222,18 +230,18 @@ void input(PanelIo& io, const ImVec2& origin, bool hovered, bool active) {
 
 // The texel under the cursor: its readout and the overlays' values there; a click (not a
 // drag) in pick mode or with Alt picks it for its pixel history.
-void hover(PanelIo& io, bool hovered, ImVec2 scale) {
+std::optional<std::array<uint32_t, 2>> hover(PanelIo& io, bool hovered, ImVec2 scale) {
     ViewerState& v = io.viewer;
     v.hover.reset();
     v.hover_overlays.clear();
-    if (!hovered || !io.inspector.view().width || !io.inspector.shown()) return;
+    if (!hovered || !io.inspector.view().width || !io.inspector.shown()) return std::nullopt;
     // Through the blit's own integer mapping: the readout names the texel drawn there.
     const ImGuiIO& imgui = ImGui::GetIO();
     const TargetSize target{uint32_t(imgui.DisplaySize.x * scale.x),
                             uint32_t(imgui.DisplaySize.y * scale.y)};
     const auto texel = texel_at(io.inspector.viewer_blit(), target, imgui.MousePos.x * scale.x,
                                 imgui.MousePos.y * scale.y);
-    if (!texel) return;
+    if (!texel) return std::nullopt;
     v.hover = io.inspector.readout_at((*texel)[0], (*texel)[1]);
     v.hover_overlays = io.inspector.overlay_text((*texel)[0], (*texel)[1]);
     const bool pick = v.mouse == MouseTarget::Pick || imgui.KeyAlt;
@@ -242,6 +250,7 @@ void hover(PanelIo& io, bool hovered, ImVec2 scale) {
         drag.x * drag.x + drag.y * drag.y <= imgui.MouseDragThreshold * imgui.MouseDragThreshold;
     if (pick && click && ImGui::IsMouseReleased(ImGuiMouseButton_Left))
         io.actions.emplace_back(PickPixel{(*texel)[0], (*texel)[1]});
+    return texel;
 }
 
 // The readout lines under the image.
@@ -315,7 +324,9 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
     input(io, origin, hovered, active);
     rendering_mark(io.inspector, origin);
 
-    hover(io, hovered, scale);
+    const auto texel = hover(io, hovered, scale);
+    draw_samples(io, scale, texel);
+    if (texel) sample_tooltip(io, (*texel)[0], (*texel)[1]);
     readout_lines(v);
     capture_status(io.inspector);
     if (io.inspector.compare().active(v.compare)) {
