@@ -11,6 +11,7 @@
 #include "renderer/frame/frame_passes.h"
 #include "renderer/frame/frame_targets.h"
 #include "renderer/frame/frame_uniforms.h"
+#include "renderer/frame/tiler_summary.h"
 #include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/graph/access.h"
 #include "renderer/graph/graph.h"
@@ -313,6 +314,7 @@ void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::Fra
         if (auto ticks = slot.timestamps.results())
             result.gpu_ms = slot.timestamps.ticks_to_ms((*ticks)[0], (*ticks)[1]);
     }
+    result.tiler = tiler_summary(*graph);
     result.msaa.samples = uint32_t(in.options.samples);
     if (in.options.msaa())
         result.msaa.depth_resolve =

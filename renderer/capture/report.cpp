@@ -6,6 +6,7 @@
 
 #include "renderer/capture/file_output.h"
 #include "renderer/capture/replay_info.h"
+#include "renderer/capture/tiler_json.h"
 #include "renderer/common/error.h"
 #include "renderer/common/version.h"
 #include "renderer/format/format.h"
@@ -218,6 +219,7 @@ nlohmann::json frame_report(const ReportInput& in) {
         {"counters", counters_note(in.device)},
         {"skipped", f.skipped},
         {"msaa", msaa_json(f.msaa)},
+        {"tiler", tiler_json(f.tiler, in.settings)},
     };
     if (f.depth) json["depth"] = depth_json(*f.depth);
     json["decals"] = decals_json(in.scene, f);

@@ -45,13 +45,14 @@ std::vector<std::unique_ptr<passes::FramePass>> make_frame_passes(const passes::
     add(std::make_unique<ContactShadowsPass>(s));
     add(std::make_unique<ZfightPass>(s));  // diagnostics: against the prepass's result
     add(std::make_unique<ForwardPass>(s));
-    // Right after forward: render_path=subpass puts both in subpass 1 of one render pass. The
-    // sky covers only "far" pixels, which no decal does, so its place before decals is free.
+    // Right after forward, one run: render_path=subpass puts them all in subpass 1 of one
+    // render pass. The sky covers only "far" pixels, which no decal does, so its place before
+    // decals is free.
     add(std::make_unique<SkyboxPass>(s));
-    add(std::make_unique<EqualCheckPass>(s));                      // diagnostics: forward's counts
-    add(std::make_unique<DepthResolvePass>(s, Resolve::Forward));  // prepass=off, subpass path
     add(std::make_unique<DecalsPass>(s));  // coplanar overlays, once, over forward's result
     add(std::make_unique<TransparentPass>(s));
+    add(std::make_unique<EqualCheckPass>(s));                      // diagnostics: forward's counts
+    add(std::make_unique<DepthResolvePass>(s, Resolve::Forward));  // prepass=off, subpass path
     add(std::make_unique<TonemapPass>(s));
     // What the caller reads back, after everything it reads.
     add(std::make_unique<ReadbackCopyPass>(s, Copy::Final));

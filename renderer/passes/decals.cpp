@@ -61,7 +61,9 @@ std::string DecalsPass::pipeline_name(const Variant& v) {
 vk::Pipeline DecalsPass::create(const Variant& v, const ShaderStages& s) const {
     if (v.history) return history_.create(s, v.samples, pipeline_name(v));
     const float towards_camera = v.reverse_z ? 1.0f : -1.0f;
-    return scene_pipeline_builder(drawing_.layout(), s.vert, s.frag)
+    vk::GraphicsPipelineBuilder b = scene_pipeline_builder(drawing_.layout(), s.vert, s.frag);
+    if (v.render_pass) b.render_pass(v.render_pass, 1);
+    return b
         .color_attachment(kHdrFormat,
                           v.mode == AlphaMode::Blend ? vk::Blend::Alpha : vk::Blend::None)
         .depth_attachment(v.depth)
@@ -76,7 +78,7 @@ void DecalsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
     if (!in.options.decal_pass) return;
     struct Step {
         AlphaMode mode;
-        VkPipeline pipeline;
+        Variant variant;  // its pipeline: for the render pass drawn in (none: own rendering)
         PipelineInfo info;
     };
     using Steps = std::array<Step, 3>;
@@ -88,19 +90,21 @@ void DecalsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
                         .samples = in.options.samples,
                         .depth = in.options.depth_format,
                         .count_draws = res.decal_counts.draws.valid()};
-        return Step{mode, pipelines_.get(v), pipelines_.info(v)};
+        return Step{mode, v, pipelines_.info(v)};
     };
     auto steps = [&](bool history) {
         return Steps{step(AlphaMode::Opaque, history), step(AlphaMode::Mask, history),
                      step(AlphaMode::Blend, history)};
     };
     // Opaque, MASK, BLEND overlays in authored order; the log's tag is the step.
-    auto draw_with = [](Steps order, PipelineUses* uses) {
-        return [order, uses](VkCommandBuffer cmd, const FrameInputs& in, VkPipelineLayout layout,
-                             DrawLog* log) {
+    auto draw_with = [this](Steps order, PipelineUses* uses) {
+        return [this, order, uses](VkCommandBuffer cmd, const FrameInputs& in,
+                                   VkPipelineLayout layout, DrawLog* log, VkRenderPass pass) {
             for (uint32_t i = 0; i < order.size(); ++i) {
                 const Step& s = order[i];
-                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.pipeline);
+                Variant v = s.variant;
+                v.render_pass = pass;
+                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get(v));
                 if (log) log->pipeline = i;
                 const DrawCounts n = draw_groups(cmd, *in.scene, layout, {&s.mode, 1}, Decals::Only,
                                                  std::nullopt, {.log = log});
@@ -109,7 +113,7 @@ void DecalsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
         };
     };
     const Steps order = steps(false);
-    if (in.pixel) {
+    if (in.pixel && !in.options.subpass) {  // a replay would split the render pass
         history_pipelines_.clear();
         for (const Step& s : order)
             history_pipelines_.push_back(history_pipeline(s.info, s.mode == AlphaMode::Blend));

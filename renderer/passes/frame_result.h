@@ -14,6 +14,7 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/common/surface_name.h"
+#include "renderer/graph/tiler.h"
 #include "renderer/graph/types.h"
 #include "renderer/view/image.h"
 
@@ -245,6 +246,9 @@ struct FrameResult {
     // Read back with the image, or with count_fragments=on; none for ReadBack::No otherwise.
     std::optional<uint64_t> covered_pixels;
     std::vector<std::string> skipped;  // "gtao: skipped (prepass off)", in pass order
+    // render_path=subpass: the render pass's tile budget and seed 002's merge verdict; none
+    // on the dynamic path (no subpass group).
+    std::optional<graph::TilerReport> tiler;
     MsaaResult msaa;
     std::optional<DepthResult> depth;              // every rendered frame has it
     std::optional<DiscardCounts> masked_discards;  // count_discards=on with the prepass

@@ -41,6 +41,7 @@ void OverlayDrawing::add(graph::RenderGraph& graph, const char* name, const Fram
     graph.add_pass<Data>(
         name,
         [&](graph::PassBuilder& b, Data& d) {
+            if (in.options.subpass) b.subpass(kSubpassGroup, 1);
             declare_hdr_over_depth(b, res, in.options.msaa(), resolve);
             LightingSet::declare(b, lighting);
             b.read(res.frame_uniforms, graph::Access::UniformRead,
@@ -63,7 +64,8 @@ void OverlayDrawing::record(graph::PassContext& ctx, const FrameInputs& in,
         write_count_set(ctx, services_.context.device(), count_set, counts);
     }
     const VkDescriptorSet lighting_set = lighting_.write(ctx, in.frame_number, lighting);
-    begin_hdr_over_depth(ctx, res, in.options.msaa(), resolve);
+    const bool own_rendering = !ctx.render_pass();  // else subpass 1 of the graph's
+    if (own_rendering) begin_hdr_over_depth(ctx, res, in.options.msaa(), resolve);
     set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());
     const VkPipelineLayout layout = layout_.handle();
     bind_geometry(cmd, *in.scene);
@@ -74,8 +76,8 @@ void OverlayDrawing::record(graph::PassContext& ctx, const FrameInputs& in,
     if (count_set)
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kCountSet, 1,
                                 &count_set, 0, nullptr);
-    draw(cmd, in, layout, nullptr);
-    vk::fn().cmd_end_rendering(cmd);
+    draw(cmd, in, layout, nullptr, ctx.render_pass());
+    if (own_rendering) vk::fn().cmd_end_rendering(cmd);
 }
 
 void OverlayDrawing::add_history(graph::RenderGraph& graph, const FrameInputs& in,
@@ -107,7 +109,7 @@ void OverlayDrawing::add_history(graph::RenderGraph& graph, const FrameInputs& i
                                     &in.frame_set, 0, nullptr);
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1,
                                     &lighting_set, 0, nullptr);
-            draw(cmd, in, layout, &log);
+            draw(cmd, in, layout, &log, VK_NULL_HANDLE);
         });
 }
 

@@ -24,9 +24,10 @@ class OverlayDrawing {
   public:
     // Binds the pipelines and draws (binding material sets with `layout`); the geometry and
     // every other set are bound already. `log`: the pixel history replay's (null for the
-    // frame's own pass), whose `layout` is the replay's.
+    // frame's own pass), whose `layout` is the replay's. `pass`: render_path=subpass, the
+    // render pass whose subpass 1 this draws in (its pipelines are made for it); else null.
     using Draw = std::function<void(VkCommandBuffer cmd, const FrameInputs& in,
-                                    VkPipelineLayout layout, DrawLog* log)>;
+                                    VkPipelineLayout layout, DrawLog* log, VkRenderPass pass)>;
 
     OverlayDrawing(const PassServices& services, const char* name);
 
@@ -34,7 +35,8 @@ class OverlayDrawing {
     // The layout's sets (a pixel history replay layout repeats them).
     std::vector<VkDescriptorSetLayout> set_layouts() const;
     // The graph pass `name`. resolve: at msaa > 1 the rendering resolves res.msaa_hdr into
-    // res.hdr, which it creates (declare_hdr_over_depth).
+    // res.hdr, which it creates (declare_hdr_over_depth). render_path=subpass: subpass 1 of
+    // kSubpassGroup (a resolve becomes the subpass's resolve attachment).
     void add(graph::RenderGraph& graph, const char* name, const FrameInputs& in,
              FrameResources& res, const CountImages& counts, bool resolve, Draw draw);
     // Pixel history: `replay`'s graph pass, before the pass, reading the depth and the HDR

@@ -53,8 +53,9 @@ std::string TransparentPass::pipeline_name(const Variant& v) {
 
 vk::Pipeline TransparentPass::create(const Variant& v, const ShaderStages& s) const {
     if (v.history) return history_.create(s, v.samples, pipeline_name(v));
-    return scene_pipeline_builder(drawing_.layout(), s.vert, s.frag)
-        .color_attachment(kHdrFormat, vk::Blend::Alpha)
+    vk::GraphicsPipelineBuilder b = scene_pipeline_builder(drawing_.layout(), s.vert, s.frag);
+    if (v.render_pass) b.render_pass(v.render_pass, 1);
+    return b.color_attachment(kHdrFormat, vk::Blend::Alpha)
         .depth_attachment(v.depth)
         .samples(v.samples)
         .build(services_.context, pipeline_name(v).c_str());
@@ -65,30 +66,32 @@ void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
                     .samples = in.options.samples,
                     .depth = in.options.depth_format,
                     .count_draws = res.transparent_counts.draws.valid()};
-    const VkPipeline pipeline = pipelines_.get(v);
     const PipelineInfo info = pipelines_.info(v);
     uses_.clear();
     history_.clear();
     // Back to front, one instance at a time; the replay draws the same with its own pipeline.
-    auto draw_with = [](VkPipeline bound, PipelineInfo drawn, PipelineUses* uses) {
-        return [bound, drawn, uses](VkCommandBuffer cmd, const FrameInputs& in,
-                                    VkPipelineLayout layout, DrawLog* log) {
-            const std::vector<InstanceDraw> draws = sort_back_to_front(
-                *in.scene, in.camera_position, scene_groups(in.options.decal_pass));
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
-            const DrawCounts n = draw_sorted(cmd, *in.scene, layout, draws, {.log = log});
-            if (uses) uses->add(drawn, n.draws);
-        };
+    // The pipeline is the variant's for the render pass it draws in (none: its own rendering).
+    auto draw_with = [this](Variant variant, PipelineInfo drawn, PipelineUses* uses) {
+        return
+            [this, variant, drawn, uses](VkCommandBuffer cmd, const FrameInputs& in,
+                                         VkPipelineLayout layout, DrawLog* log, VkRenderPass pass) {
+                const std::vector<InstanceDraw> draws = sort_back_to_front(
+                    *in.scene, in.camera_position, scene_groups(in.options.decal_pass));
+                Variant v = variant;
+                v.render_pass = pass;
+                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get(v));
+                const DrawCounts n = draw_sorted(cmd, *in.scene, layout, draws, {.log = log});
+                if (uses) uses->add(drawn, n.draws);
+            };
     };
-    if (in.pixel) {
+    if (in.pixel && !in.options.subpass) {  // a replay would split the render pass
         const Variant twin{.history = true, .samples = v.samples, .depth = v.depth};
         history_pipelines_ = {history_pipeline(info, /*blend=*/true)};
-        drawing_.add_history(graph, in, res, history_,
-                             draw_with(pipelines_.get(twin), info, nullptr));
+        drawing_.add_history(graph, in, res, history_, draw_with(twin, info, nullptr));
     }
     // msaa > 1: the samples are stored too, for the edge count (MsaaProbe) after the graph.
     drawing_.add(graph, kName, in, res, res.transparent_counts, /*resolve=*/true,
-                 draw_with(pipeline, info, &uses_));
+                 draw_with(v, info, &uses_));
     rasterized_.add(graph, in, res, res.transparent_counts,
                     {.samples = in.options.samples,
                      .modes = {scene::AlphaMode::Blend},

@@ -46,11 +46,13 @@ class TransparentPass final : public FramePass {
         bool counting = false;  // COUNT_FRAGMENTS=1
         bool history = false;   // PIXEL_HISTORY=1: the replay's, no attachments
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-        VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
-        bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
+        VkFormat depth = VK_FORMAT_UNDEFINED;       // the frame's depth_format
+        bool count_draws = false;                   // COUNT_DRAWS=1 (with counting)
+        VkRenderPass render_pass = VK_NULL_HANDLE;  // render_path=subpass: its subpass 1
         bool operator==(const Variant&) const = default;
         size_t hash() const {
-            return hash_fields(counting, history, int(samples), int(depth), count_draws);
+            return hash_fields(counting, history, int(samples), int(depth), count_draws,
+                               render_pass);
         }
     };
 
