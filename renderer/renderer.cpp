@@ -93,6 +93,8 @@ PassResult pass_result(const graph::PassResult& g, const graph::PassInfo& info,
     PassResult p;
     p.name = g.name;
     p.role = info.role;
+    p.subpass_group = info.group;
+    p.subpass = info.subpass;
     p.gpu_ms = g.gpu_ms;
     p.gpu_start_ms = g.gpu_start_ms;
     p.vertex_shader_invocations = g.vertex_invocations;

@@ -155,6 +155,7 @@ void Inspector::draw() {
     overlays_panel(panel, layout);
     pixel_panel(panel, layout);
     compare_panel(panel, layout);
+    tiler_panel(panel, layout);
     viewer_panel(panel, layout);  // last: it takes the camera input the others left
 }
 

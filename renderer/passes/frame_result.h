@@ -36,6 +36,10 @@ struct PassResult {
     // What the pass is for: the frame's own work, a clear, or a read-back to the host
     // (graph::PassRole); reports and the Passes panel group by it.
     graph::PassRole role = graph::PassRole::Frame;
+    // render_path=subpass: the render pass (graph subpass group) the pass is a subpass of, and
+    // which subpass; empty for a pass on its own.
+    std::string subpass_group;
+    uint32_t subpass = 0;
     double gpu_ms = 0;  // from two timestamps around the pass
     // When the pass began, after the frame's first timestamp (the first pass starts at 0): the
     // same ticks as gpu_ms, so [gpu_start_ms, gpu_start_ms + gpu_ms] is the pass on the GPU's

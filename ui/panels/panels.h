@@ -31,7 +31,7 @@ struct PanelLayout {
     // Compare)
     // start collapsed, their title bars stacked from 55% of the height down, one per slot;
     // opened, each spans the viewer's width down to the bottom.
-    enum Slot : int { kDraws, kDepth, kAdvisor, kOverlays, kPixel, kCompare };
+    enum Slot : int { kDraws, kDepth, kAdvisor, kOverlays, kPixel, kCompare, kTiler };
     float stacked_y(Slot slot) const { return height * 0.55f + 24.0f * float(slot); }
     void next_stacked_window(Slot slot) const;  // position, size and collapsed, first use
 };
@@ -48,6 +48,7 @@ void draws_panel(PanelIo& io, const PanelLayout& layout);
 void overlays_panel(PanelIo& io, const PanelLayout& layout);
 void pixel_panel(PanelIo& io, const PanelLayout& layout);
 void compare_panel(PanelIo& io, const PanelLayout& layout);
+void tiler_panel(PanelIo& io, const PanelLayout& layout);
 
 // The Draws panel's table: column ids (kDrawShaded + k: shaded fragments of the k-th counting
 // pass of the draws' shaded_fragments), and the rows to show — indices into `draws` whose

@@ -79,6 +79,7 @@ void pass_row(PanelIo& io, const PassResult& p, double worst) {
     ImGui::TableNextColumn();
     const bool selected = p.name == in.selected_pass();
     std::string label = p.name;
+    if (!p.subpass_group.empty()) label = "subpass " + std::to_string(p.subpass) + ": " + p.name;
     if (p.role != graph::PassRole::Frame)
         label += std::string(" (") + graph::pass_role_name(p.role) + ")";
     // A pass that drew with a pipeline that loses early-Z says so in its row (one bound with
@@ -169,6 +170,46 @@ bool support_row(int count, double ms) {
     return open;
 }
 
+// A render pass of subpasses (render_path=subpass): one row with the group's total, its passes
+// nested under it; true when it is open (then TreePop()).
+bool group_row(const std::string& group, size_t subpasses, double ms) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    const std::string label =
+        "render pass " + group + " (" + std::to_string(subpasses) + " subpasses)###group_" + group;
+    const bool open = ImGui::TreeNodeEx(
+        label.c_str(), ImGuiTreeNodeFlags_SpanFullWidth | ImGuiTreeNodeFlags_DefaultOpen);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.2f", ms);
+    return open;
+}
+
+// The frame's own passes in order, each run of one subpass group nested under its row.
+void frame_rows(PanelIo& io, const FrameResult& frame, double worst) {
+    const std::vector<PassResult>& passes = frame.passes;
+    for (size_t i = 0; i < passes.size();) {
+        const PassResult& p = passes[i];
+        if (p.role != graph::PassRole::Frame) {
+            ++i;
+            continue;
+        }
+        if (p.subpass_group.empty()) {
+            pass_row(io, p, worst);
+            ++i;
+            continue;
+        }
+        size_t end = i;
+        double ms = 0.0;
+        while (end < passes.size() && passes[end].subpass_group == p.subpass_group)
+            ms += passes[end++].gpu_ms;
+        if (group_row(p.subpass_group, passes[end - 1].subpass + 1, ms)) {
+            for (size_t k = i; k < end; ++k) pass_row(io, passes[k], worst);
+            ImGui::TreePop();
+        }
+        i = end;
+    }
+}
+
 // The table of passes: the frame's own passes, then clears, measurements and read-backs folded
 // into one row (they are timed and barriered like any pass, but are not the frame a user tunes).
 void pass_table(PanelIo& io, const FrameResult& frame) {
@@ -184,10 +225,9 @@ void pass_table(PanelIo& io, const FrameResult& frame) {
     header_row(pass_columns(io.inspector.device()));
     double support_ms = 0.0;
     int support = 0;
+    frame_rows(io, frame, worst);
     for (const PassResult& p : frame.passes) {
-        if (p.role == graph::PassRole::Frame) {
-            pass_row(io, p, worst);
-        } else {
+        if (p.role != graph::PassRole::Frame) {
             support_ms += p.gpu_ms;
             ++support;
         }

@@ -48,7 +48,11 @@ ResourceInfo external(ResourceInfo r, ExternalState initial, std::optional<Exter
 
 PassInfo pass(const std::string& name, std::vector<AccessInfo> accesses,
               PassKind kind = PassKind::Graphics) {
-    return PassInfo{name, kind, std::move(accesses)};
+    PassInfo p;
+    p.name = name;
+    p.kind = kind;
+    p.accesses = std::move(accesses);
+    return p;
 }
 
 void expect_barrier(const Barrier& b, VkImageLayout old_layout, VkImageLayout new_layout,
