@@ -58,6 +58,8 @@ TEST_F(DrawsPanel, FiltersSortsAndHighlightsTheSelectedDraw) {
                         return d.visible_pixels;
                     case ui::kDrawSamples:
                         return d.samples_passed;
+                    case ui::kDrawHiz:
+                        return d.hiz ? std::optional<int64_t>(int64_t(*d.hiz)) : std::nullopt;
                     case ui::kDrawWasted: {
                         if (d.wasted_fragments.empty()) return std::nullopt;
                         int64_t sum = 0;
