@@ -7,7 +7,7 @@
 // most 2x2 texels, whose farthest depth is compared with the nearest. Occluded only when the
 // box is farther by more than a margin (rounding between this and the rasteriser's vertex
 // transform); a box with a corner behind the eye or in front of the near plane is visible (the
-// test says nothing there); one off screen or wholly beyond the far plane is outside.
+// test says nothing there); one whose corners all lie beyond one clip plane is outside.
 // Out, per instance: verdict (0 visible, 1 occluded, 2 outside), the level read, the box's
 // nearest depth and the pyramid's farthest (bit patterns).
 #extension GL_GOOGLE_include_directive : require
@@ -92,17 +92,35 @@ void main() {
         return;
     }
     const bool reverse = reverse_z();
-    vec2 ndc_lo = vec2(1e30), ndc_hi = vec2(-1e30);
-    float nearest = reverse ? -1e30 : 1e30;
+    // Outside: every corner beyond one and the same clip plane (-w <= x, y <= w, 0 <= z <= w,
+    // w > 0), so the whole box is (it is convex; this holds for corners behind the eye too).
+    vec4 clip[8];
+    bvec4 all_beyond_xy = bvec4(true);  // x > w, x < -w, y > w, y < -w
+    bvec3 all_beyond_zw = bvec3(true);  // z > w, z < 0, w <= 0
+    bool any_behind = false;
     for (int c = 0; c < 8; ++c) {
         const vec3 corner = vec3((c & 1) != 0 ? hi.x : lo.x, (c & 2) != 0 ? hi.y : lo.y,
                                  (c & 4) != 0 ? hi.z : lo.z);
-        const vec4 clip = frame.view_projection * vec4(corner, 1.0);
-        if (!(clip.w > 0.0)) {  // behind the eye
-            finish(i, kVisible, 0u, 0.0, 0.0);
-            return;
-        }
-        const vec3 ndc = clip.xyz / clip.w;
+        const vec4 v = frame.view_projection * vec4(corner, 1.0);
+        clip[c] = v;
+        all_beyond_xy = bvec4(all_beyond_xy.x && v.x > v.w, all_beyond_xy.y && v.x < -v.w,
+                              all_beyond_xy.z && v.y > v.w, all_beyond_xy.w && v.y < -v.w);
+        all_beyond_zw = bvec3(all_beyond_zw.x && v.z > v.w, all_beyond_zw.y && v.z < 0.0,
+                              all_beyond_zw.z && !(v.w > 0.0));
+        any_behind = any_behind || !(v.w > 0.0);
+    }
+    if (any(all_beyond_xy) || any(all_beyond_zw)) {
+        finish(i, kOutside, 0u, 0.0, 0.0);
+        return;
+    }
+    if (any_behind) {  // the box reaches behind the eye: the test says nothing
+        finish(i, kVisible, 0u, 0.0, 0.0);
+        return;
+    }
+    vec2 ndc_lo = vec2(1e30), ndc_hi = vec2(-1e30);
+    float nearest = reverse ? -1e30 : 1e30;
+    for (int c = 0; c < 8; ++c) {
+        const vec3 ndc = clip[c].xyz / clip[c].w;
         ndc_lo = min(ndc_lo, ndc.xy);
         ndc_hi = max(ndc_hi, ndc.xy);
         nearest = reverse ? max(nearest, ndc.z) : min(nearest, ndc.z);
@@ -110,11 +128,6 @@ void main() {
     // In front of the near plane (the rasteriser clips it): the test says nothing.
     if (reverse ? nearest > 1.0 : nearest < 0.0) {
         finish(i, kVisible, 0u, nearest, 0.0);
-        return;
-    }
-    if ((reverse ? nearest < 0.0 : nearest > 1.0) || any(greaterThan(ndc_lo, vec2(1.0))) ||
-        any(lessThan(ndc_hi, vec2(-1.0)))) {
-        finish(i, kOutside, 0u, nearest, 0.0);
         return;
     }
     // Pixels whose area the rectangle touches (a superset of the centres it covers).
