@@ -37,7 +37,7 @@ TEST_F(DrawsPanel, FiltersSortsAndHighlightsTheSelectedDraw) {
     ui->frame();
     EXPECT_TRUE(in.frame().draws.empty());
     in.queue(ui::SetSetting{"count_draws", "on"});
-    in.queue(ui::SetSetting{"hiz", "on"});  // the Hi-Z column has verdicts to sort
+    in.queue(ui::SetSetting{"hiz", "on"});       // the Hi-Z column has verdicts to sort
     in.queue(ui::SelectResource{"surface_id"});  // the same from frame to frame (no history)
     ui->frame();
     ui->frame();  // the panels draw the last frame's results: now the counted one
