@@ -475,7 +475,7 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
     check_sample_query(samples, width, height);
     passes::FrameOptions options = r.options_for(settings);
     // The sample view names the surface of every sample: the prepass writes them for it.
-    if (samples && options.prepass && r.context->report().geometry_shader)
+    if (samples && options.prepass && !options.subpass && r.context->report().geometry_shader)
         options.surface_id = true;
     // The scene camera with the znear / zfar knobs, checked before the frame begins; the
     // frame uses only this one.

@@ -125,9 +125,34 @@ nlohmann::json draws_json(const std::vector<DrawReport>& draws) {
         entry["shaded_fragments"] = std::move(shaded);
         entry["wasted_fragments"] = std::move(wasted);
         entry["occluded"] = d.occluded;
+        if (d.hiz) {
+            entry["hiz"] = hiz_verdict_name(*d.hiz);
+            entry["hiz_occluded_instances"] = d.hiz_occluded_instances;
+            entry["hiz_unsafe"] = d.hiz_unsafe;
+        }
         out.push_back(std::move(entry));
     }
     return out;
+}
+
+// hiz=on: the pyramid's levels and, with count_draws, the verdicts' tally and the unsafe
+// disagreements (per draw in draws[]).
+nlohmann::json hiz_json(const HizResult& h) {
+    nlohmann::json levels = nlohmann::json::array();
+    for (const auto& [w, ht] : h.levels) levels.push_back({w, ht});
+    nlohmann::json json = {{"levels", levels},
+                           {"source", h.source},
+                           {"samples", h.samples},
+                           {"farthest", h.reverse_z ? "min (reverse-Z)" : "max (forward-Z)"}};
+    if (!h.groups.empty()) {
+        nlohmann::json tally = {{"visible", 0}, {"occluded", 0}, {"outside", 0}};
+        for (HizVerdict v : h.groups)
+            tally[hiz_verdict_name(v)] = tally[hiz_verdict_name(v)].get<int>() + 1;
+        json["draws"] = tally;
+    }
+    json["unsafe_draws"] = h.unsafe ? nlohmann::json(*h.unsafe) : nullptr;
+    json["unsafe_visible_draws"] = h.unsafe_visible ? nlohmann::json(*h.unsafe_visible) : nullptr;
+    return json;
 }
 
 nlohmann::json settings_json(const Settings& settings) {
@@ -230,6 +255,7 @@ nlohmann::json frame_report(const ReportInput& in) {
                                    {"discarded", f.masked_discards->discarded}};
     if (f.zfight) json["zfight"] = zfight_json(*f.zfight);
     if (f.equal_check) json["equal_check"] = equal_check_json(*f.equal_check);
+    if (f.hiz) json["hiz"] = hiz_json(*f.hiz);
     if (!f.draws.empty()) {
         json["draws"] = draws_json(f.draws);
         json["draws_info"] = {

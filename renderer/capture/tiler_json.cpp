@@ -11,7 +11,7 @@ std::vector<std::string> turned_off(const Settings& s) {
     std::vector<std::string> out;
     for (const char* knob :
          {"gtao", "contact_shadows", "count_fragments", "count_draws", "count_discards",
-          "equal_check", "surface_id", "zfight", "depth_precision"})
+          "equal_check", "surface_id", "zfight", "depth_precision", "hiz"})
         if (s.get_bool(knob)) out.push_back(knob);
     return out;
 }

@@ -12,6 +12,7 @@
 #include "renderer/passes/equal_check.h"
 #include "renderer/passes/forward.h"
 #include "renderer/passes/gtao.h"
+#include "renderer/passes/hiz.h"
 #include "renderer/passes/inspect.h"
 #include "renderer/passes/msaa_probe.h"
 #include "renderer/passes/msaa_samples.h"
@@ -37,6 +38,7 @@ std::vector<std::unique_ptr<passes::FramePass>> make_frame_passes(const passes::
     add(std::make_unique<ShadowPass>(s));
     add(std::make_unique<DepthPrepass>(s));
     add(std::make_unique<DepthResolvePass>(s, Resolve::Prepass));
+    add(std::make_unique<HizPass>(s));  // hiz: the pyramid from the prepass depth
     add(std::make_unique<DepthPrecisionPass>(s));
     add(std::make_unique<NormalsFromDepthPass>(s));  // prepass_mode=depth: for gtao, contact
     add(std::make_unique<GtaoPass>(s));

@@ -14,6 +14,19 @@ namespace {
 
 constexpr VkDeviceSize kMinBufferSize = 16;  // Vulkan forbids empty buffers
 
+// The box of `object`'s eight corners through `world` (an empty box stays empty).
+scene::Bounds instance_world_bounds(const scene::Bounds& object, const glm::mat4& world) {
+    scene::Bounds out;
+    if (!object.valid()) return out;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p(corner & 1 ? object.max.x : object.min.x,
+                          corner & 2 ? object.max.y : object.min.y,
+                          corner & 4 ? object.max.z : object.min.z);
+        out.extend(glm::vec3(world * glm::vec4(p, 1.0f)));
+    }
+    return out;
+}
+
 VkFilter filter(scene::Filter f) {
     return f == scene::Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
 }
@@ -167,13 +180,30 @@ void GpuScene::upload_instances(const scene::Scene& scene, vk::UploadBatch& batc
         base += triangles;
         const glm::vec3 center = scene.meshes[inst.mesh].bounds.center();
         instance_centers_.push_back(glm::vec3(inst.world * glm::vec4(center, 1.0f)));
+        instance_bounds_.push_back(instance_world_bounds(mesh.bounds, inst.world));
     }
+    upload_bounds(batch);
     const VkDeviceSize bytes = gpu.size() * sizeof(GpuInstance);
     instances_ =
         vk::Buffer(context_, {std::max(bytes, kMinBufferSize),
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                               vk::MemoryUsage::GpuOnly, "scene instances"});
     batch.buffer(instances_, gpu.data(), bytes);
+}
+
+void GpuScene::upload_bounds(vk::UploadBatch& batch) {
+    std::vector<glm::vec4> boxes;
+    boxes.reserve(instance_bounds_.size() * 2);
+    for (const scene::Bounds& b : instance_bounds_) {
+        boxes.emplace_back(b.min, 0.0f);
+        boxes.emplace_back(b.max, 0.0f);
+    }
+    const VkDeviceSize bytes = boxes.size() * sizeof(glm::vec4);
+    bounds_buffer_ =
+        vk::Buffer(context_, {std::max(bytes, kMinBufferSize),
+                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                              vk::MemoryUsage::GpuOnly, "scene instance bounds"});
+    batch.buffer(bounds_buffer_, boxes.data(), bytes);
 }
 
 void GpuScene::upload_textures(const scene::Scene& scene, vk::UploadBatch& batch) {

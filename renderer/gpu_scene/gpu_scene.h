@@ -119,6 +119,11 @@ class GpuScene {
     }
     // World-space centre of each instance's bounds (sorting blended draws).
     const std::vector<glm::vec3>& instance_centers() const { return instance_centers_; }
+    // World-space box of each instance (its mesh's box through its matrix: the eight corners'
+    // box), on the host and as a storage buffer (std430 vec4 min, vec4 max per instance): the
+    // Hi-Z pass's per-draw test.
+    const std::vector<scene::Bounds>& instance_bounds() const { return instance_bounds_; }
+    VkBuffer instance_bounds_buffer() const { return bounds_buffer_.handle(); }
     // How each image's mip chain was filled (the report says which path ran).
     const std::vector<vk::MipFill>& mip_fills() const { return mip_fills_; }
 
@@ -132,6 +137,7 @@ class GpuScene {
   private:
     void upload_geometry(const scene::Scene& scene, vk::UploadBatch& batch);
     void upload_instances(const scene::Scene& scene, vk::UploadBatch& batch);
+    void upload_bounds(vk::UploadBatch& batch);
     void upload_textures(const scene::Scene& scene, vk::UploadBatch& batch);
     void create_samplers(const scene::Scene& scene);
     static bool texture_valid(const scene::Scene& scene, const scene::TextureRef& ref);
@@ -165,6 +171,8 @@ class GpuScene {
     std::vector<scene::DrawGroup> draw_groups_;
     std::vector<uint32_t> instance_groups_;
     std::vector<glm::vec3> instance_centers_;
+    std::vector<scene::Bounds> instance_bounds_;
+    vk::Buffer bounds_buffer_;
     SurfaceTable surfaces_;
     std::vector<vk::MipFill> mip_fills_;
     uint32_t white_image_ = 0;  // indices into images_

@@ -68,6 +68,19 @@ void fill_counts(DrawReport& d, std::span<const PassResult> passes,
         d.occluded = *d.samples_passed == 0;
 }
 
+// hiz=on: the Hi-Z verdict next to samples_passed; unsafe when Hi-Z says the draw cannot be
+// seen (occluded or outside) and the visibility pass's queries saw samples pass.
+void fill_hiz(DrawReport& d, HizResult& hiz) {
+    if (d.group >= hiz.groups.size()) return;
+    d.hiz = hiz.groups[d.group];
+    d.hiz_occluded_instances = hiz.occluded_instances[d.group];
+    d.hiz_unsafe = *d.hiz != HizVerdict::Visible && d.samples_passed && *d.samples_passed > 0;
+    hiz.unsafe = hiz.unsafe.value_or(0) + (d.hiz_unsafe ? 1 : 0);
+    const bool won_pixels = d.visible_pixels && *d.visible_pixels > 0;
+    hiz.unsafe_visible =
+        hiz.unsafe_visible.value_or(0) + (*d.hiz != HizVerdict::Visible && won_pixels ? 1 : 0);
+}
+
 }  // namespace
 
 void DrawCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
@@ -100,6 +113,7 @@ void DrawCountsPass::collect(const FrameCollect& c, std::span<PassResult>, Frame
         d.decal = group.decal;
         if (group.instance_count > 0) d.name = scene.surfaces().name(group.first_instance);
         fill_counts(d, frame.passes, ids.empty() ? nullptr : &visible);
+        if (frame.hiz) fill_hiz(d, *frame.hiz);
         frame.draws.push_back(std::move(d));
     }
 }

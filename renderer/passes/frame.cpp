@@ -136,6 +136,7 @@ FrameOptions FrameOptions::from(const Settings& s) {
     o.zfight = s.get_bool("zfight") && o.prepass && !o.msaa();
     o.zfight_steps = uint32_t(s.get_int("zfight_steps"));
     o.depth_precision = (s.get_bool("depth_precision") || o.zfight) && o.prepass;
+    o.hiz = s.get_bool("hiz") && o.prepass;  // built from the prepass's depth
     o.surface_id =
         (s.get_bool("surface_id") || o.zfight || o.equal_check || o.count_draws) && o.prepass;
     o.depth_choice = depth_choice_of(s.get("depth_format"));
@@ -146,6 +147,7 @@ FrameOptions FrameOptions::from(const Settings& s) {
         o.gtao = o.contact_shadows = false;
         o.equal_check = o.count_draws = o.count_fragments = o.count_discards = false;
         o.zfight = o.depth_precision = o.surface_id = false;
+        o.hiz = false;  // its place is between the subpasses
     }
     o.znear = plane(s, "znear");
     o.zfar = plane(s, "zfar");

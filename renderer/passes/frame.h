@@ -102,6 +102,7 @@ struct FrameOptions {
     uint32_t zfight_steps = 4;
     bool equal_check = false;      // effective: prepass, depth_compare=equal and msaa=1
     bool depth_precision = false;  // depth_precision or zfight
+    bool hiz = false;              // effective: also needs the prepass
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // msaa
     DepthChoice depth_choice = DepthChoice::D32f;
     // The scene depth's format for depth_choice on this device: the registry cannot know the

@@ -161,6 +161,46 @@ struct EqualCheckResult {
     std::vector<EqualCheckSurface> surfaces;  // most pixels first, at most ten
 };
 
+// hiz=on with count_draws=on: what the Hi-Z test says of a draw group's instances, from their
+// world bounds' screen rectangle and nearest depth against the pyramid. Visible: it may be seen
+// (or the box crosses the near plane, where the test says nothing); Occluded: every sample it
+// could cover is farther than the pyramid's farthest depth there; Outside: off screen or
+// beyond the far plane (frustum culled). A group is Visible when any instance is, else
+// Occluded when any instance is, else Outside.
+enum class HizVerdict : uint8_t { Visible, Occluded, Outside };
+inline const char* hiz_verdict_name(HizVerdict verdict) {
+    return verdict == HizVerdict::Occluded  ? "occluded"
+           : verdict == HizVerdict::Outside ? "outside"
+                                            : "visible";
+}
+
+// hiz_test's finding for one scene instance: the level it read, its box's nearest depth and
+// the pyramid's farthest there (both 0 where the test said nothing: behind the eye, in front
+// of the near plane, outside).
+struct HizInstance {
+    HizVerdict verdict = HizVerdict::Visible;
+    uint32_t level = 0;
+    float nearest = 0.0f, farthest = 0.0f;
+};
+
+// hiz=on (with the prepass): the pyramid's levels, level 0 first (images hiz.0 ... hiz.N);
+// with count_draws=on also the per-group verdicts and, filled by readback_draws, the unsafe
+// disagreements: groups Hi-Z calls not visible (occluded or outside) whose samples_passed > 0.
+struct HizResult {
+    std::vector<std::pair<uint32_t, uint32_t>> levels;  // width, height
+    std::string source;                                 // "depth" | "msaa_depth"
+    uint32_t samples = 1;                               // of the source (farthest of them)
+    bool reverse_z = true;                              // farthest: min; else max
+    std::vector<HizVerdict> groups;                     // count_draws: per draw group
+    std::vector<uint32_t> occluded_instances;           // count_draws: per draw group
+    std::vector<HizInstance> instances;                 // count_draws: per scene instance
+    std::optional<uint64_t> unsafe;                     // count_draws: see above
+    // count_draws: groups Hi-Z calls not visible that won pixels in the final depth
+    // (visible_pixels > 0): wrong whatever the draw order (samples_passed counts what passed
+    // when drawn, so a layer drawn before its occluder passes samples and is still hidden).
+    std::optional<uint64_t> unsafe_visible;
+};
+
 // count_draws=on: one scene draw group (mesh + instance range, what forward draws in one
 // call; the sorted prepass draws its instances one by one) and what each pass did with it.
 struct DrawReport {
@@ -183,6 +223,11 @@ struct DrawReport {
     // Drawn by the visibility pass and nothing of it visible (visible_pixels, or without the
     // prepass samples_passed, is 0).
     bool occluded = false;
+    // hiz=on: the Hi-Z test's verdict, how many of its instances it found occluded, and
+    // whether it disagrees unsafely with samples_passed (not visible, yet samples passed).
+    std::optional<HizVerdict> hiz;
+    uint32_t hiz_occluded_instances = 0;
+    bool hiz_unsafe = false;
 };
 
 // pixel history (PixelQuery): one fragment that covered the pixel, as its pass's instrumented
@@ -258,6 +303,7 @@ struct FrameResult {
     std::optional<DiscardCounts> masked_discards;  // count_discards=on with the prepass
     std::optional<ZfightResult> zfight;            // zfight=on with the prepass
     std::optional<EqualCheckResult> equal_check;   // equal_check=on (prepass, EQUAL, 1x)
+    std::optional<HizResult> hiz;                  // hiz=on with the prepass
     // count_draws=on: every scene draw group, in scene order; the pass whose occlusion
     // queries gave samples_passed; why visible pixels are missing ("" when they are not);
     // per pixel (row 0 = top), the draw group whose surface won + 1 (0: none; empty without

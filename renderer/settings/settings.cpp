@@ -402,6 +402,12 @@ SettingsRegistry::SettingsRegistry() {
                   "next representable depth value (format, planes, direction), in scene units "
                   "(on whenever zfight is)",
                   I::Nothing),
+        bool_knob("hiz", "diagnostics", false,
+                  "prepass on: the hiz pass builds a Hi-Z pyramid from the prepass depth "
+                  "(images hiz.0 ... hiz.N, each texel the farthest of its children; at msaa > 1 "
+                  "level 0 is the farthest sample); with count_draws each draw's screen bounds "
+                  "are tested against it (report draws[].hiz next to samples_passed)",
+                  I::Nothing),
         bool_knob("equal_check", "diagnostics", false,
                   "prepass on, depth_compare=equal, msaa=1: marks pixels the prepass covered "
                   "that forward did not shade (holes) and pixels forward shaded more than once "

@@ -1,6 +1,7 @@
 // Draws: count_draws' table, one row per scene draw group — mesh, material, node (its first
-// instance's), instances, visible pixels, samples passed, wasted fragments and the shaded
-// fragments of each counting pass. Every column sorts (a click on its header), the filter
+// instance's), instances, visible pixels, samples passed, wasted fragments, the Hi-Z verdict
+// (hiz=on; an unsafe disagreement with samples passed in red) and the shaded fragments of each
+// counting pass. Every column sorts (a click on its header), the filter
 // keeps rows whose mesh, material or node contains the text, fully occluded draws are marked,
 // and selecting a row keeps only its pixels bright in the viewer (ViewerState::draw). Off:
 // one button turns count_draws on.
@@ -42,6 +43,8 @@ std::optional<int64_t> number(const DrawReport& d, int column) {
         case kDrawWasted:
             if (d.wasted_fragments.empty()) return std::nullopt;
             return total_wasted(d);
+        case kDrawHiz:
+            return d.hiz ? std::optional<int64_t>(int64_t(*d.hiz)) : std::nullopt;
         default:
             break;
     }
@@ -92,6 +95,19 @@ void cell(const std::optional<int64_t>& v) {
         ImGui::TextDisabled("-");
 }
 
+void hiz_cell(const DrawReport& d) {
+    ImGui::TableNextColumn();
+    if (!d.hiz) {
+        ImGui::TextDisabled("-");
+    } else if (d.hiz_unsafe) {
+        ImGui::TextColored(ImVec4(1.0f, 0.25f, 0.25f, 1.0f), "%s UNSAFE", hiz_verdict_name(*d.hiz));
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Hi-Z says it cannot be seen, yet its occlusion queries passed");
+    } else {
+        ImGui::TextUnformatted(hiz_verdict_name(*d.hiz));
+    }
+}
+
 void row(PanelIo& io, const DrawReport& d, size_t passes) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
@@ -107,7 +123,12 @@ void row(PanelIo& io, const DrawReport& d, size_t passes) {
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(text(d, c).c_str());
     }
-    for (int c = kDrawInstances; c < kDrawShaded + int(passes); ++c) cell(number(d, c));
+    for (int c = kDrawInstances; c < kDrawShaded + int(passes); ++c) {
+        if (c == kDrawHiz)
+            hiz_cell(d);
+        else
+            cell(number(d, c));
+    }
 }
 
 void table(PanelIo& io, const std::vector<DrawReport>& draws) {
@@ -126,6 +147,7 @@ void table(PanelIo& io, const std::vector<DrawReport>& draws) {
     ImGui::TableSetupColumn("visible", 0, 0, kDrawVisible);
     ImGui::TableSetupColumn("samples", 0, 0, kDrawSamples);
     ImGui::TableSetupColumn("wasted", 0, 0, kDrawWasted);
+    ImGui::TableSetupColumn("Hi-Z", 0, 0, kDrawHiz);
     for (size_t k = 0; k < passes.size(); ++k)
         ImGui::TableSetupColumn(passes[k].first.c_str(), 0, 0, ImGuiID(kDrawShaded + k));
     ImGui::TableHeadersRow();
@@ -147,6 +169,15 @@ void summary(const FrameResult& f) {
     ImGui::Text("%zu draws, %zu fully occluded; samples passed: %s", f.draws.size(), occluded,
                 f.draws_samples_pass.c_str());
     if (!f.draws_visible_note.empty()) ImGui::TextDisabled("%s", f.draws_visible_note.c_str());
+    if (f.hiz && f.hiz->unsafe) {
+        const uint64_t unsafe = *f.hiz->unsafe;
+        if (unsafe)
+            ImGui::TextColored(ImVec4(1.0f, 0.25f, 0.25f, 1.0f),
+                               "Hi-Z: %llu unsafe (not visible, yet samples passed)",
+                               static_cast<unsigned long long>(unsafe));
+        else
+            ImGui::TextDisabled("Hi-Z: no unsafe disagreement with samples passed");
+    }
 }
 
 }  // namespace

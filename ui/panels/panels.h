@@ -63,6 +63,7 @@ enum DrawColumn : int {
     kDrawVisible,
     kDrawSamples,
     kDrawWasted,  // over the in-view passes
+    kDrawHiz,     // hiz=on: the Hi-Z verdict (sorts visible, occluded, outside)
     kDrawShaded
 };
 std::vector<size_t> draw_rows(const std::vector<DrawReport>& draws, const std::string& filter,

@@ -243,5 +243,46 @@ TEST(Report, DrawsListEveryGroupWithNullsWhereNotMeasured) {
     EXPECT_FALSE(report_of(two_pass_frame()).contains("draws"));
 }
 
+// hiz=on: the pyramid's levels and the verdicts' tally; with count_draws each draw carries its
+// verdict beside samples_passed, and an unsafe one says so. Without count_draws the counts are
+// null (not measured), never 0; hiz off leaves both out.
+TEST(Report, HizGivesLevelsAndEachDrawsVerdictBesideSamplesPassed) {
+    FrameResult frame = two_pass_frame();
+    frame.hiz.emplace();
+    frame.hiz->levels = {{5, 3}, {2, 1}, {1, 1}};
+    frame.hiz->source = "depth";
+    const nlohmann::json pyramid_only = report_of(frame);
+    EXPECT_EQ(pyramid_only["hiz"], (nlohmann::json{{"levels", {{5, 3}, {2, 1}, {1, 1}}},
+                                                   {"source", "depth"},
+                                                   {"samples", 1},
+                                                   {"farthest", "min (reverse-Z)"},
+                                                   {"unsafe_draws", nullptr},
+                                                   {"unsafe_visible_draws", nullptr}}));
+    EXPECT_FALSE(report_of(two_pass_frame()).contains("hiz"));
+    DrawReport back, front;
+    back.samples_passed = 12;
+    back.hiz = HizVerdict::Occluded;
+    back.hiz_occluded_instances = 1;
+    back.hiz_unsafe = true;
+    front.group = 1;
+    front.samples_passed = 40;
+    front.hiz = HizVerdict::Visible;
+    frame.draws = {back, front};
+    frame.hiz->groups = {HizVerdict::Occluded, HizVerdict::Visible};
+    frame.hiz->unsafe = 1;
+    frame.hiz->unsafe_visible = 0;
+    const nlohmann::json report = report_of(frame);
+    EXPECT_EQ(report["hiz"]["draws"],
+              (nlohmann::json{{"visible", 1}, {"occluded", 1}, {"outside", 0}}));
+    EXPECT_EQ(report["hiz"]["unsafe_draws"], 1);
+    EXPECT_EQ(report["hiz"]["unsafe_visible_draws"], 0);
+    EXPECT_EQ(report["draws"][0]["hiz"], "occluded");
+    EXPECT_EQ(report["draws"][0]["hiz_occluded_instances"], 1);
+    EXPECT_EQ(report["draws"][0]["hiz_unsafe"], true);
+    EXPECT_EQ(report["draws"][0]["samples_passed"], 12);
+    EXPECT_EQ(report["draws"][1]["hiz"], "visible");
+    EXPECT_EQ(report["draws"][1]["hiz_unsafe"], false);
+}
+
 }  // namespace
 }  // namespace ds::capture

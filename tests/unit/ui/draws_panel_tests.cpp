@@ -37,12 +37,14 @@ TEST_F(DrawsPanel, FiltersSortsAndHighlightsTheSelectedDraw) {
     ui->frame();
     EXPECT_TRUE(in.frame().draws.empty());
     in.queue(ui::SetSetting{"count_draws", "on"});
+    in.queue(ui::SetSetting{"hiz", "on"});       // the Hi-Z column has verdicts to sort
     in.queue(ui::SelectResource{"surface_id"});  // the same from frame to frame (no history)
     ui->frame();
     ui->frame();  // the panels draw the last frame's results: now the counted one
     const FrameResult& f = in.frame();
     ASSERT_FALSE(f.draws.empty());
     EXPECT_EQ(in.panel_state().draw_rows.size(), f.draws.size());  // drawn, unfiltered
+    for (const DrawReport& d : f.draws) EXPECT_TRUE(d.hiz.has_value()) << d.name.mesh;
 
     // Sorting: each numeric column orders its measured values, nulls last.
     for (int column = ui::kDrawInstances; column < ui::kDrawShaded + 4; ++column) {
@@ -58,6 +60,8 @@ TEST_F(DrawsPanel, FiltersSortsAndHighlightsTheSelectedDraw) {
                         return d.visible_pixels;
                     case ui::kDrawSamples:
                         return d.samples_passed;
+                    case ui::kDrawHiz:
+                        return d.hiz ? std::optional<int64_t>(int64_t(*d.hiz)) : std::nullopt;
                     case ui::kDrawWasted: {
                         if (d.wasted_fragments.empty()) return std::nullopt;
                         int64_t sum = 0;
