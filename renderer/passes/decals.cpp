@@ -90,6 +90,7 @@ void DecalsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
                         .samples = in.options.samples,
                         .depth = in.options.depth_format,
                         .count_draws = res.decal_counts.draws.valid()};
+        pipelines_.get(v);  // built now (a replay's also sets the replay's descriptors up)
         return Step{mode, v, pipelines_.info(v)};
     };
     auto steps = [&](bool history) {

@@ -87,6 +87,7 @@ void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
     if (in.pixel && !in.options.subpass) {  // a replay would split the render pass
         const Variant twin{.history = true, .samples = v.samples, .depth = v.depth};
         history_pipelines_ = {history_pipeline(info, /*blend=*/true)};
+        pipelines_.get(twin);  // built now: building it sets the replay's descriptors up
         drawing_.add_history(graph, in, res, history_, draw_with(twin, info, nullptr));
     }
     // msaa > 1: the samples are stored too, for the edge count (MsaaProbe) after the graph.

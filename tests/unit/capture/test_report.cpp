@@ -49,7 +49,8 @@ TEST(Report, HasEveryFieldOfAFrameAndOnlyTheMeasuredOptionalOnes) {
     EXPECT_EQ(keys(report),
               (std::set<std::string>{"tool", "version", "device", "scene", "size", "settings",
                                      "frame", "validation_messages", "passes", "counters",
-                                     "skipped", "msaa", "decals"}));
+                                     "skipped", "msaa", "decals", "tiler"}));
+    EXPECT_EQ(report["tiler"]["ran"], "dynamic");  // always there: why there is no render pass
     EXPECT_EQ(report["decals"],
               (nlohmann::json{{"overlays", nlohmann::json::array()}, {"decals_pass", false}}));
     EXPECT_EQ(report["device"]["driver"], "driver 1");

@@ -94,7 +94,7 @@ TEST_F(PrepassMode, DepthModePassesPipelinesAndResources) {
     EXPECT_EQ(names(f),
               (std::vector<std::string>{"shadow", "depth_prepass", "normals_from_depth", "gtao",
                                         "ao_spatial", "ao_temporal", "contact_shadows", "forward",
-                                        "decals", "skybox", "transparent", "tonemap"}));
+                                        "skybox", "decals", "transparent", "tonemap"}));
     EXPECT_TRUE(f.skipped.empty());
     const PassResult& prepass = pass(f, "depth_prepass");
     ASSERT_EQ(prepass.pipelines.size(), 2u);
@@ -120,7 +120,7 @@ TEST_F(PrepassMode, DepthModePassesPipelinesAndResources) {
     const FrameResult plain =
         frame("atrium", {"prepass_mode=depth", "gtao=off", "contact_shadows=off"});
     EXPECT_EQ(names(plain),
-              (std::vector<std::string>{"shadow", "depth_prepass", "forward", "decals", "skybox",
+              (std::vector<std::string>{"shadow", "depth_prepass", "forward", "skybox", "decals",
                                         "transparent", "tonemap"}));
     EXPECT_FALSE(has_resource(plain, "depth_normals")) << "nobody reads normals";
     EXPECT_EQ(plain.skipped, (std::vector<std::string>{"gtao: skipped (gtao=off)",

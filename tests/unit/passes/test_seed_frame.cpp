@@ -75,7 +75,7 @@ TEST_F(SeedFrame, PassOrderAndSkips) {
     const FrameResult on = render({});
     EXPECT_EQ(names(on), (std::vector<std::string>{"shadow", "depth_prepass", "gtao", "ao_spatial",
                                                    "ao_temporal", "contact_shadows", "forward",
-                                                   "decals", "skybox", "transparent", "tonemap"}));
+                                                   "skybox", "decals", "transparent", "tonemap"}));
     EXPECT_TRUE(on.skipped.empty());
     const std::string on_dump = renderer_->graph_dump();
     const FrameResult off = render({"prepass=off", "shadows=off", "sky=off"});

@@ -258,7 +258,7 @@ TEST_F(Inspector, ZoomedInTheReadoutNamesTheTexelDrawnUnderTheCursor) {
     auto ui = open("atrium");
     // The collapsed panels' title bars lie over the lower image (the Viewer window has no
     // background): park them outside the framebuffer, so every probe sees the blit alone.
-    for (const char* panel : {"Draws", "Depth", "Advisor", "Overlays", "Pixel"})
+    for (const char* panel : {"Draws", "Depth", "Advisor", "Overlays", "Pixel", "Tiler"})
         ImGui::SetWindowPos(panel, ImVec2(0.0f, 10000.0f));
     ui::ViewerState& v = ui->inspector().viewer();
     v.zoom = 4.0f;
