@@ -79,7 +79,7 @@ void pass_row(PanelIo& io, const PassResult& p, double worst) {
     ImGui::TableNextColumn();
     const bool selected = p.name == in.selected_pass();
     std::string label = p.name;
-    if (!p.subpass_group.empty()) label = "subpass " + std::to_string(p.subpass) + ": " + p.name;
+    if (!p.subpass_group.empty()) label = std::to_string(p.subpass) + ": " + p.name;  // subpass
     if (p.role != graph::PassRole::Frame)
         label += std::string(" (") + graph::pass_role_name(p.role) + ")";
     // A pass that drew with a pipeline that loses early-Z says so in its row (one bound with
@@ -175,10 +175,14 @@ bool support_row(int count, double ms) {
 bool group_row(const std::string& group, size_t subpasses, double ms) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    const std::string label =
-        "render pass " + group + " (" + std::to_string(subpasses) + " subpasses)###group_" + group;
+    const std::string label = group + " [" + std::to_string(subpasses) + "]###group_" + group;
     const bool open = ImGui::TreeNodeEx(
         label.c_str(), ImGuiTreeNodeFlags_SpanFullWidth | ImGuiTreeNodeFlags_DefaultOpen);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "render pass of %zu subpasses (render_path=subpass): its passes nested, "
+            "each after its subpass index; the Tiler panel has its attachments",
+            subpasses);
     ImGui::TableNextColumn();
     ImGui::Text("%.2f", ms);
     return open;

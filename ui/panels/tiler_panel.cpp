@@ -85,8 +85,8 @@ void tiler_panel(PanelIo& io, const PanelLayout& layout) {
         return;
     }
     const FrameResult& frame = io.inspector.frame();
-    ImGui::PushTextWrapPos(0.0f);
     if (!frame.tiler) {
+        ImGui::PushTextWrapPos(0.0f);
         ImGui::TextDisabled(
             "render_path=dynamic: every pass renders on its own, nothing for a tiler to merge.");
         if (ImGui::Button("render_path=subpass"))
@@ -96,14 +96,14 @@ void tiler_panel(PanelIo& io, const PanelLayout& layout) {
             "seed 002: depth prepass, forward and sky as two subpasses of one render pass; "
             "forward reads normals and roughness as input attachments (tile memory). Needs the "
             "prepass; gtao, contact_shadows and per-pass diagnostics do not run on it.");
-    } else {
+        ImGui::PopTextWrapPos();
+    } else {  // no wrapping: it would squeeze the table's columns
         const graph::TilerReport& t = *frame.tiler;
         ImGui::Text("render pass '%s': %u subpasses", t.group.c_str(), t.subpasses);
         budget(t);
         attachments(t);
         conditions(t);
     }
-    ImGui::PopTextWrapPos();
     ImGui::End();
 }
 
