@@ -24,21 +24,7 @@ MsaaProbePass::MsaaProbePass(const PassServices& services)
     : services_(services),
       nearest_(vk::nearest_clamp_sampler(services.context, "msaa probe")),
       pipeline_(services, "msaa_probe.comp", "msaa probe") {
-    vk::Context& context = services.context;
-    const VkDescriptorSetLayoutBinding bindings[] = {
-        vk::layout_binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_SHADER_STAGE_COMPUTE_BIT),
-        vk::layout_binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_SHADER_STAGE_COMPUTE_BIT),
-        vk::layout_binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT)};
-    set_layout_ = vk::DescriptorSetLayout(context, bindings, "msaa probe set");
-    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
-    pool_ = vk::DescriptorPool(context, 1, sizes, "msaa probe");
-    set_ = pool_.allocate(set_layout_.handle());
-    const VkDescriptorSetLayout sets[] = {set_layout_.handle()};
-    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(ProbePush)};
-    layout_ = vk::PipelineLayout(context, sets, {&push, 1}, "msaa probe layout");
+    set_ = make_readback_set(services.context, 2, sizeof(ProbePush), "msaa probe");
 }
 
 void MsaaProbePass::rebuild_pipelines(vk::DestroyList& retired) {
@@ -53,7 +39,7 @@ void MsaaProbePass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameR
     out_ = {};
     const bool full = reads_back_fully(in.read_back);
     if (!in.options.msaa() || !full) return;  // the exact count reads every sample: costly
-    pipeline_.get(layout_.handle());          // built now, not while the frame records
+    pipeline_.get(set_.layout.handle());      // built now, not while the frame records
     const bool copy_depth = in.read_back == ReadBack::WithMsaaDepth;
     const VkExtent2D extent = graph.resources()[res.msaa_depth.index].extent;
     depth_values_ =
@@ -84,13 +70,14 @@ void MsaaProbePass::record(graph::PassContext& ctx, const Bound& bound, int32_t 
     writer.image(0, ctx.view(depth), nearest_.handle(), ctx.layout(depth))
         .image(1, ctx.view(color), nearest_.handle(), ctx.layout(color))
         .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ctx.buffer(out));
-    writer.update(services_.context.device(), set_);
+    writer.update(services_.context.device(), set_.set);
     VkCommandBuffer cmd = ctx.cmd();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get(layout_.handle()));
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle(), 0, 1, &set_, 0,
-                            nullptr);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get(set_.layout.handle()));
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, set_.layout.handle(), 0, 1,
+                            &set_.set, 0, nullptr);
     const ProbePush push{extent.width, extent.height, samples, copy_depth ? 1 : 0};
-    vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdPushConstants(cmd, set_.layout.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
+                       &push);
     vkCmdDispatch(cmd, group_count(extent.width), group_count(extent.height), 1);
 }
 

@@ -10,6 +10,7 @@
 
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame_pass.h"
+#include "renderer/passes/pass_util.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
@@ -37,10 +38,7 @@ class MsaaProbePass final : public FramePass {
 
     PassServices services_;
     vk::Sampler nearest_;
-    vk::DescriptorSetLayout set_layout_;
-    vk::DescriptorPool pool_;
-    VkDescriptorSet set_ = VK_NULL_HANDLE;
-    vk::PipelineLayout layout_;
+    ReadbackSet set_;               // its one set and pipeline layout
     LazyComputePipeline pipeline_;  // built by the first msaa frame that probes
     graph::BufferHandle out_;       // this frame's, if probed
     VkDeviceSize depth_values_ = 0;

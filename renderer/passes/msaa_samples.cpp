@@ -32,23 +32,7 @@ MsaaSamplesPass::MsaaSamplesPass(const PassServices& services)
       nearest_(vk::nearest_clamp_sampler(services.context, "msaa samples")),
       pipelines_{samples_pipeline(services, false, false), samples_pipeline(services, false, true),
                  samples_pipeline(services, true, false), samples_pipeline(services, true, true)} {
-    vk::Context& context = services.context;
-    const VkDescriptorSetLayoutBinding bindings[] = {
-        vk::layout_binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_SHADER_STAGE_COMPUTE_BIT),
-        vk::layout_binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_SHADER_STAGE_COMPUTE_BIT),
-        vk::layout_binding(2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_SHADER_STAGE_COMPUTE_BIT),
-        vk::layout_binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT)};
-    set_layout_ = vk::DescriptorSetLayout(context, bindings, "msaa samples set");
-    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
-    pool_ = vk::DescriptorPool(context, 1, sizes, "msaa samples");
-    set_ = pool_.allocate(set_layout_.handle());
-    const VkDescriptorSetLayout sets[] = {set_layout_.handle()};
-    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(SamplesPush)};
-    layout_ = vk::PipelineLayout(context, sets, {&push, 1}, "msaa samples layout");
+    set_ = make_readback_set(services.context, 3, sizeof(SamplesPush), "msaa samples");
 }
 
 LazyComputePipeline& MsaaSamplesPass::pipeline(bool multisampled, bool surface_ids) {
@@ -76,7 +60,7 @@ void MsaaSamplesPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
     rect_.height = std::clamp(rect_.height, 1u, extent.height - rect_.y);
     samples_ = uint32_t(in.options.samples);
     surface_ids_ = bound.surface.valid();
-    pipeline(multi, surface_ids_).get(layout_.handle());  // built now, not while recording
+    pipeline(multi, surface_ids_).get(set_.layout.handle());  // built now, not while recording
     const VkDeviceSize bytes =
         VkDeviceSize(rect_.width) * rect_.height * samples_ * sizeof(SampleRecord);
     bound.out = services_.readback.import_storage(graph, kSamplesBuffer, bytes);
@@ -101,15 +85,16 @@ void MsaaSamplesPass::record(graph::PassContext& ctx, const Bound& bound, bool m
         .image(1, ctx.view(bound.color), nearest_.handle(), ctx.layout(bound.color))
         .image(2, ctx.view(surface), nearest_.handle(), ctx.layout(surface))
         .buffer(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ctx.buffer(bound.out));
-    writer.update(services_.context.device(), set_);
+    writer.update(services_.context.device(), set_.set);
     VkCommandBuffer cmd = ctx.cmd();
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
-                      pipeline(multisampled, surface_ids_).get(layout_.handle()));
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.handle(), 0, 1, &set_, 0,
-                            nullptr);
+                      pipeline(multisampled, surface_ids_).get(set_.layout.handle()));
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, set_.layout.handle(), 0, 1,
+                            &set_.set, 0, nullptr);
     const SamplesPush push{
         {int32_t(rect_.x), int32_t(rect_.y)}, {rect_.width, rect_.height}, int32_t(samples_)};
-    vkCmdPushConstants(cmd, layout_.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdPushConstants(cmd, set_.layout.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
+                       &push);
     vkCmdDispatch(cmd, group_count(rect_.width), group_count(rect_.height), 1);
 }
 

@@ -13,6 +13,7 @@
 
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame_pass.h"
+#include "renderer/passes/pass_util.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
@@ -53,10 +54,7 @@ class MsaaSamplesPass final : public FramePass {
 
     PassServices services_;
     vk::Sampler nearest_;
-    vk::DescriptorSetLayout set_layout_;
-    vk::DescriptorPool pool_;
-    VkDescriptorSet set_ = VK_NULL_HANDLE;
-    vk::PipelineLayout layout_;
+    ReadbackSet set_;  // its one set and pipeline layout
     std::array<LazyComputePipeline, 4> pipelines_;
     // This frame's query, clamped to the frame, and its buffer (invalid: none).
     SampleQuery rect_;

@@ -217,6 +217,26 @@ void collect_counts(const HostReadback& readback, const CountImages& counts, Pas
     out.draw_shaded_in_view = counts.in_view;
 }
 
+ReadbackSet make_readback_set(vk::Context& context, uint32_t samplers, uint32_t push_size,
+                              const std::string& name) {
+    std::vector<VkDescriptorSetLayoutBinding> bindings;
+    for (uint32_t i = 0; i < samplers; ++i)
+        bindings.push_back(vk::layout_binding(i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                              VK_SHADER_STAGE_COMPUTE_BIT));
+    bindings.push_back(vk::layout_binding(samplers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                          VK_SHADER_STAGE_COMPUTE_BIT));
+    ReadbackSet r;
+    r.set_layout = vk::DescriptorSetLayout(context, bindings, (name + " set").c_str());
+    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, samplers},
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+    r.pool = vk::DescriptorPool(context, 1, sizes, name.c_str());
+    r.set = r.pool.allocate(r.set_layout.handle());
+    const VkDescriptorSetLayout sets[] = {r.set_layout.handle()};
+    const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, push_size};
+    r.layout = vk::PipelineLayout(context, sets, {&push, 1}, (name + " layout").c_str());
+    return r;
+}
+
 std::string off_or_without_prepass(const FrameInputs& in, const char* knob) {
     if (!in.settings->get_bool(knob)) return std::string(knob) + "=off";
     if (in.options.subpass) return subpass_path_reason();

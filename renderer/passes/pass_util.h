@@ -98,6 +98,18 @@ void declare_hdr_over_depth(graph::PassBuilder& b, FrameResources& res, bool msa
 void begin_hdr_over_depth(graph::PassContext& ctx, const FrameResources& res, bool msaa,
                           bool resolve);
 
+// A read-back compute pass's one descriptor set (msaa_probe, msaa_samples): `samplers`
+// combined image samplers at bindings 0.., a storage buffer after them, and a pipeline layout
+// with a compute push-constant range of `push_size` bytes.
+struct ReadbackSet {
+    vk::DescriptorSetLayout set_layout;
+    vk::DescriptorPool pool;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    vk::PipelineLayout layout;
+};
+ReadbackSet make_readback_set(vk::Context& context, uint32_t samplers, uint32_t push_size,
+                              const std::string& name);
+
 // Why a pass that needs the prepass's depth and normals (gtao and its filters, contact
 // shadows) is not in the frame: "<knob>=off", or "prepass off" / the subpass path's reason
 // when the knob is on.
