@@ -319,10 +319,7 @@ void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::Fra
     result.tiler = tiler_summary(*graph);
     result.msaa.samples = uint32_t(in.options.samples);
     if (in.options.msaa())
-        result.msaa.depth_resolve =
-            in.options.subpass  // the render pass plans none: depth_resolve's shader after it
-                ? "shader"
-                : passes::depth_resolve_name(context->report(), in.options.reverse_z);
+        result.msaa.depth_resolve = passes::depth_resolve_name(context->report(), in.options);
     // Depth samples only come with a resolved depth to compare them with (D32).
     if (result.msaa.resolved_depth.empty()) result.msaa.depth_samples.clear();
 }

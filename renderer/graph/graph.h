@@ -54,6 +54,15 @@ namespace ds::graph {
 
 class RenderGraph;
 
+// The render pass and subpass a pass records in (render_path=subpass); empty: its own
+// rendering. Pipeline variants keep both: a pipeline is made for one subpass.
+struct SubpassTarget {
+    VkRenderPass pass = VK_NULL_HANDLE;
+    uint32_t index = 0;
+    explicit operator bool() const { return pass != VK_NULL_HANDLE; }
+    bool operator==(const SubpassTarget&) const = default;
+};
+
 // "Read previous, write current": a temporal pass samples `previous` (last frame's `current`)
 // and writes `current`; at the end of the frame the two swap. PassContext::history_valid()
 // says whether `previous` holds anything (not after a resize or invalidate_history()).
@@ -77,7 +86,7 @@ class PassBuilder {
 
     // This pass is subpass `index` of render pass `group` (graph/subpass.h): the graph begins
     // the render pass before the group's first pass, steps subpasses and ends it after the
-    // last; the pass records draws only, with pipelines made for PassContext::render_pass().
+    // last; the pass records draws only, with pipelines made for PassContext::subpass_target().
     // Call first, before declaring accesses.
     void subpass(const std::string& group, uint32_t index);
     // In a subpass: the attachment's LOAD_OP_CLEAR value (a render pass clears on load).
@@ -112,9 +121,8 @@ class PassContext {
     VkDeviceSize size(BufferHandle buffer) const;
     bool history_valid(const HistoryImage& history) const;
     // Inside a subpass group: its VkRenderPass (pipelines are made for it) and this pass's
-    // subpass index; VK_NULL_HANDLE for a pass on its own (dynamic rendering).
-    VkRenderPass render_pass() const;
-    uint32_t subpass() const;
+    // subpass index; an empty target for a pass on its own (dynamic rendering).
+    SubpassTarget subpass_target() const;
 
     // A dependency between two steps inside this pass (two dispatches, where the second reads
     // what the first wrote), in the graph's terms: `before` and `after` must both be declared

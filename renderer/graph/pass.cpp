@@ -208,12 +208,8 @@ void PassContext::dependency(ImageHandle h, Access before, Access after) const {
     graph_.record_barriers(cmd_, {&b, 1});
 }
 
-VkRenderPass PassContext::render_pass() const {
-    return graph_.render_pass_of(pass_);
-}
-
-uint32_t PassContext::subpass() const {
-    return graph_.passes_[pass_].subpass;
+SubpassTarget PassContext::subpass_target() const {
+    return {graph_.render_pass_of(pass_), graph_.passes_[pass_].subpass};
 }
 
 bool PassContext::history_valid(const HistoryImage& history) const {

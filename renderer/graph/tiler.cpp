@@ -4,7 +4,6 @@
 #include <set>
 
 #include "renderer/format/format.h"
-#include "renderer/graph/names.h"
 
 namespace ds::graph {
 namespace {

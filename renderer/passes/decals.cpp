@@ -62,7 +62,7 @@ vk::Pipeline DecalsPass::create(const Variant& v, const ShaderStages& s) const {
     if (v.history) return history_.create(s, v.samples, pipeline_name(v));
     const float towards_camera = v.reverse_z ? 1.0f : -1.0f;
     vk::GraphicsPipelineBuilder b = scene_pipeline_builder(drawing_.layout(), s.vert, s.frag);
-    if (v.render_pass) b.render_pass(v.render_pass, 1);
+    if (v.render_pass) b.render_pass(v.render_pass, v.subpass);
     return b
         .color_attachment(kHdrFormat,
                           v.mode == AlphaMode::Blend ? vk::Blend::Alpha : vk::Blend::None)
@@ -99,19 +99,21 @@ void DecalsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
     };
     // Opaque, MASK, BLEND overlays in authored order; the log's tag is the step.
     auto draw_with = [this](Steps order, PipelineUses* uses) {
-        return [this, order, uses](VkCommandBuffer cmd, const FrameInputs& in,
-                                   VkPipelineLayout layout, DrawLog* log, VkRenderPass pass) {
-            for (uint32_t i = 0; i < order.size(); ++i) {
-                const Step& s = order[i];
-                Variant v = s.variant;
-                v.render_pass = pass;
-                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get(v));
-                if (log) log->pipeline = i;
-                const DrawCounts n = draw_groups(cmd, *in.scene, layout, {&s.mode, 1}, Decals::Only,
-                                                 std::nullopt, {.log = log});
-                if (uses) uses->add(s.info, n.draws);
-            }
-        };
+        return
+            [this, order, uses](VkCommandBuffer cmd, const FrameInputs& in, VkPipelineLayout layout,
+                                DrawLog* log, graph::SubpassTarget target) {
+                for (uint32_t i = 0; i < order.size(); ++i) {
+                    const Step& s = order[i];
+                    Variant v = s.variant;
+                    v.render_pass = target.pass;
+                    v.subpass = target.index;
+                    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get(v));
+                    if (log) log->pipeline = i;
+                    const DrawCounts n = draw_groups(cmd, *in.scene, layout, {&s.mode, 1},
+                                                     Decals::Only, std::nullopt, {.log = log});
+                    if (uses) uses->add(s.info, n.draws);
+                }
+            };
     };
     const Steps order = steps(false);
     if (in.pixel && !in.options.subpass) {  // a replay would split the render pass

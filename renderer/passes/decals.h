@@ -55,13 +55,15 @@ class DecalsPass final : public FramePass {
         bool reverse_z = true;  // the bias's direction
         bool history = false;   // PIXEL_HISTORY=1: the replay's, no attachments
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-        VkFormat depth = VK_FORMAT_UNDEFINED;       // the frame's depth_format
-        bool count_draws = false;                   // COUNT_DRAWS=1 (with counting)
-        VkRenderPass render_pass = VK_NULL_HANDLE;  // render_path=subpass: its subpass 1
+        VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
+        bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
+        // render_path=subpass: the render pass and subpass it draws in (null: its own).
+        VkRenderPass render_pass = VK_NULL_HANDLE;
+        uint32_t subpass = 0;
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(int(mode), counting, reverse_z, history, int(samples), int(depth),
-                               count_draws, render_pass);
+                               count_draws, render_pass, subpass);
         }
     };
     ShaderStages compile(const Variant& variant) const;

@@ -135,7 +135,7 @@ vk::Pipeline DepthPrepass::create(const Variant& v, const ShaderStages& s) const
     if (v.history) return history_.create(s, v.samples, pipeline_name(v), inputs);
     vk::GraphicsPipelineBuilder b =
         scene_pipeline_builder(layout_.handle(), s.vert, s.frag, inputs);
-    if (v.render_pass) b.color_attachment(kHdrFormat).render_pass(v.render_pass, 0);
+    if (v.render_pass) b.color_attachment(kHdrFormat).render_pass(v.render_pass, v.subpass);
     for (VkFormat format : color_formats(v)) b.color_attachment(format);
     return b.depth_attachment(v.depth)
         .samples(v.samples)
@@ -195,9 +195,10 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
         },
         [this](graph::PassContext& ctx, const Data& d) {
             Draw draw = d.draw;
-            if (VkRenderPass pass = ctx.render_pass()) {
+            if (const graph::SubpassTarget target = ctx.subpass_target()) {
                 Variant opaque = d.opaque, tested = d.tested;
-                opaque.render_pass = tested.render_pass = pass;
+                opaque.render_pass = tested.render_pass = target.pass;
+                opaque.subpass = tested.subpass = target.index;
                 draw = make_draw(opaque, tested, d.in.options.masked_split);
             }
             record(ctx, d.in, d.res, d.msaa, draw, d.discards);
@@ -295,7 +296,7 @@ DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInput
         res.msaa_surface_id = msaa.surface_id;
     }
     // Without a native nearest-sample resolve, depth_resolve writes res.depth next.
-    if (native_depth_resolve(services_.context.report(), in.options.reverse_z))
+    if (native_depth_resolve(services_.context.report(), in.options))
         b.write(res.depth, Access::ResolveDst);
     return msaa;
 }
@@ -348,7 +349,7 @@ void DepthPrepass::begin(graph::PassContext& ctx, const FrameInputs& in, const F
         ctx.view(res.msaa_depth), ctx.layout(res.msaa_depth), VK_ATTACHMENT_LOAD_OP_CLEAR,
         VK_ATTACHMENT_STORE_OP_STORE, in.options.far_depth());
     if (const VkResolveModeFlagBits mode =
-            native_depth_resolve(services_.context.report(), in.options.reverse_z)) {
+            native_depth_resolve(services_.context.report(), in.options)) {
         depth.resolveMode = mode;
         depth.resolveImageView = ctx.view(res.depth);
         depth.resolveImageLayout = ctx.layout(res.depth);
@@ -365,7 +366,7 @@ void DepthPrepass::record(graph::PassContext& ctx, const FrameInputs& in, const 
         write_count_set(ctx, services_.context.device(), draw.counts, res.prepass_counts);
     }
     queries_.reset(cmd);
-    const bool own_rendering = !ctx.render_pass();  // else a subpass of the graph's
+    const bool own_rendering = !ctx.subpass_target();  // else a subpass of the graph's
     if (own_rendering) begin(ctx, in, res, msaa);
     draw_scene(cmd, in, draw, uses_, nullptr);
     if (own_rendering) vk::fn().cmd_end_rendering(cmd);

@@ -92,14 +92,16 @@ class DepthPrepass final : public FramePass {
         bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
         bool gbuffer = true;                   // prepass_mode=gbuffer: normals, roughness
         bool coverage_slot = false;  // depth mode, alpha_to_coverage: colour slot 0, no image
-        // render_path=subpass: subpass 0 of this render pass; LIGHT_SLOT=1 (the light is
-        // colour attachment 0: the surface's emission, none, and alpha-to-coverage's alpha).
+        // render_path=subpass: the render pass and subpass it draws in (null: its own);
+        // LIGHT_SLOT=1 (the light is colour attachment 0: the surface's emission, none, and
+        // alpha-to-coverage's alpha).
         VkRenderPass render_pass = VK_NULL_HANDLE;
+        uint32_t subpass = 0;
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(int(alpha), counting, alpha_to_coverage, count_discards, surface_id,
                                history, int(samples), int(depth), count_draws, gbuffer,
-                               coverage_slot, render_pass);
+                               coverage_slot, render_pass, subpass);
         }
     };
     // Whether the variant has a fragment stage: prepass_mode=depth's plain opaque one has none.

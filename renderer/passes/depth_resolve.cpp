@@ -44,8 +44,7 @@ void DepthResolvePass::add(graph::RenderGraph& graph, const FrameInputs& in, Fra
     const FrameOptions& o = in.options;
     // render_path=subpass resolves after the render pass, in this shader: the render pass
     // plans no depth resolve.
-    if (!o.msaa() || (native_depth_resolve(services_.context.report(), o.reverse_z) && !o.subpass))
-        return;
+    if (!o.msaa() || native_depth_resolve(services_.context.report(), o)) return;
     if ((o.prepass && !o.subpass) != (after_ == After::Prepass)) return;
     const graph::ImageHandle msaa_depth = res.msaa_depth, depth = res.depth;
     graph.add_pass(name(), [&](graph::PassBuilder& b) {

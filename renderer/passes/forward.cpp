@@ -116,7 +116,7 @@ vk::Pipeline ForwardPass::create(const Variant& v, const ShaderStages& s) const 
     if (v.history) return history_.create(s, v.samples, pipeline_name(v));
     vk::GraphicsPipelineBuilder b = scene_pipeline_builder(
         v.gbuffer_inputs ? subpass_layout_.handle() : layout_.handle(), s.vert, s.frag);
-    if (v.render_pass) b.render_pass(v.render_pass, 1);
+    if (v.render_pass) b.render_pass(v.render_pass, v.subpass);
     return b.color_attachment(kHdrFormat)
         .depth_attachment(v.depth)
         .samples(v.samples)
@@ -177,9 +177,10 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
         },
         [this](graph::PassContext& ctx, const Data& d) {
             Draw draw = d.draw;
-            if (VkRenderPass pass = ctx.render_pass()) {
+            if (const graph::SubpassTarget target = ctx.subpass_target()) {
                 Variant opaque = d.opaque, mask = d.mask;
-                opaque.render_pass = mask.render_pass = pass;
+                opaque.render_pass = mask.render_pass = target.pass;
+                opaque.subpass = mask.subpass = target.index;
                 const LightingInputs lighting = draw.lighting;
                 draw = make_draw(opaque, mask, d.with_mask);
                 draw.lighting = lighting;
@@ -236,7 +237,7 @@ void ForwardPass::record(graph::PassContext& ctx, const FrameInputs& in, const F
     const VkDescriptorSet lighting = lighting_.write(ctx, in.frame_number, draw.lighting);
 
     queries_.reset(cmd);
-    const bool own_rendering = !ctx.render_pass();  // else subpass 1 of the graph's
+    const bool own_rendering = !ctx.subpass_target();  // else subpass 1 of the graph's
     if (own_rendering) begin(ctx, o, res);
     if (draw.layout == subpass_layout_.handle()) {
         const VkDescriptorSet inputs = input_set(ctx, in, res);
@@ -319,7 +320,7 @@ void ForwardPass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const D
 }
 
 bool ForwardPass::native_resolve(const FrameOptions& o) const {
-    return native_depth_resolve(services_.context.report(), o.reverse_z) != VK_RESOLVE_MODE_NONE;
+    return native_depth_resolve(services_.context.report(), o) != VK_RESOLVE_MODE_NONE;
 }
 
 void ForwardPass::begin(graph::PassContext& ctx, const FrameOptions& o,
@@ -327,7 +328,7 @@ void ForwardPass::begin(graph::PassContext& ctx, const FrameOptions& o,
     const graph::ImageHandle color_image = o.msaa() ? res.msaa_hdr : res.hdr;
     const graph::ImageHandle depth_image = o.msaa() ? res.msaa_depth : res.depth;
     const VkRenderingAttachmentInfo color =
-        color_attachment(ctx.view(color_image), VK_ATTACHMENT_LOAD_OP_CLEAR, kBackground);
+        color_attachment(ctx.view(color_image), VK_ATTACHMENT_LOAD_OP_CLEAR, kHdrBackground);
     // With the prepass the depth is only tested: loaded, never stored (STORE_OP_NONE keeps
     // the contents and needs no write access), in the read-only layout the graph chose.
     VkRenderingAttachmentInfo depth =
@@ -337,7 +338,7 @@ void ForwardPass::begin(graph::PassContext& ctx, const FrameOptions& o,
                                      VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE,
                                      o.far_depth());
     if (o.msaa() && !o.prepass && native_resolve(o)) {
-        depth.resolveMode = native_depth_resolve(services_.context.report(), o.reverse_z);
+        depth.resolveMode = native_depth_resolve(services_.context.report(), o);
         depth.resolveImageView = ctx.view(res.depth);
         depth.resolveImageLayout = ctx.layout(res.depth);
     }

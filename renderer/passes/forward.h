@@ -50,7 +50,6 @@ class ForwardPass final : public FramePass {
   public:
     static constexpr const char* kName = "forward";
     static constexpr VkFormat kHdrFormat = passes::kHdrFormat;
-    static constexpr std::array<float, 4> kBackground = kHdrBackground;
 
     explicit ForwardPass(const PassServices& services);
 
@@ -78,15 +77,17 @@ class ForwardPass final : public FramePass {
         // history only: the replay reads the depth the prepass left (PIXEL_HISTORY_DEPTH), in
         // either prepass_mode (prepass_inputs is gbuffer's only).
         bool after_prepass = false;
-        // render_path=subpass: subpass 1 of this render pass; with gbuffer_inputs, normals
-        // and roughness come from input attachments (SUBPASS_INPUTS=samples), set 4.
+        // render_path=subpass: the render pass and subpass it draws in (null: its own); with
+        // gbuffer_inputs, normals and roughness come from input attachments
+        // (SUBPASS_INPUTS=samples), set 4.
         VkRenderPass render_pass = VK_NULL_HANDLE;
+        uint32_t subpass = 0;
         bool gbuffer_inputs = false;
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(prepass_inputs, alpha_mask, non_invariant, counting, sample_shading,
                                alpha_to_coverage, history, int(samples), int(depth), count_draws,
-                               after_prepass, render_pass, gbuffer_inputs);
+                               after_prepass, render_pass, subpass, gbuffer_inputs);
         }
     };
 

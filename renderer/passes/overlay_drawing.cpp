@@ -64,7 +64,7 @@ void OverlayDrawing::record(graph::PassContext& ctx, const FrameInputs& in,
         write_count_set(ctx, services_.context.device(), count_set, counts);
     }
     const VkDescriptorSet lighting_set = lighting_.write(ctx, in.frame_number, lighting);
-    const bool own_rendering = !ctx.render_pass();  // else subpass 1 of the graph's
+    const bool own_rendering = !ctx.subpass_target();  // else subpass 1 of the graph's
     if (own_rendering) begin_hdr_over_depth(ctx, res, in.options.msaa(), resolve);
     set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());
     const VkPipelineLayout layout = layout_.handle();
@@ -76,7 +76,7 @@ void OverlayDrawing::record(graph::PassContext& ctx, const FrameInputs& in,
     if (count_set)
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kCountSet, 1,
                                 &count_set, 0, nullptr);
-    draw(cmd, in, layout, nullptr, ctx.render_pass());
+    draw(cmd, in, layout, nullptr, ctx.subpass_target());
     if (own_rendering) vk::fn().cmd_end_rendering(cmd);
 }
 
@@ -109,7 +109,7 @@ void OverlayDrawing::add_history(graph::RenderGraph& graph, const FrameInputs& i
                                     &in.frame_set, 0, nullptr);
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1,
                                     &lighting_set, 0, nullptr);
-            draw(cmd, in, layout, &log, VK_NULL_HANDLE);
+            draw(cmd, in, layout, &log, {});
         });
 }
 

@@ -24,10 +24,11 @@ class OverlayDrawing {
   public:
     // Binds the pipelines and draws (binding material sets with `layout`); the geometry and
     // every other set are bound already. `log`: the pixel history replay's (null for the
-    // frame's own pass), whose `layout` is the replay's. `pass`: render_path=subpass, the
-    // render pass whose subpass 1 this draws in (its pipelines are made for it); else null.
-    using Draw = std::function<void(VkCommandBuffer cmd, const FrameInputs& in,
-                                    VkPipelineLayout layout, DrawLog* log, VkRenderPass pass)>;
+    // frame's own pass), whose `layout` is the replay's. `target`: render_path=subpass, the
+    // subpass this draws in (its pipelines are made for it); else empty.
+    using Draw =
+        std::function<void(VkCommandBuffer cmd, const FrameInputs& in, VkPipelineLayout layout,
+                           DrawLog* log, graph::SubpassTarget target)>;
 
     OverlayDrawing(const PassServices& services, const char* name);
 

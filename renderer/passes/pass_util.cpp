@@ -248,15 +248,16 @@ std::string subpass_path_reason() {
            "neighbours";
 }
 
-VkResolveModeFlagBits native_depth_resolve(const vk::DeviceReport& report, bool reverse_z) {
+VkResolveModeFlagBits native_depth_resolve(const vk::DeviceReport& report, const FrameOptions& o) {
     const VkResolveModeFlagBits mode =
-        reverse_z ? VK_RESOLVE_MODE_MAX_BIT : VK_RESOLVE_MODE_MIN_BIT;
+        o.reverse_z ? VK_RESOLVE_MODE_MAX_BIT : VK_RESOLVE_MODE_MIN_BIT;
+    if (o.subpass) return VK_RESOLVE_MODE_NONE;
     return (report.depth_resolve_modes & mode) ? mode : VK_RESOLVE_MODE_NONE;
 }
 
-const char* depth_resolve_name(const vk::DeviceReport& report, bool reverse_z) {
-    if (!native_depth_resolve(report, reverse_z)) return "shader";
-    return reverse_z ? "native-max" : "native-min";
+const char* depth_resolve_name(const vk::DeviceReport& report, const FrameOptions& o) {
+    if (!native_depth_resolve(report, o)) return "shader";
+    return o.reverse_z ? "native-max" : "native-min";
 }
 
 }  // namespace ds::passes

@@ -118,10 +118,11 @@ std::string off_or_without_prepass(const FrameInputs& in, const char* knob);
 std::string subpass_path_reason();
 
 // The resolve mode that keeps the nearest depth (reverse-Z: MAX, else MIN) when `report`
-// offers it; NONE otherwise (then the depth_resolve pass resolves in a shader).
-VkResolveModeFlagBits native_depth_resolve(const vk::DeviceReport& report, bool reverse_z);
+// offers it and the frame resolves inline; NONE otherwise (then the depth_resolve pass
+// resolves in a shader): render_path=subpass plans no depth resolve in its render pass.
+VkResolveModeFlagBits native_depth_resolve(const vk::DeviceReport& report, const FrameOptions& o);
 // What the report says: "native-max", "native-min" or "shader".
-const char* depth_resolve_name(const vk::DeviceReport& report, bool reverse_z);
+const char* depth_resolve_name(const vk::DeviceReport& report, const FrameOptions& o);
 
 // Count images (shaders/common/count.glsl, set 3): R32_UINT, one per counting pass.
 inline constexpr VkFormat kCountFormat = VK_FORMAT_R32_UINT;

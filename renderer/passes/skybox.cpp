@@ -34,7 +34,7 @@ vk::Pipeline SkyboxPass::create(const Variant& v, const ShaderStages& s) const {
                               .layout = layout_.handle(),
                               .name = "skybox",
                               .render_pass = v.render_pass,
-                              .subpass = 1},
+                              .subpass = v.subpass},
                              s);
 }
 
@@ -68,7 +68,9 @@ void SkyboxPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
         [this, variant](graph::PassContext& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
             Variant v = variant;
-            v.render_pass = ctx.render_pass();  // null: its own rendering
+            const graph::SubpassTarget target = ctx.subpass_target();  // empty: own rendering
+            v.render_pass = target.pass;
+            v.subpass = target.index;
             const VkPipeline pipeline = pipelines_.get(v);
             if (!v.render_pass) {
                 const VkRenderingAttachmentInfo color =

@@ -34,9 +34,11 @@ class SkyboxPass final : public FramePass {
     struct Variant {
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         VkFormat depth = VK_FORMAT_UNDEFINED;
-        VkRenderPass render_pass = VK_NULL_HANDLE;  // render_path=subpass: its subpass 1
+        // render_path=subpass: the render pass and subpass it draws in (null: its own).
+        VkRenderPass render_pass = VK_NULL_HANDLE;
+        uint32_t subpass = 0;
         bool operator==(const Variant&) const = default;
-        size_t hash() const { return hash_fields(int(samples), int(depth), render_pass); }
+        size_t hash() const { return hash_fields(int(samples), int(depth), render_pass, subpass); }
     };
 
     ShaderStages compile(const Variant& variant) const;

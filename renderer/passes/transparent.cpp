@@ -54,7 +54,7 @@ std::string TransparentPass::pipeline_name(const Variant& v) {
 vk::Pipeline TransparentPass::create(const Variant& v, const ShaderStages& s) const {
     if (v.history) return history_.create(s, v.samples, pipeline_name(v));
     vk::GraphicsPipelineBuilder b = scene_pipeline_builder(drawing_.layout(), s.vert, s.frag);
-    if (v.render_pass) b.render_pass(v.render_pass, 1);
+    if (v.render_pass) b.render_pass(v.render_pass, v.subpass);
     return b.color_attachment(kHdrFormat, vk::Blend::Alpha)
         .depth_attachment(v.depth)
         .samples(v.samples)
@@ -72,17 +72,18 @@ void TransparentPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
     // Back to front, one instance at a time; the replay draws the same with its own pipeline.
     // The pipeline is the variant's for the render pass it draws in (none: its own rendering).
     auto draw_with = [this](Variant variant, PipelineInfo drawn, PipelineUses* uses) {
-        return
-            [this, variant, drawn, uses](VkCommandBuffer cmd, const FrameInputs& in,
-                                         VkPipelineLayout layout, DrawLog* log, VkRenderPass pass) {
-                const std::vector<InstanceDraw> draws = sort_back_to_front(
-                    *in.scene, in.camera_position, scene_groups(in.options.decal_pass));
-                Variant v = variant;
-                v.render_pass = pass;
-                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get(v));
-                const DrawCounts n = draw_sorted(cmd, *in.scene, layout, draws, {.log = log});
-                if (uses) uses->add(drawn, n.draws);
-            };
+        return [this, variant, drawn, uses](VkCommandBuffer cmd, const FrameInputs& in,
+                                            VkPipelineLayout layout, DrawLog* log,
+                                            graph::SubpassTarget target) {
+            const std::vector<InstanceDraw> draws = sort_back_to_front(
+                *in.scene, in.camera_position, scene_groups(in.options.decal_pass));
+            Variant v = variant;
+            v.render_pass = target.pass;
+            v.subpass = target.index;
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get(v));
+            const DrawCounts n = draw_sorted(cmd, *in.scene, layout, draws, {.log = log});
+            if (uses) uses->add(drawn, n.draws);
+        };
     };
     if (in.pixel && !in.options.subpass) {  // a replay would split the render pass
         const Variant twin{.history = true, .samples = v.samples, .depth = v.depth};
