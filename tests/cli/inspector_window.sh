@@ -14,7 +14,8 @@ mkdir -p "$work"
 export DEPTHSCOPE_CONFIG_DIR="$work/config"
 
 # xvfb-run may hand over before its server takes connections (seen once in a clean-clone CI
-# run, both cores busy: "X11: Failed to open display :99"): wait for it, at most 30 s.
+# run, both cores busy: "X11: Failed to open display :99"): wait for it, at most 30 s. (The
+# server runs with -noreset, so these probes leaving cannot reset it under the next client.)
 for _ in $(seq 1 300); do
     xdotool getdisplaygeometry >/dev/null 2>&1 && break
     sleep 0.1
