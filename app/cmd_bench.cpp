@@ -19,6 +19,7 @@
 #include "renderer/device_info.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
+#include "renderer/settings/frame_knobs.h"
 #include "ui/headless.h"
 
 namespace ds::app {
@@ -186,7 +187,9 @@ void bench_combination(const Options& o, Renderer& renderer, const scene::Scene&
     const Settings settings = combined(base, combination);
     FrameResult last;
     std::vector<FrameSource> sources{[&] {
-        last = renderer.render(scene.camera, settings, o.size.width, o.size.height, ReadBack::No);
+        last = renderer.render(
+            scene.camera, settings,
+            {.width = o.size.width, .height = o.size.height, .read_back = ReadBack::No});
         return Measured{&last, std::nullopt};
     }};
     if (ui) {
@@ -221,8 +224,9 @@ void bench_interleaved(const Options& o, Renderer& renderer, const scene::Scene&
     std::vector<FrameSource> sources;
     for (size_t k = 0; k < combinations.size(); ++k)
         sources.push_back([&, k] {
-            last[k] = renderer.render(scene.camera, settings[k], o.size.width, o.size.height,
-                                      ReadBack::No);
+            last[k] = renderer.render(
+                scene.camera, settings[k],
+                {.width = o.size.width, .height = o.size.height, .read_back = ReadBack::No});
             return Measured{&last[k], std::nullopt};
         });
     std::vector<RunResult> measured = measure(sources, o);
@@ -269,7 +273,7 @@ void check_advise(const Options& o, const std::vector<std::vector<Assignment>>& 
     if (o.ui) throw UsageError("--advise and --ui: one at a time");
     for (const auto& combination : combinations)
         for (const auto& [name, value] : combination)
-            if (name == "prepass")
+            if (name == knobs::kPrepass.name)
                 throw UsageError(
                     "--advise renders prepass=on and off itself: drop --matrix prepass=...");
 }
@@ -303,7 +307,9 @@ nlohmann::json advise_combination(const Options& o, Renderer& renderer, const sc
     for (const auto& [name, value] : combination) label += " " + name + "=" + value;
     std::printf("\nadvice %zu:%s\n", index + 1, label.empty() ? " (defaults)" : label.c_str());
     const capture::RenderFrame render = [&](const Settings& s) {
-        return renderer.render(scene.camera, s, o.size.width, o.size.height, ReadBack::No);
+        return renderer.render(
+            scene.camera, s,
+            {.width = o.size.width, .height = o.size.height, .read_back = ReadBack::No});
     };
     const capture::Advice advice = capture::advise(capture::measure_advice(
         settings, render, {.frames = o.bench_frames, .warmup = o.bench_warmup}));

@@ -108,7 +108,9 @@ FrameResult capture_plain_frame(Renderer& renderer, const CaptureSpec& spec,
 capture::Advice advise(const Options& o, Renderer& renderer, const Settings& settings,
                        const scene::Scene& scene) {
     const capture::RenderFrame render = [&](const Settings& s) {
-        return renderer.render(scene.camera, s, o.size.width, o.size.height, ReadBack::No);
+        return renderer.render(
+            scene.camera, s,
+            {.width = o.size.width, .height = o.size.height, .read_back = ReadBack::No});
     };
     const capture::Advice advice =
         capture::advise(capture::measure_advice(settings, render, capture::AdviceRun{}));

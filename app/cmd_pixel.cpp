@@ -42,9 +42,12 @@ int run_pixel(const Options& o) {
     renderer_options.device = o.device;
     Renderer renderer(renderer_options);
     renderer.set_scene(scene);
-    const FrameResult frame =
-        renderer.render(scene.camera, settings, o.size.width, o.size.height, ReadBack::Yes,
-                        InspectRequest{}, PixelQuery{o.at_x, o.at_y});
+    const FrameResult frame = renderer.render(scene.camera, settings,
+                                              {.width = o.size.width,
+                                               .height = o.size.height,
+                                               .read_back = ReadBack::Yes,
+                                               .inspect = {},
+                                               .pixel = PixelQuery{o.at_x, o.at_y}});
     const capture::PixelReportInput report{scene, settings, frame};
     std::fputs(capture::pixel_history_table(report).c_str(), stdout);
     if (!o.out.empty()) {

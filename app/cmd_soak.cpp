@@ -22,6 +22,7 @@
 #include "renderer/renderer.h"
 #include "renderer/scene/builtin/builtin.h"
 #include "renderer/scene/loader.h"
+#include "renderer/settings/frame_knobs.h"
 
 namespace ds::app {
 namespace {
@@ -98,20 +99,29 @@ void print_plan(const SoakPlan& plan, const Options& o, const DeviceInfo& device
 void render_step(Renderer& renderer, const scene::Scene& scene, const Settings& base,
                  const SoakStep& step) {
     Settings settings = base;
-    settings.set("msaa", std::to_string(step.msaa));
-    settings.set("prepass", step.prepass ? "on" : "off");
+    set_knob(settings, knobs::kMsaa, std::to_string(step.msaa));
+    set_knob(settings, knobs::kPrepass, step.prepass ? "on" : "off");
     for (const auto& [name, value] : probe_settings(step.probe)) settings.set(name, value);
     const uint32_t w = step.size.width, h = step.size.height;
     switch (step.probe) {
         case SoakProbe::Pixel:
-            renderer.render(scene.camera, settings, w, h, ReadBack::Yes, InspectRequest{},
-                            PixelQuery{w / 2, h / 2});
+            renderer.render(scene.camera, settings,
+                            {.width = w,
+                             .height = h,
+                             .read_back = ReadBack::Yes,
+                             .inspect = {},
+                             .pixel = PixelQuery{w / 2, h / 2}});
             break;
         case SoakProbe::Inspect:
-            renderer.render(scene.camera, settings, w, h, ReadBack::Color, InspectRequest{"depth"});
+            renderer.render(scene.camera, settings,
+                            {.width = w,
+                             .height = h,
+                             .read_back = ReadBack::Color,
+                             .inspect = {InspectRequest{"depth"}}});
             break;
         default:
-            renderer.render(scene.camera, settings, w, h, ReadBack::No);
+            renderer.render(scene.camera, settings,
+                            {.width = w, .height = h, .read_back = ReadBack::No});
     }
 }
 

@@ -7,6 +7,12 @@
 #include <cstdio>
 
 #include "renderer/common/error.h"
+#include "renderer/passes/clear_counts.h"
+#include "renderer/passes/depth_precision.h"
+#include "renderer/passes/depth_prepass.h"
+#include "renderer/passes/draw_counts.h"
+#include "renderer/passes/equal_check.h"
+#include "renderer/passes/zfight.h"
 
 namespace ds::app {
 
@@ -15,11 +21,11 @@ const char* probe_name(SoakProbe probe) {
         case SoakProbe::None:
             return "none";
         case SoakProbe::Counts:
-            return "count_fragments";
+            return passes::ClearCountsPass::kKnob.name;
         case SoakProbe::Draws:
-            return "count_draws";
+            return passes::DrawCountsPass::kKnob.name;
         case SoakProbe::ZFight:
-            return "zfight";
+            return passes::ZfightPass::kKnob.name;
         case SoakProbe::Pixel:
             return "pixel-history";
         case SoakProbe::Inspect:
@@ -31,11 +37,14 @@ const char* probe_name(SoakProbe probe) {
 std::vector<Assignment> probe_settings(SoakProbe probe) {
     switch (probe) {
         case SoakProbe::Counts:
-            return {{"count_fragments", "on"}, {"count_discards", "on"}};
+            return {{passes::ClearCountsPass::kKnob.name, "on"},
+                    {passes::DepthPrepass::kCountDiscards.name, "on"}};
         case SoakProbe::Draws:
-            return {{"count_draws", "on"}};
+            return {{passes::DrawCountsPass::kKnob.name, "on"}};
         case SoakProbe::ZFight:
-            return {{"zfight", "on"}, {"equal_check", "on"}, {"depth_precision", "on"}};
+            return {{passes::ZfightPass::kKnob.name, "on"},
+                    {passes::EqualCheckPass::kKnob.name, "on"},
+                    {passes::DepthPrecisionPass::kKnob.name, "on"}};
         default:
             return {};
     }

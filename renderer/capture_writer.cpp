@@ -8,7 +8,8 @@ namespace ds {
 
 FrameResult render_capture_frame(Renderer& renderer, const CaptureSpec& spec) {
     renderer.camera_cut();  // a live renderer's history (the inspector's) stays out
-    return renderer.render(spec.camera, spec.settings, spec.width, spec.height);
+    return renderer.render(spec.camera, spec.settings,
+                           {.width = spec.width, .height = spec.height});
 }
 
 nlohmann::json write_capture_resources(Renderer& renderer, const CaptureSpec& spec,
@@ -16,8 +17,11 @@ nlohmann::json write_capture_resources(Renderer& renderer, const CaptureSpec& sp
                                        const capture::OutputDir& out) {
     const auto render = [&](std::span<const InspectRequest> requests) {
         renderer.camera_cut();
-        return renderer.render(spec.camera, spec.settings, spec.width, spec.height, ReadBack::Color,
-                               requests);
+        return renderer.render(spec.camera, spec.settings,
+                               {.width = spec.width,
+                                .height = spec.height,
+                                .read_back = ReadBack::Color,
+                                .inspect = {requests.begin(), requests.end()}});
     };
     return capture::capture_resources(reference, spec.resources, render,
                                       out.staging_path("resources"));

@@ -19,7 +19,9 @@
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/msaa_samples.h"
 #include "renderer/passes/pass_util.h"
+#include "renderer/passes/pixel_history.h"
 #include "renderer/readback/host_readback.h"
+#include "renderer/settings/frame_knobs.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/context.h"
@@ -42,12 +44,6 @@ void check_device(const vk::DeviceReport& report, passes::FrameOptions& options)
     if (!(supported & options.samples))
         throw Error("msaa=" + std::to_string(int(options.samples)) + ": " + report.candidate.name +
                     " supports sample counts " + vk::sample_counts_text(supported));
-    if (options.count_fragments && !report.fragment_stores_and_atomics)
-        throw Error("count_fragments=on needs fragmentStoresAndAtomics, which " +
-                    report.candidate.name + " does not offer");
-    if (options.count_draws && !report.occlusion_query_precise)
-        throw Error("count_draws=on needs occlusionQueryPrecise, which " + report.candidate.name +
-                    " does not offer");
     if (options.sample_shading && !report.sample_rate_shading)
         throw Error("sample_shading=on needs sampleRateShading, which " + report.candidate.name +
                     " does not offer");
@@ -138,16 +134,16 @@ struct Renderer::Impl {
 
     explicit Impl(const RendererOptions& options);
     ~Impl();
-    passes::FrameOptions options_for(const Settings& settings);
+    passes::FrameOptions options_for(const Settings& settings, const RenderRequest& request);
     FrameShape shape(VkExtent2D size, const passes::FrameOptions& options) const;
     void check_memory(const FrameMemory& frame, const FrameShape& shape) const;
     void begin(VkExtent2D size, vk::Frame& frame);
     uint64_t record(Slot& slot, VkCommandBuffer cmd);
     passes::FrameResources build_graph(const passes::FrameInputs& in, Slot& slot,
                                        vk::DestroyList& retired);
-    std::vector<std::string> skipped(const passes::FrameInputs& in) const;
-    void write_uniforms(Slot& slot, const scene::Camera& camera, const passes::FrameInputs& in,
-                        const passes::FrameResources& res);
+    std::vector<std::string> skipped() const;
+    void write_uniforms(Slot& slot, const scene::Camera& camera, const Settings& settings,
+                        const passes::FrameInputs& in, const passes::FrameResources& res);
     void collect(Slot& slot, uint64_t graph_frame, const passes::FrameInputs& in,
                  const passes::FrameResources& res, FrameResult& result);
 
@@ -268,16 +264,16 @@ passes::FrameResources Renderer::Impl::build_graph(const passes::FrameInputs& in
 }
 
 // Why passes are not in this frame's graph ("gtao: skipped (prepass off)"), in pass order.
-std::vector<std::string> Renderer::Impl::skipped(const passes::FrameInputs& in) const {
+std::vector<std::string> Renderer::Impl::skipped() const {
     std::vector<std::string> out;
     for (const std::unique_ptr<passes::FramePass>& pass : passes)
-        if (const auto why = pass->skipped(in))
+        if (const auto& why = pass->skipped())
             out.push_back(std::string(pass->name()) + ": skipped (" + *why + ")");
     return out;
 }
 
 void Renderer::Impl::write_uniforms(Slot& slot, const scene::Camera& camera,
-                                    const passes::FrameInputs& in,
+                                    const Settings& settings, const passes::FrameInputs& in,
                                     const passes::FrameResources& res) {
     uint32_t flags = 0;
     if (res.shadow_map.valid()) flags |= passes::kFrameShadows;
@@ -286,7 +282,7 @@ void Renderer::Impl::write_uniforms(Slot& slot, const scene::Camera& camera,
     const VkExtent2D size = graph->output_extent();
     const passes::FrameUniforms u =
         frame_uniforms({.camera = camera,
-                        .settings = *in.settings,
+                        .settings = settings,
                         .options = in.options,
                         .sun = sun,
                         .scene_bounds = scene_bounds,
@@ -312,11 +308,16 @@ void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::Fra
         const std::span<PassResult> own(result.passes.data() + a.first, a.last - a.first);
         a.pass->collect(c, own, result);
     }
+    for (const FrameJoin join : frame_joins()) join(result);
     if (slot.timestamps.count()) {
         if (auto ticks = slot.timestamps.results())
             result.gpu_ms = slot.timestamps.ticks_to_ms((*ticks)[0], (*ticks)[1]);
     }
     result.tiler = tiler_summary(*graph);
+    if (result.tiler)
+        for (const std::unique_ptr<passes::FramePass>& pass : passes)
+            for (const std::string& knob : pass->turned_off())
+                result.subpass_turned_off.push_back(knob);
     result.msaa.samples = uint32_t(in.options.samples);
     if (in.options.msaa())
         result.msaa.depth_resolve = passes::depth_resolve_name(context->report(), in.options);
@@ -401,15 +402,23 @@ void Renderer::set_scene(const scene::Scene& scene) {
     }
 }
 
-// The settings as this frame's options, checked against the device and the scene; passes
-// hear of a new sample count before the frame is declared.
-passes::FrameOptions Renderer::Impl::options_for(const Settings& settings) {
+// The settings as this frame's options, checked against the device and the scene: the
+// frame-wide knobs, then every pass's own (configure, in list order), then the providers'
+// decisions on what others asked of them (resolve). Passes hear of a new sample count before
+// the frame is declared.
+passes::FrameOptions Renderer::Impl::options_for(const Settings& settings,
+                                                 const RenderRequest& request) {
     passes::FrameOptions options = passes::FrameOptions::from(settings);
     check_device(context->report(), options);
-    options.decal_pass = options.decal_pass && scene->decal_groups() > 0;
+    const passes::FrameSetup setup{settings, *scene, context->report(), request};
+    for (const std::unique_ptr<passes::FramePass>& pass : passes) {
+        pass->clear_gate();
+        pass->configure(setup, options);
+    }
+    for (const std::unique_ptr<passes::FramePass>& pass : passes) pass->resolve(options);
     // material_alpha_cutoff: checked against the scene (an unknown name throws) and uploaded
     // when it changed, before this frame begins.
-    scene->set_alpha_cutoff_overrides(settings.get_map("material_alpha_cutoff"));
+    scene->set_alpha_cutoff_overrides(knob_value(settings, knobs::kMaterialAlphaCutoff));
     if (options.samples != last_samples)
         for (const std::unique_ptr<passes::FramePass>& pass : passes)
             pass->on_sample_count_changed(options.samples);
@@ -451,19 +460,12 @@ uint64_t Renderer::Impl::record(Slot& slot, VkCommandBuffer cmd) {
 }
 
 FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& settings,
-                             uint32_t width, uint32_t height, ReadBack read_back,
-                             const InspectRequest& inspect, const std::optional<PixelQuery>& pixel,
-                             const std::optional<SampleQuery>& samples) {
-    return render(scene_camera, settings, width, height, read_back, std::span(&inspect, 1), pixel,
-                  samples);
-}
-FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& settings,
-                             uint32_t width, uint32_t height, ReadBack read_back,
-                             std::span<const InspectRequest> inspect,
-                             const std::optional<PixelQuery>& pixel,
-                             const std::optional<SampleQuery>& samples) {
+                             const RenderRequest& request) {
     Impl& r = live();
     if (!r.scene) throw Error("render: no scene (call set_scene first)");
+    const uint32_t width = request.width, height = request.height;
+    const std::optional<PixelQuery>& pixel = request.pixel;
+    const std::vector<InspectRequest>& inspect = request.inspect;
     if (width == 0 || height == 0)
         throw Error("render: size " + std::to_string(width) + "x" + std::to_string(height) +
                     " is empty");
@@ -471,16 +473,14 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
         throw Error("render: pixel " + std::to_string(pixel->x) + "," + std::to_string(pixel->y) +
                     " is outside the frame (" + std::to_string(width) + "x" +
                     std::to_string(height) + ")");
-    check_sample_query(samples, width, height);
-    passes::FrameOptions options = r.options_for(settings);
-    // The sample view names the surface of every sample: the prepass writes them for it.
-    if (samples && options.prepass && !options.subpass && r.context->report().geometry_shader)
-        options.surface_id = true;
+    check_sample_query(request.samples, width, height);
+    const passes::FrameOptions options = r.options_for(settings, request);
     // The scene camera with the znear / zfar knobs, checked before the frame begins; the
     // frame uses only this one.
     const scene::Camera camera = passes::effective_camera(scene_camera, options);
     // "final" is read back as it is (sRGB-encoded); any other image through the inspect pass.
     const bool inspect_final = !inspect.empty() && inspect[0].resource == kFinalImageName;
+    ReadBack read_back = request.read_back;
     if (inspect_final && read_back == ReadBack::No) read_back = ReadBack::Color;
     // Before anything is allocated: the size here, the frame's memory once it is declared.
     check_frame_size(r.context->report().limits, r.shape({width, height}, options));
@@ -494,13 +494,12 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
                                  .options = options,
                                  .camera_position = camera.position,
                                  .frame_number = frame.number,
-                                 .settings = &settings,
                                  .read_back = read_back,
-                                 .inspect = {inspect.begin(), inspect.end()},
+                                 .inspect = inspect,
                                  .pixel = pixel,
-                                 .samples = samples};
+                                 .samples = request.samples};
     const passes::FrameResources res = r.build_graph(in, slot, frame.retired);
-    r.write_uniforms(slot, camera, in, res);
+    r.write_uniforms(slot, camera, settings, in, res);
     r.graph->compile();
     const uint64_t graph_frame = r.record(slot, frame.cmd);
     r.frames->submit(frame);
@@ -510,12 +509,12 @@ FrameResult Renderer::render(const scene::Camera& scene_camera, const Settings& 
     result.height = height;
     result.cpu_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    result.skipped = r.skipped(in);
+    result.skipped = r.skipped();
     r.frames->wait(frame);
     r.collect(slot, graph_frame, in, res, result);
     result.resources = r.resources;
     // A pixel nothing covered still has a (empty) history.
-    if (pixel && !result.pixel_history) result.pixel_history = PixelHistory{pixel->x, pixel->y};
+    if (pixel && !result.find<PixelHistory>()) result.slots.put(PixelHistory{pixel->x, pixel->y});
     if (inspect_final) result.inspected = final_as_inspected(result);
     auto with_planes = [&](InspectedImage& image) {
         image.znear = camera.znear;

@@ -8,13 +8,13 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <span>
 #include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 #include <nlohmann/json_fwd.hpp>
 
+#include "renderer/common/surface_name.h"
 #include "renderer/graph/types.h"
 #include "renderer/passes/frame_result.h"
 #include "renderer/scene/scene.h"
@@ -26,6 +26,13 @@ struct DeviceReport;  // renderer/vk/capabilities.h, for the few that need the d
 }  // namespace ds::vk
 
 namespace ds {
+
+// What a surface_id value names in the current scene (Renderer::describe_surface).
+struct SurfaceInfo {
+    SurfaceName name;
+    uint32_t instance = 0;  // scene instance index
+    uint32_t triangle = 0;  // of its mesh
+};
 
 struct RendererOptions {
     bool validate = false;  // validation layer (+ synchronization validation) and messenger
@@ -45,27 +52,21 @@ class Renderer {
     const vk::DeviceReport& device_report() const;
     // Uploads geometry, materials and textures (+ mips); replaces the previous scene.
     void set_scene(const scene::Scene& scene);
-    // Draws one frame at width x height and reads it back (blocks until it is done).
+    // Draws one frame as `request` asks (size, read-back, inspected images, pixel history,
+    // sample view) and reads it back (blocks until it is done).
     // Throws ds::Error before set_scene(), for a zero size, or for an msaa sample count the
     // device does not support (the message lists the supported ones); UsageError, before the
     // frame begins, for a material_alpha_cutoff name that is no MASK material of the scene, a
     // depth_format the device lacks, or planes (`camera`'s with the znear / zfar knobs) that
     // are not 0 < znear < zfar.
-    // `pixel`: FrameResult::pixel_history for that pixel (ds::Error outside the frame).
-    // `samples`: FrameResult::msaa_samples for that rectangle, clamped to the frame (ds::Error
-    // when it starts outside the frame, is empty or larger than MsaaSamplesPass::kMaxPixels);
-    // such a frame has surface_id on (with the prepass) whatever the settings say.
-    FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
-                       uint32_t height, ReadBack read_back = ReadBack::Yes,
-                       const InspectRequest& inspect = {},
-                       const std::optional<PixelQuery>& pixel = std::nullopt,
-                       const std::optional<SampleQuery>& samples = std::nullopt);
-    // The same with several images read back: the first is FrameResult::inspected, the others
-    // FrameResult::overlays (the viewer's overlays and what it derives views from).
-    FrameResult render(const scene::Camera& camera, const Settings& settings, uint32_t width,
-                       uint32_t height, ReadBack read_back, std::span<const InspectRequest> inspect,
-                       const std::optional<PixelQuery>& pixel = std::nullopt,
-                       const std::optional<SampleQuery>& samples = std::nullopt);
+    // `request.pixel`: a PixelHistory (pixel_history.h) for that pixel (ds::Error outside the
+    // frame). `request.samples`: MsaaSamples (msaa_samples.h) for that rectangle, clamped to
+    // the frame (ds::Error when it starts outside the frame, is empty or larger than
+    // MsaaSamplesPass::kMaxPixels); such a frame has surface_id on (with the prepass) whatever
+    // the settings say. The first inspected image is FrameResult::inspected, the others
+    // FrameResult::overlays.
+    FrameResult render(const scene::Camera& camera, const Settings& settings,
+                       const RenderRequest& request);
     // A camera cut: the next frame's temporal passes start over (no history, and its
     // previous_view_projection is its own). set_scene() and a new size imply one.
     void camera_cut();

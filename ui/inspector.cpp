@@ -1,12 +1,16 @@
 #include "ui/inspector.h"
 
+#include "ui/inspector_knobs.h"
+
 #include <algorithm>
 #include <cmath>
 #include <exception>
 
 #include <imgui.h>
 
+#include "renderer/passes/zfight.h"
 #include "renderer/scene/loader.h"
+#include "renderer/settings/frame_knobs.h"
 #include "renderer/shader/compiler.h"
 #include "ui/panels/panels.h"
 
@@ -87,15 +91,15 @@ void Inspector::set_scene(scene::Scene scene) {
     camera_.reset(scene_.camera, scene_.bounds);
     viewer_.draw = -1;  // a draw group of the previous scene
     // Per-material cutoffs name the previous scene's materials: keep those this one has.
-    auto cutoffs = settings_.get_map("material_alpha_cutoff");
+    auto cutoffs = knob_value(settings_, knobs::kMaterialAlphaCutoff);
     std::erase_if(cutoffs, [&](const auto& entry) {
         return std::none_of(summary_.masked_materials.begin(), summary_.masked_materials.end(),
                             [&](const SceneSummary::Masked& m) { return m.name == entry.first; });
     });
     const std::string kept = format_map(cutoffs);
-    if (kept != settings_.get("material_alpha_cutoff")) {
-        settings_.set("material_alpha_cutoff", kept);
-        last_good_.set("material_alpha_cutoff", kept);
+    if (kept != settings_.get(knobs::kMaterialAlphaCutoff.name)) {
+        set_knob(settings_, knobs::kMaterialAlphaCutoff, kept);
+        set_knob(last_good_, knobs::kMaterialAlphaCutoff, kept);
     }
 }
 
@@ -110,7 +114,7 @@ VkExtent2D Inspector::render_size() const {
         w = float(options_.fallback_width);
         h = float(options_.fallback_height);
     }
-    const float scale = settings_.get_float("render_scale");
+    const float scale = knob_value(settings_, kRenderScale);
     return {std::max(1u, uint32_t(std::lround(w * scale))),
             std::max(1u, uint32_t(std::lround(h * scale)))};
 }
@@ -273,7 +277,9 @@ void Inspector::measure_advice() {
     try {  // the default run's frames block the UI meanwhile
         worker_->exclusive([&](Renderer& renderer) {
             const capture::RenderFrame render = [&](const Settings& s) {
-                return renderer.render(camera, s, size.width, size.height, ReadBack::No);
+                return renderer.render(
+                    camera, s,
+                    {.width = size.width, .height = size.height, .read_back = ReadBack::No});
             };
             advice_ =
                 capture::advise(capture::measure_advice(settings_, render, capture::AdviceRun{}));
@@ -300,12 +306,17 @@ void Inspector::pick_pixel(const PickPixel& pick) {
             frame_.height ? uint32_t(uint64_t(pick.y) * size.height / frame_.height) : pick.y;
         FrameResult f;
         worker_->exclusive([&](Renderer& r) {
-            f = r.render(camera_.camera(), settings_, size.width, size.height, ReadBack::No,
-                         InspectRequest{}, PixelQuery{x, y}, SampleQuery{x, y, 1, 1});
+            f = r.render(camera_.camera(), settings_,
+                         {.width = size.width,
+                          .height = size.height,
+                          .read_back = ReadBack::No,
+                          .inspect = {},
+                          .pixel = PixelQuery{x, y},
+                          .samples = SampleQuery{x, y, 1, 1}});
         });
-        pixel_history_ = f.pixel_history;
+        pixel_history_ = f.copy_of<PixelHistory>();
         pixel_depth_ = f.depth;
-        pixel_samples_ = f.msaa_samples;
+        pixel_samples_ = f.copy_of<MsaaSamples>();
         pixel_label_ =
             scene_.name + " at " + std::to_string(size.width) + "x" + std::to_string(size.height);
         pixel_error_.clear();
@@ -318,9 +329,10 @@ void Inspector::pick_pixel(const PickPixel& pick) {
 std::vector<uint8_t> Inspector::selected_pair_pixels() const {
     std::vector<uint8_t> keep;
     const int pair = viewer_.zfight_pair;
-    if (pair < 0 || !frame_.zfight || size_t(pair) >= frame_.zfight->pairs.size()) return keep;
+    const ZfightResult* zfight = frame_.find<ZfightResult>();
+    if (pair < 0 || !zfight || size_t(pair) >= zfight->pairs.size()) return keep;
     keep.assign(size_t(frame_.width) * frame_.height, 0);
-    for (const ZfightHit& h : frame_.zfight->hits)
+    for (const ZfightHit& h : zfight->hits)
         if (h.pair == uint32_t(pair) && h.pixel < keep.size()) keep[h.pixel] = 1;
     return keep;
 }
@@ -328,23 +340,25 @@ std::vector<uint8_t> Inspector::selected_pair_pixels() const {
 std::vector<uint8_t> Inspector::selected_draw_pixels() const {
     std::vector<uint8_t> keep;
     const int draw = viewer_.draw;
-    if (draw < 0 || frame_.draw_pixels.empty()) return keep;
-    keep.resize(frame_.draw_pixels.size());
-    for (size_t i = 0; i < keep.size(); ++i) keep[i] = frame_.draw_pixels[i] == uint32_t(draw) + 1;
+    const DrawsResult* draws = frame_.find<DrawsResult>();
+    if (draw < 0 || !draws || draws->draw_pixels.empty()) return keep;
+    keep.resize(draws->draw_pixels.size());
+    for (size_t i = 0; i < keep.size(); ++i) keep[i] = draws->draw_pixels[i] == uint32_t(draw) + 1;
     return keep;
 }
 
 // What fights at a zfight pixel, pair by pair: "coplanar_a_0 vs coplanar_b_0 (1 step, 12 um)",
 // the gap in depth steps and in scene units along the view ray.
 std::string Inspector::zfight_text(uint32_t x, uint32_t y) const {
-    if (!frame_.zfight) return {};
+    const ZfightResult* zfight = frame_.find<ZfightResult>();
+    if (!zfight) return {};
     const uint32_t pixel = y * frame_.width + x;
-    const auto& hits = frame_.zfight->hits;
+    const auto& hits = zfight->hits;
     auto it = std::lower_bound(hits.begin(), hits.end(), pixel,
                                [](const ZfightHit& h, uint32_t p) { return h.pixel < p; });
     std::string out;
     for (; it != hits.end() && it->pixel == pixel; ++it) {
-        const ZfightPair& p = frame_.zfight->pairs[it->pair];
+        const ZfightPair& p = zfight->pairs[it->pair];
         out += (out.empty() ? ": " : "; ") + p.a.node + " vs " + p.b.node + " (" +
                std::to_string(it->steps) + (it->steps == 1 ? " step, " : " steps, ") +
                view::length_text(it->gap) + ")";
@@ -406,8 +420,8 @@ ViewerBlit Inspector::viewer_blit() const {
 }
 
 const MsaaSamples* Inspector::shown_samples() const {
-    if (!frame_.msaa_samples || !sample_view_wanted()) return nullptr;
-    return &*frame_.msaa_samples;
+    if (!sample_view_wanted()) return nullptr;
+    return frame_.find<MsaaSamples>();
 }
 
 std::optional<SurfaceInfo> Inspector::describe_surface(uint32_t id) const {

@@ -26,6 +26,8 @@
 
 #include "renderer/capture/advice.h"
 #include "renderer/device_info.h"
+#include "renderer/passes/msaa_samples.h"
+#include "renderer/passes/pixel_history.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"

@@ -16,6 +16,8 @@
 
 #include "ui/inspector.h"
 
+#include "ui/inspector_knobs.h"
+
 namespace ds::ui {
 namespace {
 
@@ -69,7 +71,7 @@ bool Inspector::moving() const {
 
 bool Inspector::idle() const {
     return !worker_->busy() && !worker_->has_finished() && !moving() && !pending_capture_ &&
-           !dirty_ && !settings_.get_bool("continuous") && pending_.empty();
+           !dirty_ && !knob_value(settings_, kContinuous) && pending_.empty();
 }
 
 FrameJob Inspector::next_job() const {
@@ -82,7 +84,7 @@ FrameJob Inspector::next_job() const {
     // view (it needs the pinned capture's size).
     const bool scalable = !options_.render_size && !compare_.active(viewer_.compare);
     if (worker_->threaded() && scalable && moving()) {
-        const float s = settings_.get_float("motion_scale");
+        const float s = knob_value(settings_, kMotionScale);
         job.size = {std::max(1u, uint32_t(std::lround(float(job.nominal.width) * s))),
                     std::max(1u, uint32_t(std::lround(float(job.nominal.height) * s)))};
     }
@@ -111,7 +113,7 @@ void Inspector::schedule() {
     const bool stopped = posted_moving_ && !now_moving;
     const bool changed = dirty_ || stopped || !last_posted_ || !same_frame(job, *last_posted_);
     if (worker_->threaded()) {
-        const bool again = settings_.get_bool("continuous") && !worker_->busy();
+        const bool again = knob_value(settings_, kContinuous) && !worker_->busy();
         if (!changed && !again) return;
         job.camera_cut = changed && !now_moving;
     }

@@ -105,8 +105,13 @@ FinishedFrame RenderWorker::render(const FrameJob& job) {
         if (delay.count() > 0) std::this_thread::sleep_for(delay);
         try {
             if (job.camera_cut) renderer_.camera_cut();
-            out.frame = renderer_.render(job.camera, job.settings, job.size.width, job.size.height,
-                                         job.read_back, job.inspect, std::nullopt, job.samples);
+            out.frame = renderer_.render(job.camera, job.settings,
+                                         {.width = job.size.width,
+                                          .height = job.size.height,
+                                          .read_back = job.read_back,
+                                          .inspect = job.inspect,
+                                          .pixel = std::nullopt,
+                                          .samples = job.samples});
         } catch (const std::exception& e) {
             out.error = e.what();
         }

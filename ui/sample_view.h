@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "renderer/passes/frame_result.h"
+#include "renderer/passes/msaa_samples.h"
+#include "renderer/passes/pixel_history.h"
 #include "renderer/view/sample_positions.h"
 
 namespace ds::ui {

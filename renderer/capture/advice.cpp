@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "renderer/common/error.h"
+#include "renderer/passes/clear_counts.h"
+#include "renderer/settings/frame_knobs.h"
 
 namespace ds::capture {
 namespace {
@@ -121,15 +123,15 @@ std::string verdict_line(const Advice& a) {
 AdviceInput measure_advice(const Settings& base, const RenderFrame& render, AdviceRun run) {
     // [0] with the prepass, [1] without; count_fragments only in the counting frame.
     Settings timed[2] = {base, base};
-    timed[0].set("prepass", "on");
-    timed[1].set("prepass", "off");
+    set_knob(timed[0], knobs::kPrepass, "on");
+    set_knob(timed[1], knobs::kPrepass, "off");
     AdviceInput in;
     AdviceSide* sides[2] = {&in.with_prepass, &in.without};
     for (int k = 0; k < 2; ++k) {
         Settings counting = timed[k];
-        counting.set("count_fragments", "on");
+        set_knob(counting, passes::ClearCountsPass::kKnob, "on");
         take_counts(render(counting), *sides[k]);
-        timed[k].set("count_fragments", "off");
+        set_knob(timed[k], passes::ClearCountsPass::kKnob, "off");
     }
     for (int i = 0; i < run.warmup; ++i)
         for (const Settings& s : timed) render(s);

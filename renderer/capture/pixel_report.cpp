@@ -68,7 +68,7 @@ std::string rgba_text(const std::optional<std::array<float, 4>>& c) {
 }  // namespace
 
 nlohmann::json pixel_history_json(const PixelReportInput& in) {
-    const PixelHistory& h = *in.frame.pixel_history;
+    const PixelHistory& h = *in.frame.find<PixelHistory>();
     nlohmann::json fragments = nlohmann::json::array();
     for (const PixelFragment& f : h.fragments) fragments.push_back(fragment_json(in, f));
     nlohmann::json settings = nlohmann::json::object();
@@ -92,7 +92,7 @@ nlohmann::json pixel_history_json(const PixelReportInput& in) {
 }
 
 std::string pixel_history_table(const PixelReportInput& in) {
-    const PixelHistory& h = *in.frame.pixel_history;
+    const PixelHistory& h = *in.frame.find<PixelHistory>();
     std::string out;
     char line[512];
     std::snprintf(line, sizeof line, "pixel %u,%u of %s at %ux%u: %zu fragments\n", h.x, h.y,

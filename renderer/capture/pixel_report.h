@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/passes/frame_result.h"
+#include "renderer/passes/pixel_history.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
 

@@ -8,6 +8,7 @@
 #include "renderer/capture/replay_info.h"
 #include "renderer/capture/tiler_json.h"
 #include "renderer/common/error.h"
+#include "renderer/common/surface_json.h"
 #include "renderer/common/version.h"
 #include "renderer/format/format.h"
 
@@ -80,80 +81,6 @@ nlohmann::json passes_json(const std::vector<PassResult>& passes,
 }
 
 namespace {
-
-nlohmann::json surface_json(const SurfaceName& s) {
-    return {{"mesh", s.mesh}, {"material", s.material}, {"node", s.node}};
-}
-
-nlohmann::json zfight_json(const ZfightResult& z) {
-    nlohmann::json pairs = nlohmann::json::array();
-    for (const ZfightPair& p : z.pairs)
-        pairs.push_back({{"a", surface_json(p.a)},
-                         {"b", surface_json(p.b)},
-                         {"pixels", p.pixels},
-                         {"min_steps", p.min_steps}});
-    nlohmann::json json = {{"steps", z.steps}, {"pixels", z.pixels}, {"pairs", pairs}};
-    if (z.dropped) json["dropped_records"] = z.dropped;
-    return json;
-}
-
-nlohmann::json equal_check_json(const EqualCheckResult& e) {
-    nlohmann::json surfaces = nlohmann::json::array();
-    for (const EqualCheckSurface& s : e.surfaces) {
-        nlohmann::json entry = surface_json(s.name);
-        entry["holes"] = s.holes;
-        entry["multiple"] = s.multiple;
-        surfaces.push_back(std::move(entry));
-    }
-    return {{"holes", e.holes}, {"multiple", e.multiple}, {"surfaces", surfaces}};
-}
-
-// One entry per scene draw group; a count that was not measured is null, never 0.
-nlohmann::json draws_json(const std::vector<DrawReport>& draws) {
-    nlohmann::json out = nlohmann::json::array();
-    for (const DrawReport& d : draws) {
-        nlohmann::json entry = surface_json(d.name);  // node: the group's first instance's
-        entry["group"] = d.group;
-        entry["instances"] = {d.first_instance, d.instances};
-        entry["alpha_mode"] = d.alpha_mode;
-        if (d.decal) entry["decal"] = true;
-        entry["visible_pixels"] = d.visible_pixels ? nlohmann::json(*d.visible_pixels) : nullptr;
-        entry["samples_passed"] = d.samples_passed ? nlohmann::json(*d.samples_passed) : nullptr;
-        nlohmann::json shaded = nlohmann::json::object(), wasted = nlohmann::json::object();
-        for (const auto& [pass, n] : d.shaded_fragments) shaded[pass] = n;
-        for (const auto& [pass, n] : d.wasted_fragments) wasted[pass] = n;
-        entry["shaded_fragments"] = std::move(shaded);
-        entry["wasted_fragments"] = std::move(wasted);
-        entry["occluded"] = d.occluded;
-        if (d.hiz) {
-            entry["hiz"] = hiz_verdict_name(*d.hiz);
-            entry["hiz_occluded_instances"] = d.hiz_occluded_instances;
-            entry["hiz_unsafe"] = d.hiz_unsafe;
-        }
-        out.push_back(std::move(entry));
-    }
-    return out;
-}
-
-// hiz=on: the pyramid's levels and, with count_draws, the verdicts' tally and the unsafe
-// disagreements (per draw in draws[]).
-nlohmann::json hiz_json(const HizResult& h) {
-    nlohmann::json levels = nlohmann::json::array();
-    for (const auto& [w, ht] : h.levels) levels.push_back({w, ht});
-    nlohmann::json json = {{"levels", levels},
-                           {"source", h.source},
-                           {"samples", h.samples},
-                           {"farthest", h.reverse_z ? "min (reverse-Z)" : "max (forward-Z)"}};
-    if (!h.groups.empty()) {
-        nlohmann::json tally = {{"visible", 0}, {"occluded", 0}, {"outside", 0}};
-        for (HizVerdict v : h.groups)
-            tally[hiz_verdict_name(v)] = tally[hiz_verdict_name(v)].get<int>() + 1;
-        json["draws"] = tally;
-    }
-    json["unsafe_draws"] = h.unsafe ? nlohmann::json(*h.unsafe) : nullptr;
-    json["unsafe_visible_draws"] = h.unsafe_visible ? nlohmann::json(*h.unsafe_visible) : nullptr;
-    return json;
-}
 
 nlohmann::json settings_json(const Settings& settings) {
     nlohmann::json json = nlohmann::json::object();  // {} even when there are none
@@ -244,25 +171,14 @@ nlohmann::json frame_report(const ReportInput& in) {
         {"counters", counters_note(in.device)},
         {"skipped", f.skipped},
         {"msaa", msaa_json(f.msaa)},
-        {"tiler", tiler_json(f.tiler, in.settings)},
+        {"tiler", tiler_json(f.tiler, f.subpass_turned_off, in.settings)},
     };
     if (f.depth) json["depth"] = depth_json(*f.depth);
     json["decals"] = decals_json(in.scene, f);
     // Left out when not counted, so that a reader never takes "not counted" for zero.
     if (f.covered_pixels) json["coverage"] = {{"covered_pixels", *f.covered_pixels}};
-    if (f.masked_discards)
-        json["masked_discards"] = {{"invoked", f.masked_discards->invoked},
-                                   {"discarded", f.masked_discards->discarded}};
-    if (f.zfight) json["zfight"] = zfight_json(*f.zfight);
-    if (f.equal_check) json["equal_check"] = equal_check_json(*f.equal_check);
-    if (f.hiz) json["hiz"] = hiz_json(*f.hiz);
-    if (!f.draws.empty()) {
-        json["draws"] = draws_json(f.draws);
-        json["draws_info"] = {
-            {"samples_passed_from", f.draws_samples_pass},
-            {"visible_pixels", f.draws_visible_note.empty() ? "surface_id (the prepass's winner)"
-                                                            : f.draws_visible_note}};
-    }
+    // Each pass's own sections (hiz, zfight, equal_check, draws, ...), in pass order.
+    f.slots.write_report(f, json);
     if (in.advice) json["advice"] = advice_json(*in.advice);
     if (in.camera) json["replay"] = replay_json(in.scene, *in.camera, in.settings);
     if (in.graph) json["graph"] = *in.graph;

@@ -3,18 +3,10 @@
 #include <string>
 #include <vector>
 
+#include "renderer/settings/frame_knobs.h"
+
 namespace ds::capture {
 namespace {
-
-// The knobs that are on but do not run on the subpass path (passes/frame.cpp).
-std::vector<std::string> turned_off(const Settings& s) {
-    std::vector<std::string> out;
-    for (const char* knob :
-         {"gtao", "contact_shadows", "count_fragments", "count_draws", "count_discards",
-          "equal_check", "surface_id", "zfight", "depth_precision", "hiz"})
-        if (s.get_bool(knob)) out.push_back(knob);
-    return out;
-}
 
 nlohmann::json attachment_json(const graph::TilerAttachment& a) {
     nlohmann::json j = {{"resource", a.name}, {"format", a.format},      {"role", a.role},
@@ -30,8 +22,8 @@ nlohmann::json attachment_json(const graph::TilerAttachment& a) {
 }  // namespace
 
 nlohmann::json tiler_json(const std::optional<graph::TilerReport>& tiler,
-                          const Settings& settings) {
-    const std::string path = settings.get("render_path");
+                          const std::vector<std::string>& turned_off, const Settings& settings) {
+    const std::string& path = knob_value(settings, knobs::kRenderPath);
     if (!tiler)
         return {{"render_path", path},
                 {"ran", "dynamic"},
@@ -58,7 +50,7 @@ nlohmann::json tiler_json(const std::optional<graph::TilerReport>& tiler,
             {"screen_space",
              "gtao and contact_shadows read neighbours, which tile memory cannot give: off on this "
              "path"},
-            {"turned_off", turned_off(settings)}};
+            {"turned_off", turned_off}};
 }
 
 }  // namespace ds::capture

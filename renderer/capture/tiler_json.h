@@ -4,6 +4,8 @@
 // conditions with the verdict, and what the path turned off; on the dynamic path, why there
 // is none.
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -12,6 +14,8 @@
 
 namespace ds::capture {
 
-nlohmann::json tiler_json(const std::optional<graph::TilerReport>& tiler, const Settings& settings);
+// `turned_off`: the knobs on whose passes do not run on the path (FrameResult).
+nlohmann::json tiler_json(const std::optional<graph::TilerReport>& tiler,
+                          const std::vector<std::string>& turned_off, const Settings& settings);
 
 }  // namespace ds::capture

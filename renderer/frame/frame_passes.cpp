@@ -1,5 +1,9 @@
 #include "renderer/frame/frame_passes.h"
 
+#include <functional>
+
+#include "renderer/frame/frame_joins.h"
+
 #include "renderer/passes/ao_spatial.h"
 #include "renderer/passes/ao_temporal.h"
 #include "renderer/passes/clear_counts.h"
@@ -25,46 +29,86 @@
 #include "renderer/passes/zfight.h"
 
 namespace ds {
+namespace {
 
-std::vector<std::unique_ptr<passes::FramePass>> make_frame_passes(const passes::PassServices& s) {
-    using namespace passes;
-    using Resolve = DepthResolvePass::After;
-    using Copy = ReadbackCopyPass::What;
-    std::vector<std::unique_ptr<FramePass>> list;
-    auto add = [&](std::unique_ptr<FramePass> pass) { list.push_back(std::move(pass)); };
-    // Seed 000's frame, with transparent added; each pass decides from the frame's options
-    // whether it runs (and says why not).
-    add(std::make_unique<ClearCountsPass>(s));
-    add(std::make_unique<ShadowPass>(s));
-    add(std::make_unique<DepthPrepass>(s));
-    add(std::make_unique<DepthResolvePass>(s, Resolve::Prepass));
-    add(std::make_unique<HizPass>(s));  // hiz: the pyramid from the prepass depth
-    add(std::make_unique<DepthPrecisionPass>(s));
-    add(std::make_unique<NormalsFromDepthPass>(s));  // prepass_mode=depth: for gtao, contact
-    add(std::make_unique<GtaoPass>(s));
-    add(std::make_unique<AoSpatialPass>(s));
-    add(std::make_unique<AoTemporalPass>(s));
-    add(std::make_unique<ContactShadowsPass>(s));
-    add(std::make_unique<ZfightPass>(s));  // diagnostics: against the prepass's result
-    add(std::make_unique<ForwardPass>(s));
-    // Right after forward, one run: render_path=subpass puts them all in subpass 1 of one
-    // render pass. The sky covers only "far" pixels, which no decal does, so its place before
-    // decals is free.
-    add(std::make_unique<SkyboxPass>(s));
-    add(std::make_unique<DecalsPass>(s));  // coplanar overlays, once, over forward's result
-    add(std::make_unique<TransparentPass>(s));
-    add(std::make_unique<EqualCheckPass>(s));                      // diagnostics: forward's counts
-    add(std::make_unique<DepthResolvePass>(s, Resolve::Forward));  // prepass=off, subpass path
-    add(std::make_unique<TonemapPass>(s));
-    // What the caller reads back, after everything it reads.
-    add(std::make_unique<ReadbackCopyPass>(s, Copy::Final));
-    add(std::make_unique<ReadbackCopyPass>(s, Copy::Depth));
-    add(std::make_unique<ReadbackCopyPass>(s, Copy::Counts));
-    add(std::make_unique<DrawCountsPass>(s));  // count_draws: after every pass it reads
-    add(std::make_unique<MsaaProbePass>(s));
-    add(std::make_unique<MsaaSamplesPass>(s));  // the sample view's rectangle (SampleQuery)
-    add(std::make_unique<InspectPass>(s));
+using namespace passes;
+using Resolve = DepthResolvePass::After;
+using Copy = ReadbackCopyPass::What;
+
+// One line of the list: how to make the pass and, where it has any, its knobs.
+struct Entry {
+    std::vector<SettingDef> (*knobs)() = nullptr;
+    std::function<std::unique_ptr<FramePass>(const PassServices&)> make;
+};
+
+template <typename Pass, typename... Args>
+Entry pass(Args... args) {
+    Entry e;
+    if constexpr (requires { Pass::knobs(); }) e.knobs = &Pass::knobs;
+    e.make = [=](const PassServices& s) { return std::make_unique<Pass>(s, args...); };
+    return e;
+}
+
+// Seed 000's frame, with transparent added; each pass decides from the frame's settings
+// whether it runs (and says why not).
+const std::vector<Entry>& pass_list() {
+    static const std::vector<Entry> list = {
+        pass<ClearCountsPass>(),
+        pass<ShadowPass>(),
+        pass<DepthPrepass>(),
+        pass<DepthResolvePass>(Resolve::Prepass),
+        pass<HizPass>(),  // hiz: the pyramid from the prepass depth
+        pass<DepthPrecisionPass>(),
+        pass<NormalsFromDepthPass>(),  // prepass_mode=depth: for gtao, contact
+        pass<GtaoPass>(),
+        pass<AoSpatialPass>(),
+        pass<AoTemporalPass>(),
+        pass<ContactShadowsPass>(),
+        pass<ZfightPass>(),  // diagnostics: against the prepass's result
+        pass<ForwardPass>(),
+        // Right after forward, one run: render_path=subpass puts them all in subpass 1 of one
+        // render pass. The sky covers only "far" pixels, which no decal does, so its place
+        // before decals is free.
+        pass<SkyboxPass>(),
+        pass<DecalsPass>(),  // coplanar overlays, once, over forward's result
+        pass<TransparentPass>(),
+        pass<EqualCheckPass>(),                    // diagnostics: forward's counts
+        pass<DepthResolvePass>(Resolve::Forward),  // prepass=off, subpass path
+        pass<TonemapPass>(),
+        // What the caller reads back, after everything it reads.
+        pass<ReadbackCopyPass>(Copy::Final),
+        pass<ReadbackCopyPass>(Copy::Depth),
+        pass<ReadbackCopyPass>(Copy::Counts),
+        pass<DrawCountsPass>(),  // count_draws: after every pass it reads
+        pass<MsaaProbePass>(),
+        pass<MsaaSamplesPass>(),  // the sample view's rectangle (SampleQuery)
+        pass<InspectPass>(),
+    };
     return list;
+}
+
+// The registry's pass knobs come from the list (settings/knob.h).
+const KnobSource kPassKnobs(KnobOwner::Passes, &frame_pass_knobs);
+
+}  // namespace
+
+std::vector<std::unique_ptr<FramePass>> make_frame_passes(const PassServices& s) {
+    std::vector<std::unique_ptr<FramePass>> out;
+    for (const Entry& e : pass_list()) out.push_back(e.make(s));
+    return out;
+}
+
+std::vector<SettingDef> frame_pass_knobs() {
+    std::vector<SettingDef> out;
+    for (const Entry& e : pass_list())
+        if (e.knobs)
+            for (SettingDef& def : e.knobs()) out.push_back(std::move(def));
+    return out;
+}
+
+std::span<const FrameJoin> frame_joins() {
+    static constexpr FrameJoin joins[] = {&join_hiz_draws};
+    return joins;
 }
 
 }  // namespace ds

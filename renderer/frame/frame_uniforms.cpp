@@ -1,5 +1,7 @@
 #include "renderer/frame/frame_uniforms.h"
 
+#include "renderer/settings/frame_knobs.h"
+
 #include <cmath>
 
 #include "renderer/passes/shadow.h"
@@ -13,8 +15,8 @@ constexpr glm::vec3 kGroundAmbient{0.35f, 0.30f, 0.25f};
 
 // Towards the sun: azimuth 0 towards +Z, 90 towards +X; elevation above the horizon.
 glm::vec3 to_sun(const Settings& settings) {
-    const float az = glm::radians(settings.get_float("sun_azimuth"));
-    const float el = glm::radians(settings.get_float("sun_elevation"));
+    const float az = glm::radians(knob_value(settings, knobs::kSunAzimuth));
+    const float el = glm::radians(knob_value(settings, knobs::kSunElevation));
     return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
 }
 
@@ -41,8 +43,8 @@ passes::FrameUniforms frame_uniforms(const UniformInputs& in) {
     const float aspect = float(in.size.width) / float(in.size.height);
     passes::FrameUniforms u;
     u.view = cam.view();
-    const std::string& fov = in.settings.get("fov");  // "scene" or degrees
-    const float yfov = fov == "scene" ? cam.yfov : glm::radians(in.settings.get_float("fov"));
+    const std::optional<float> fov = knob_value(in.settings, knobs::kFov);  // none: the scene's
+    const float yfov = fov ? glm::radians(*fov) : cam.yfov;
     u.projection = perspective(yfov, aspect, cam.znear, cam.zfar, in.options.reverse_z);
     u.view_projection = u.projection * u.view;
     u.inverse_view_projection = glm::inverse(u.view_projection);
@@ -53,14 +55,14 @@ passes::FrameUniforms frame_uniforms(const UniformInputs& in) {
     u.sun_view_projection = passes::ShadowPass::fit_sun(in.scene_bounds, l);
     u.camera_position = glm::vec4(cam.position, 1.0f);
     u.sun_direction = glm::vec4(l, 0.0f);
-    u.sun_radiance = glm::vec4(in.sun.color * in.settings.get_float("sun_intensity"), 0.0f);
-    const float ambient = in.settings.get_float("ambient");
+    u.sun_radiance = glm::vec4(in.sun.color * knob_value(in.settings, knobs::kSunIntensity), 0.0f);
+    const float ambient = knob_value(in.settings, knobs::kAmbient);
     u.sky_ambient = glm::vec4(kSkyAmbient * ambient, 0.0f);
     u.ground_ambient = glm::vec4(kGroundAmbient * ambient, 0.0f);
     u.viewport = {float(in.size.width), float(in.size.height), 1.0f / float(in.size.width),
                   1.0f / float(in.size.height)};
     u.depth_params = {cam.znear, cam.zfar, in.options.reverse_z ? 1.0f : 0.0f,
-                      in.settings.get_float("exposure")};
+                      knob_value(in.settings, knobs::kExposure)};
     u.alpha = glm::vec4(in.options.alpha_cutoff.value_or(-1.0f), 0.0f, 0.0f, 0.0f);
     u.flags = glm::uvec4(in.flags | (in.options.reverse_z ? passes::kFrameReverseZ : 0u),
                          uint32_t(in.frame_number), 0u, 0u);

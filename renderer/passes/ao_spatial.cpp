@@ -30,9 +30,9 @@ void AoSpatialPass::rebuild_pipelines(vk::DestroyList& retired) {
     vertical_.install(std::move(v), retired);
 }
 
-std::optional<std::string> AoSpatialPass::skipped(const FrameInputs& in) const {
-    if (in.options.gtao) return std::nullopt;
-    return off_or_without_prepass(in, "gtao");
+// It filters gtao's output: it runs when gtao does and says why not when gtao does not.
+void AoSpatialPass::configure(const FrameSetup&, FrameOptions& o) {
+    if (o.gtao_skipped) set_skipped(*o.gtao_skipped);
 }
 
 void AoSpatialPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {

@@ -27,7 +27,7 @@ class AoSpatialPass final : public FramePass {
     // Fail-safe: both directions compile first; on any error both keep their pipelines.
     const char* name() const override { return "ao_spatial"; }
     void rebuild_pipelines(vk::DestroyList& retired) override;
-    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
 
     // Declares "ao_spatial" when resources.ao_raw is valid (gtao ran): reads ao_raw (sampled)
     // and the frame uniforms; creates and writes resources.ao_filtered at ao_raw's size (and

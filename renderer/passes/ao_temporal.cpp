@@ -26,9 +26,9 @@ void AoTemporalPass::rebuild_pipelines(vk::DestroyList& retired) {
     upsample_.install(std::move(u), retired);
 }
 
-std::optional<std::string> AoTemporalPass::skipped(const FrameInputs& in) const {
-    if (in.options.gtao) return std::nullopt;
-    return off_or_without_prepass(in, "gtao");
+// It filters gtao's output: it runs when gtao does and says why not when gtao does not.
+void AoTemporalPass::configure(const FrameSetup&, FrameOptions& o) {
+    if (o.gtao_skipped) set_skipped(*o.gtao_skipped);
 }
 
 void AoTemporalPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {

@@ -34,7 +34,7 @@ class AoTemporalPass final : public FramePass {
     const char* name() const override { return "ao_temporal"; }
     // Fail-safe: both dispatches' kernels compile first; on any error both keep theirs.
     void rebuild_pipelines(vk::DestroyList& retired) override;
-    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
 
     // Declares "ao_temporal" when resources.ao_filtered is valid: reads ao_filtered and the
     // previous history (sampled), the frame uniforms, depth and normals (sampled, for the

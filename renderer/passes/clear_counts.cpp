@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "renderer/common/error.h"
 #include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/readback/host_readback.h"
@@ -47,6 +48,29 @@ void ClearCountsPass::add_draw_counters(graph::RenderGraph& graph, const FrameIn
     for (const auto& [counts, name] : passes)
         if (counts->valid())
             counts->draws = services_.readback.import_storage(graph, name, bytes, bytes);
+}
+
+std::vector<SettingDef> ClearCountsPass::knobs() {
+    return {bool_knob(kKnob, "measurement", false,
+                      "count, per pixel, the fragments each geometry pass (shadow, prepass, "
+                      "forward, decals, transparent) rasterized, shaded and discarded, and its "
+                      "quads (report: rasterized_fragments, shaded_fragments, "
+                      "discarded_fragments, quad_overdraw)",
+                      Invalidates::Pipelines)};
+}
+
+void ClearCountsPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    if (!knob_value(setup.settings, kKnob)) return;
+    o.requests.counts = true;
+    if (o.subpass) set_turned_off(kKnob.name);
+}
+
+void ClearCountsPass::resolve(FrameOptions& o) {
+    o.count_fragments = o.requests.counts && !o.subpass;
+    const vk::DeviceReport& report = services_.context.report();
+    if (o.count_fragments && !report.fragment_stores_and_atomics)
+        throw Error("count_fragments=on needs fragmentStoresAndAtomics, which " +
+                    report.candidate.name + " does not offer");
 }
 
 void ClearCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {

@@ -21,9 +21,17 @@ void ContactShadowsPass::rebuild_pipelines(vk::DestroyList& retired) {
     kernel_.rebuild(retired, {{"STEPS", std::to_string(steps_)}});
 }
 
-std::optional<std::string> ContactShadowsPass::skipped(const FrameInputs& in) const {
-    if (in.options.contact_shadows) return std::nullopt;
-    return off_or_without_prepass(in, "contact_shadows");
+std::vector<SettingDef> ContactShadowsPass::knobs() {
+    return {bool_knob(kKnob, "passes", true, "screen-space march toward the sun",
+                      Invalidates::Nothing)};
+}
+
+// It marches the prepass depth: no prepass, no effect; nothing runs between the subpasses.
+void ContactShadowsPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    const bool knob = knob_value(setup.settings, kKnob);
+    o.contact_shadows = knob && o.prepass && !o.subpass;
+    if (!o.contact_shadows) set_skipped(off_or_without_prepass(knob, o, kKnob.name));
+    if (knob && o.subpass) set_turned_off(kKnob.name);
 }
 
 void ContactShadowsPass::add(graph::RenderGraph& graph, const FrameInputs& in,

@@ -8,6 +8,7 @@
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
+#include "renderer/settings/knob.h"
 
 namespace ds::passes {
 
@@ -29,7 +30,9 @@ class ContactShadowsPass final : public FramePass {
     const char* name() const override { return "contact_shadows"; }
     void rebuild_pipelines(
         vk::DestroyList& retired) override;  // fail-safe (ComputeKernel::rebuild)
-    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    static constexpr Knob<bool> kKnob{"contact_shadows"};
+    static std::vector<SettingDef> knobs();
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
 
     // Declares "contact_shadows" when in.options.contact_shadows: reads depth, normals
     // (sampled) and the frame uniforms (sun_direction); creates and writes

@@ -72,6 +72,19 @@ vk::Pipeline DecalsPass::create(const Variant& v, const ShaderStages& s) const {
         .build(services_.context, pipeline_name(v).c_str());
 }
 
+std::vector<SettingDef> DecalsPass::knobs() {
+    return {bool_knob(kKnob, "passes", true,
+                      "coplanar overlays (classified at load: triangles lying on another surface "
+                      "and inside it) skip shadow, prepass and forward and are drawn once by the "
+                      "decals pass after forward; off: drawn like any surface (they Z-fight)",
+                      Invalidates::Nothing)};
+}
+
+// The other geometry passes leave decal groups to this one when it runs (scene_groups).
+void DecalsPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    o.decal_pass = knob_value(setup.settings, kKnob) && setup.scene.decal_groups() > 0;
+}
+
 void DecalsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     uses_.clear();
     history_.clear();

@@ -26,6 +26,7 @@
 #include "renderer/passes/pipeline_use.h"
 #include "renderer/passes/rasterized_count.h"
 #include "renderer/scene/scene.h"
+#include "renderer/settings/knob.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
 
@@ -38,6 +39,9 @@ class DecalsPass final : public FramePass {
     explicit DecalsPass(const PassServices& services);
 
     const char* name() const override { return kName; }
+    static constexpr Knob<bool> kKnob{"decal_pass"};
+    static std::vector<SettingDef> knobs();
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
     void rebuild_pipelines(vk::DestroyList& retired) override {
         pipelines_.rebuild(retired);
         rasterized_.rebuild_pipelines(retired);

@@ -14,6 +14,24 @@ void DepthPrecisionPass::rebuild_pipelines(vk::DestroyList& retired) {
     if (built_) kernel_.rebuild(retired);
 }
 
+std::vector<SettingDef> DepthPrecisionPass::knobs() {
+    return {bool_knob(kKnob, "diagnostics", false,
+                      "image depth_precision: per pixel, the distance along the view ray to the "
+                      "next representable depth value (format, planes, direction), in scene "
+                      "units (on whenever zfight is)",
+                      Invalidates::Nothing)};
+}
+
+void DepthPrecisionPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    if (!knob_value(setup.settings, kKnob)) return;
+    o.requests.depth_precision = true;
+    if (o.subpass) set_turned_off(kKnob.name);
+}
+
+void DepthPrecisionPass::resolve(FrameOptions& o) {
+    o.depth_precision = o.requests.depth_precision && o.prepass && !o.subpass;
+}
+
 void DepthPrecisionPass::add(graph::RenderGraph& graph, const FrameInputs& in,
                              FrameResources& res) {
     if (!in.options.depth_precision) return;

@@ -6,6 +6,7 @@
 // the ray; 0 where nothing was drawn. The viewer shows r on a log scale.
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame_pass.h"
+#include "renderer/settings/knob.h"
 
 namespace ds::passes {
 
@@ -16,6 +17,11 @@ class DepthPrecisionPass final : public FramePass {
     explicit DepthPrecisionPass(const PassServices& services);
 
     const char* name() const override { return "depth_precision"; }
+    static constexpr Knob<bool> kKnob{"depth_precision"};
+    static std::vector<SettingDef> knobs();
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
+    // On when asked for (its knob, zfight), with the prepass, on the dynamic path.
+    void resolve(FrameOptions& options) override;
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
     void rebuild_pipelines(vk::DestroyList& retired) override;
 

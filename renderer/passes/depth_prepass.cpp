@@ -4,15 +4,20 @@
 #include <cstring>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
+#include "renderer/common/error.h"
 #include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/passes/scene_draw.h"
 #include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
+#include "renderer/vk/capabilities.h"
 #include "renderer/vk/check.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/functions.h"
 
 namespace ds::passes {
+namespace {}  // namespace
 
 using graph::Access;
 using scene::AlphaMode;
@@ -57,9 +62,53 @@ void DepthPrepass::rebuild_pipelines(vk::DestroyList& retired) {
     rasterized_.rebuild_pipelines(retired);
 }
 
-std::optional<std::string> DepthPrepass::skipped(const FrameInputs& in) const {
-    if (in.options.prepass) return std::nullopt;
-    return "prepass=off";
+std::vector<SettingDef> DepthPrepass::knobs() {
+    using I = Invalidates;
+    return {
+        bool_knob(kMaskedSplit, "prepass and depth", true,
+                  "separate prepass pipeline for MASK materials; off: one pipeline with discard "
+                  "for all geometry (loses early-Z)",
+                  I::Nothing),
+        bool_knob(kPrepassSort, "prepass and depth", true,
+                  "prepass draws opaque and masked instances front to back (prepass_mode=depth: "
+                  "whole instanced groups, by their nearest instance; off: instanced groups in "
+                  "the scene's authored order, every hidden layer shaded)",
+                  I::Nothing),
+        bool_knob(kCountDiscards, "measurement", false,
+                  "count fragments the masked prepass pipeline ran and discarded "
+                  "(masked_discards in the report)",
+                  I::Pipelines),
+        bool_knob(kSurfaceId, "diagnostics", false,
+                  "the prepass also writes surface_id: per pixel, the surface (triangle of an "
+                  "instance) that won the depth test (on whenever zfight is)",
+                  I::Pipelines),
+    };
+}
+
+void DepthPrepass::configure(const FrameSetup& setup, FrameOptions& o) {
+    const Settings& s = setup.settings;
+    masked_split_ = knob_value(s, kMaskedSplit);
+    prepass_sort_ = knob_value(s, kPrepassSort);
+    // The discard counters are storage writes that a render pass's subpass has no room for.
+    const bool discards = knob_value(s, kCountDiscards);
+    count_discards_ = discards && !o.subpass;
+    const bool surface_id = knob_value(s, kSurfaceId);
+    if (surface_id) o.requests.surface_id = true;
+    if (!o.prepass) set_skipped("prepass=off");
+    if (o.subpass && surface_id) set_turned_off(kSurfaceId.name);
+    if (o.subpass && discards) set_turned_off(kCountDiscards.name);
+}
+
+// The prepass writes surface ids from gl_PrimitiveID in its fragment shader, which Vulkan
+// allows only on devices with geometryShader.
+void DepthPrepass::resolve(FrameOptions& o) {
+    o.surface_id = o.requests.surface_id && o.prepass && !o.subpass;
+    const vk::DeviceReport& device = services_.context.report();
+    if (o.surface_id && !device.geometry_shader)
+        throw Error(
+            "surface ids (surface_id, zfight, equal_check, count_draws) need the "
+            "geometryShader feature, which " +
+            device.candidate.name + " does not offer");
 }
 
 ShaderStages DepthPrepass::compile(const Variant& v) const {
@@ -163,17 +212,15 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
     // variant, so normal frames share it.
     Variant tested = opaque;
     tested.alpha_to_coverage = in.options.alpha_to_coverage;
-    tested.count_discards = in.options.count_discards;
-    tested.alpha = in.options.masked_split ? AlphaTest::Mask : AlphaTest::Unsplit;
+    tested.count_discards = count_discards_;
+    tested.alpha = masked_split_ ? AlphaTest::Mask : AlphaTest::Unsplit;
     // A subpass's pipelines need the graph's render pass: record() gets them.
-    const Draw draw =
-        in.options.subpass ? Draw{} : make_draw(opaque, tested, in.options.masked_split);
+    const Draw draw = in.options.subpass ? Draw{} : make_draw(opaque, tested, masked_split_);
     // count_discards=on: two counters in a host buffer, zeroed by the host before the submit.
     const graph::BufferHandle discards =
-        in.options.count_discards
-            ? services_.readback.import_storage(graph, "prepass_discard_counts", kDiscardBytes,
-                                                kDiscardBytes)
-            : graph::BufferHandle{};
+        count_discards_ ? services_.readback.import_storage(graph, "prepass_discard_counts",
+                                                            kDiscardBytes, kDiscardBytes)
+                        : graph::BufferHandle{};
     discards_ = discards;
     if (in.pixel) add_history(graph, in, res, opaque, tested);
     struct Data {
@@ -199,7 +246,7 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
                 Variant opaque = d.opaque, tested = d.tested;
                 opaque.render_pass = tested.render_pass = target.pass;
                 opaque.subpass = tested.subpass = target.index;
-                draw = make_draw(opaque, tested, d.in.options.masked_split);
+                draw = make_draw(opaque, tested, masked_split_);
             }
             record(ctx, d.in, d.res, d.msaa, draw, d.discards);
         });
@@ -235,7 +282,7 @@ void DepthPrepass::collect(const FrameCollect& c, std::span<PassResult> own, Fra
     if (bytes.size() < kDiscardBytes) return;
     uint32_t counts[2] = {};
     std::memcpy(counts, bytes.data(), sizeof counts);
-    frame.masked_discards = DiscardCounts{counts[0], counts[1]};
+    frame.slots.put(DiscardCounts{counts[0], counts[1]}, &discards_report);
 }
 
 DepthPrepass::Msaa DepthPrepass::declare(graph::PassBuilder& b, const FrameInputs& in,
@@ -385,7 +432,7 @@ void DepthPrepass::add_history(graph::RenderGraph& graph, const FrameInputs& in,
     }
     Draw draw;
     draw.layout = history_.layout();
-    if (in.options.masked_split) {
+    if (masked_split_) {
         draw.opaque = pipelines_.get(replay_opaque);
         draw.mask = pipelines_.get(replay_tested);
         history_pipelines_ = {history_pipeline(pipelines_.info(opaque)),
@@ -428,7 +475,7 @@ void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const 
     const DrawHooks hooks{.queries = log ? nullptr : &queries_, .log = log};
     auto draw_modes = [&](std::span<const AlphaMode> modes) {
         const Decals decals = scene_groups(in.options.decal_pass);
-        if (!in.options.prepass_sort)
+        if (!prepass_sort_)
             return draw_groups(cmd, *in.scene, layout, modes, decals, std::nullopt, hooks);
         const auto sorted =
             in.options.gbuffer
@@ -457,6 +504,11 @@ void DepthPrepass::draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const 
         tag(0);
         uses.add(draw.opaque_info, draw_modes(all).draws);
     }
+}
+
+// count_discards=on: report.json's "masked_discards".
+void discards_report(const DiscardCounts& d, const FrameResult&, nlohmann::json& report) {
+    report["masked_discards"] = {{"invoked", d.invoked}, {"discarded", d.discarded}};
 }
 
 }  // namespace ds::passes

@@ -40,6 +40,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "renderer/graph/graph.h"
 #include "renderer/passes/draw_queries.h"
 #include "renderer/passes/frame.h"
@@ -48,12 +50,28 @@
 #include "renderer/passes/pipeline_use.h"
 #include "renderer/passes/pixel_history.h"
 #include "renderer/passes/rasterized_count.h"
+#include "renderer/settings/knob.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
 
+namespace ds {
+
+// count_discards=on: fragments that ran the depth prepass's alpha-tested pipeline (the MASK one;
+// masked_split=off: the one for all geometry), and how many of them it discarded. Exact
+// (shader atomics; helper invocations do not count).
+struct DiscardCounts {
+    uint64_t invoked = 0;
+    uint64_t discarded = 0;
+};
+
+}  // namespace ds
+
 namespace ds::passes {
+
+// Its report.json section(s), put with the result (ResultSlots).
+void discards_report(const DiscardCounts& result, const FrameResult& frame, nlohmann::json& report);
 
 class DepthPrepass final : public FramePass {
   public:
@@ -68,13 +86,21 @@ class DepthPrepass final : public FramePass {
     explicit DepthPrepass(const PassServices& services);
 
     const char* name() const override { return kName; }
-    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    static constexpr Knob<bool> kMaskedSplit{"masked_split"};
+    static constexpr Knob<bool> kPrepassSort{"prepass_sort"};
+    static constexpr Knob<bool> kSurfaceId{"surface_id"};
+    static constexpr Knob<bool> kCountDiscards{"count_discards"};
+    static std::vector<SettingDef> knobs();
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
+    // surface_id: on when asked for (its knob, zfight, equal_check, count_draws, the sample
+    // view), with the prepass, on the dynamic path.
+    void resolve(FrameOptions& options) override;
     void rebuild_pipelines(vk::DestroyList& retired) override;
     // Writes res.depth (which the renderer provides; at msaa > 1 without a native resolve,
     // res.msaa_depth and depth_resolve follows); creates res.normals and res.roughness.
     // Counts into res.prepass_counts when it is valid.
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
-    // shaded_fragments from res.prepass_counts; FrameResult::masked_discards.
+    // shaded_fragments from res.prepass_counts; DiscardCounts (report "masked_discards").
     void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
 
   private:
@@ -157,6 +183,8 @@ class DepthPrepass final : public FramePass {
                      const Variant& opaque, const Variant& tested);
 
     PassServices services_;
+    // This frame's options (configure).
+    bool masked_split_ = true, prepass_sort_ = true, count_discards_ = false;
     vk::DescriptorSetLayout discard_layout_;
     vk::DescriptorSetLayout count_layout_;
     vk::PipelineLayout layout_;

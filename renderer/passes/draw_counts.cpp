@@ -4,6 +4,9 @@
 #include <optional>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "renderer/common/surface_json.h"
 #include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/readback/host_readback.h"
 
@@ -23,7 +26,7 @@ const char* alpha_mode_name(scene::AlphaMode mode) {
 }
 
 // Per pixel, the draw group whose surface won + 1 (0: none), and the histogram per group.
-void histogram(std::span<const std::byte> ids, const GpuScene& scene, FrameResult& frame,
+void histogram(std::span<const std::byte> ids, const GpuScene& scene, DrawsResult& frame,
                std::vector<uint64_t>& visible) {
     const SurfaceTable& table = scene.surfaces();
     const std::vector<uint32_t>& groups = scene.instance_groups();
@@ -68,20 +71,54 @@ void fill_counts(DrawReport& d, std::span<const PassResult> passes,
         d.occluded = *d.samples_passed == 0;
 }
 
-// hiz=on: the Hi-Z verdict next to samples_passed; unsafe when Hi-Z says the draw cannot be
-// seen (occluded or outside) and the visibility pass's queries saw samples pass.
-void fill_hiz(DrawReport& d, HizResult& hiz) {
-    if (d.group >= hiz.groups.size()) return;
-    d.hiz = hiz.groups[d.group];
-    d.hiz_occluded_instances = hiz.occluded_instances[d.group];
-    d.hiz_unsafe = *d.hiz != HizVerdict::Visible && d.samples_passed && *d.samples_passed > 0;
-    hiz.unsafe = hiz.unsafe.value_or(0) + (d.hiz_unsafe ? 1 : 0);
-    const bool won_pixels = d.visible_pixels && *d.visible_pixels > 0;
-    hiz.unsafe_visible =
-        hiz.unsafe_visible.value_or(0) + (*d.hiz != HizVerdict::Visible && won_pixels ? 1 : 0);
+// One entry per scene draw group; a count that was not measured is null, never 0.
+nlohmann::json draws_json(const std::vector<DrawReport>& draws) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const DrawReport& d : draws) {
+        nlohmann::json entry = surface_json(d.name);  // node: the group's first instance's
+        entry["group"] = d.group;
+        entry["instances"] = {d.first_instance, d.instances};
+        entry["alpha_mode"] = d.alpha_mode;
+        if (d.decal) entry["decal"] = true;
+        entry["visible_pixels"] = d.visible_pixels ? nlohmann::json(*d.visible_pixels) : nullptr;
+        entry["samples_passed"] = d.samples_passed ? nlohmann::json(*d.samples_passed) : nullptr;
+        nlohmann::json shaded = nlohmann::json::object(), wasted = nlohmann::json::object();
+        for (const auto& [pass, n] : d.shaded_fragments) shaded[pass] = n;
+        for (const auto& [pass, n] : d.wasted_fragments) wasted[pass] = n;
+        entry["shaded_fragments"] = std::move(shaded);
+        entry["wasted_fragments"] = std::move(wasted);
+        entry["occluded"] = d.occluded;
+        if (d.hiz) {
+            entry["hiz"] = hiz_verdict_name(*d.hiz);
+            entry["hiz_occluded_instances"] = d.hiz_occluded_instances;
+            entry["hiz_unsafe"] = d.hiz_unsafe;
+        }
+        out.push_back(std::move(entry));
+    }
+    return out;
 }
 
 }  // namespace
+
+std::vector<SettingDef> DrawCountsPass::knobs() {
+    return {bool_knob(kKnob, "measurement", false,
+                      "per draw group: visible pixels (from surface_id), samples passed (a "
+                      "precise occlusion query per draw in the prepass, or forward without it) "
+                      "and shaded fragments per counting pass (report draws, Draws panel; turns "
+                      "on count_fragments and surface_id)",
+                      Invalidates::Pipelines)};
+}
+
+void DrawCountsPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    const bool knob = knob_value(setup.settings, kKnob);
+    o.count_draws = knob && !o.subpass;
+    if (knob && o.subpass) set_turned_off(kKnob.name);
+    if (!o.count_draws) return;
+    o.requests.counts = o.requests.surface_id = true;
+    if (!setup.device.occlusion_query_precise)
+        throw Error("count_draws=on needs occlusionQueryPrecise, which " +
+                    setup.device.candidate.name + " does not offer");
+}
 
 void DrawCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     if (!in.options.count_draws || !res.surface_id.valid()) return;
@@ -96,13 +133,14 @@ void DrawCountsPass::collect(const FrameCollect& c, std::span<PassResult>, Frame
     const std::span<const std::byte> ids = c.res.surface_id.valid()
                                                ? c.readback.image_bytes(c.res.surface_id)
                                                : std::span<const std::byte>{};
-    if (!ids.empty()) histogram(ids, scene, frame, visible);
+    DrawsResult r;
+    if (!ids.empty()) histogram(ids, scene, r, visible);
     if (!c.in.options.prepass)
-        frame.draws_visible_note = "prepass=off: visible pixels come from the prepass's surface_id";
+        r.visible_note = "prepass=off: visible pixels come from the prepass's surface_id";
     else if (c.in.options.msaa())
-        frame.draws_visible_note = "msaa > 1: visible pixels are sample 0's winner";
+        r.visible_note = "msaa > 1: visible pixels are sample 0's winner";
     for (const PassResult& p : frame.passes)
-        if (!p.draw_samples_passed.empty()) frame.draws_samples_pass = p.name;
+        if (!p.draw_samples_passed.empty()) r.samples_pass = p.name;
     for (size_t g = 0; g < groups.size(); ++g) {
         const scene::DrawGroup& group = groups[g];
         DrawReport d;
@@ -113,9 +151,25 @@ void DrawCountsPass::collect(const FrameCollect& c, std::span<PassResult>, Frame
         d.decal = group.decal;
         if (group.instance_count > 0) d.name = scene.surfaces().name(group.first_instance);
         fill_counts(d, frame.passes, ids.empty() ? nullptr : &visible);
-        if (frame.hiz) fill_hiz(d, *frame.hiz);
-        frame.draws.push_back(std::move(d));
+        r.draws.push_back(std::move(d));
     }
+    frame.slots.put(std::move(r), &draws_report);
+}
+
+// count_draws=on: report.json's "draws" and "draws_info".
+void draws_report(const DrawsResult& r, const FrameResult&, nlohmann::json& report) {
+    if (r.draws.empty()) return;
+    report["draws"] = draws_json(r.draws);
+    report["draws_info"] = {
+        {"samples_passed_from", r.samples_pass},
+        {"visible_pixels",
+         r.visible_note.empty() ? "surface_id (the prepass's winner)" : r.visible_note}};
+}
+
+const DrawsResult& draws_of(const FrameResult& frame) {
+    static const DrawsResult none;
+    const DrawsResult* r = frame.find<DrawsResult>();
+    return r ? *r : none;
 }
 
 }  // namespace ds::passes

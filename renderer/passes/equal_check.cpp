@@ -4,8 +4,12 @@
 #include <cstring>
 #include <map>
 
+#include <nlohmann/json.hpp>
+
+#include "renderer/common/surface_json.h"
 #include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/passes/compute_kernel.h"
+#include "renderer/passes/pass_util.h"
 #include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
 #include "renderer/vk/context.h"
@@ -51,16 +55,36 @@ void EqualCheckPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipeline_.rebuild(retired);
 }
 
-std::optional<std::string> EqualCheckPass::skipped(const FrameInputs& in) const {
-    if (in.options.equal_check || !in.settings->get_bool("equal_check")) return std::nullopt;
-    if (!in.options.prepass) return "prepass off";
-    if (!in.options.depth_equal) return "depth_compare is not equal";
-    return "msaa > 1: forward counts fragments per pixel, not per sample";
+std::vector<SettingDef> EqualCheckPass::knobs() {
+    return {bool_knob(kKnob, "diagnostics", false,
+                      "prepass on, depth_compare=equal, msaa=1: marks pixels the prepass covered "
+                      "that forward did not shade (holes) and pixels forward shaded more than "
+                      "once (ties); image equal_check, report equal_check (turns on "
+                      "count_fragments)",
+                      Invalidates::Pipelines)};
+}
+
+// It reads forward's per-pixel counts (per pixel, not per sample) and names the surfaces that
+// won (surface_id).
+void EqualCheckPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    const bool knob = knob_value(setup.settings, kKnob);
+    on_ = knob && o.prepass && o.depth_equal && !o.msaa() && !o.subpass;
+    if (on_) o.requests.counts = o.requests.surface_id = true;
+    if (!knob || on_) return;
+    if (!o.prepass)
+        set_skipped("prepass off");
+    else if (o.subpass)
+        set_skipped(subpass_path_reason());
+    else if (!o.depth_equal)
+        set_skipped("depth_compare is not equal");
+    else
+        set_skipped("msaa > 1: forward counts fragments per pixel, not per sample");
+    if (o.subpass) set_turned_off(kKnob.name);
 }
 
 void EqualCheckPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     result_ = {};
-    if (!in.options.equal_check) return;
+    if (!on_) return;
     pipeline_.get(layout_.handle());  // built now, not while the frame records
     const VkExtent2D extent = graph.resources()[res.depth.index].extent;
     capacity_ = extent.width * extent.height;
@@ -131,7 +155,18 @@ void EqualCheckPass::collect(const FrameCollect& c, std::span<PassResult>, Frame
         result.surfaces.begin(), result.surfaces.end(),
         [](const auto& a, const auto& b) { return a.holes + a.multiple > b.holes + b.multiple; });
     if (result.surfaces.size() > kTopSurfaces) result.surfaces.resize(kTopSurfaces);
-    frame.equal_check = std::move(result);
+    frame.slots.put(std::move(result), &equal_check_report);
+}
+
+void equal_check_report(const EqualCheckResult& e, const FrameResult&, nlohmann::json& report) {
+    nlohmann::json surfaces = nlohmann::json::array();
+    for (const EqualCheckSurface& s : e.surfaces) {
+        nlohmann::json entry = surface_json(s.name);
+        entry["holes"] = s.holes;
+        entry["multiple"] = s.multiple;
+        surfaces.push_back(std::move(entry));
+    }
+    report["equal_check"] = {{"holes", e.holes}, {"multiple", e.multiple}, {"surfaces", surfaces}};
 }
 
 }  // namespace ds::passes

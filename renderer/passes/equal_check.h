@@ -10,20 +10,45 @@
 
 #include <vulkan/vulkan.h>
 
+#include <nlohmann/json_fwd.hpp>
+
+#include "renderer/common/surface_name.h"
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame_pass.h"
+#include "renderer/settings/knob.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
 
+namespace ds {
+
+// equal_check=on: pixels the prepass covered that forward did not shade (holes) and pixels
+// forward shaded more than once (multiple), and the instances most involved.
+struct EqualCheckSurface {
+    SurfaceName name;
+    uint64_t holes = 0, multiple = 0;  // pixels it won in the prepass
+};
+struct EqualCheckResult {
+    uint64_t holes = 0, multiple = 0;
+    std::vector<EqualCheckSurface> surfaces;  // most pixels first, at most ten
+};
+
+}  // namespace ds
+
 namespace ds::passes {
+
+// Its report.json section(s), put with the result (ResultSlots).
+void equal_check_report(const EqualCheckResult& result, const FrameResult& frame,
+                        nlohmann::json& report);
 
 class EqualCheckPass final : public FramePass {
   public:
     explicit EqualCheckPass(const PassServices& services);
 
     const char* name() const override { return "equal_check"; }
-    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    static constexpr Knob<bool> kKnob{"equal_check"};
+    static std::vector<SettingDef> knobs();
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
     void rebuild_pipelines(vk::DestroyList& retired) override;
     void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
@@ -42,6 +67,7 @@ class EqualCheckPass final : public FramePass {
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     vk::PipelineLayout layout_;
     LazyComputePipeline pipeline_;  // built by the first frame that checks
+    bool on_ = false;               // this frame's (configure)
     graph::BufferHandle result_;
     uint32_t capacity_ = 0;
 };

@@ -125,13 +125,24 @@ vk::Pipeline ForwardPass::create(const Variant& v, const ShaderStages& s) const 
         .build(services_.context, pipeline_name(v).c_str());
 }
 
+std::vector<SettingDef> ForwardPass::knobs() {
+    return {bool_knob(kInvariant, "prepass and depth", true,
+                      "off: forward computes gl_Position with a different but mathematically "
+                      "equal expression, to show what EQUAL does without invariance",
+                      Invalidates::Pipelines)};
+}
+
+void ForwardPass::configure(const FrameSetup& setup, FrameOptions&) {
+    invariant_ = knob_value(setup.settings, kInvariant);
+}
+
 void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     const FrameOptions& o = in.options;
     // prepass_mode=depth: the prepass left only depth, so forward computes normal and
     // roughness itself (its non-PREPASS path), still under EQUAL without depth writes.
     // render_path=subpass: the G-buffer arrives as input attachments instead (subpass 1).
     const Variant opaque{.prepass_inputs = o.gbuffer_prepass() && !o.subpass,
-                         .non_invariant = !o.invariant,
+                         .non_invariant = !invariant_,
                          .counting = res.forward_counts.valid(),
                          .sample_shading = o.sample_shading,
                          .samples = o.samples,
@@ -190,7 +201,7 @@ void ForwardPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
         });
     using Vertex = RasterizedCount::Vertex;
     rasterized_.add(graph, in, res, res.forward_counts,
-                    {.vertex = o.invariant ? Vertex::Scene : Vertex::SceneNonInvariant,
+                    {.vertex = invariant_ ? Vertex::Scene : Vertex::SceneNonInvariant,
                      .samples = o.samples,
                      .modes = {AlphaMode::Opaque, AlphaMode::Mask},
                      .decals = scene_groups(o.decal_pass)});

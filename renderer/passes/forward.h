@@ -40,6 +40,7 @@
 #include "renderer/passes/pipeline_use.h"
 #include "renderer/passes/pixel_history.h"
 #include "renderer/passes/rasterized_count.h"
+#include "renderer/settings/knob.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
@@ -54,6 +55,9 @@ class ForwardPass final : public FramePass {
     explicit ForwardPass(const PassServices& services);
 
     const char* name() const override { return kName; }
+    static constexpr Knob<bool> kInvariant{"invariant"};
+    static std::vector<SettingDef> knobs();
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
     void rebuild_pipelines(vk::DestroyList& retired) override;
     // Creates res.hdr (msaa > 1: draws into res.msaa_hdr instead). Reads res.depth (writes it
     // without the prepass), res.shadow_map, res.normals, res.roughness, res.ao, res.contact_shadows
@@ -128,6 +132,7 @@ class ForwardPass final : public FramePass {
                               const FrameResources& res);
 
     PassServices services_;
+    bool invariant_ = true;  // this frame's (configure)
     LightingSet lighting_;
     vk::DescriptorSetLayout count_layout_;
     vk::PipelineLayout layout_;

@@ -8,6 +8,7 @@
 #include "renderer/common/error.h"
 #include "renderer/format/format.h"
 #include "renderer/scene/scene.h"
+#include "renderer/settings/frame_knobs.h"
 
 namespace ds::passes {
 namespace {
@@ -41,12 +42,6 @@ DepthChoice depth_choice_of(const std::string& name) {
     for (DepthChoice c : kDepthChoices)
         if (name == depth_choice_name(c)) return c;
     throw UsageError("setting depth_format: '" + name + "' is not d32f|d24|d16");
-}
-
-// A plane knob: "scene" keeps the camera's.
-std::optional<float> plane(const Settings& s, const char* name) {
-    if (s.get(name) == "scene") return std::nullopt;
-    return s.get_float(name);
 }
 
 // "znear=0.5", or "zfar=200 (the scene camera's)" when the knob is at "scene".
@@ -100,57 +95,29 @@ scene::Camera effective_camera(const scene::Camera& camera, const FrameOptions& 
 }
 
 FrameOptions FrameOptions::from(const Settings& s) {
+    using namespace knobs;
     FrameOptions o;
-    o.prepass = s.get_bool("prepass");
-    o.gbuffer = s.get("prepass_mode") == "gbuffer";
-    o.depth_equal = s.get("depth_compare") == "equal";
-    o.masked_split = s.get_bool("masked_split");
-    o.prepass_sort = s.get_bool("prepass_sort");
-    if (s.get("alpha_cutoff") != "material") o.alpha_cutoff = s.get_float("alpha_cutoff");
-    o.shadows = s.get_bool("shadows");
-    // GTAO and contact shadows read the prepass depth (and normals): no prepass, no effect.
-    o.gtao = s.get_bool("gtao") && o.prepass;
-    o.contact_shadows = s.get_bool("contact_shadows") && o.prepass;
-    o.sky = s.get_bool("sky");
-    o.decal_pass = s.get_bool("decal_pass");  // the renderer clears it for a scene without
-    o.invariant = s.get_bool("invariant");
-    o.reverse_z = s.get_bool("reverse_z");
-    // equal_check reads forward's per-pixel counts and names the surfaces that won.
-    o.equal_check =
-        s.get_bool("equal_check") && o.prepass && o.depth_equal && s.get_int("msaa") == 1;
-    // count_draws counts per draw in the counting shaders and names pixels by surface_id.
-    o.count_draws = s.get_bool("count_draws");
-    o.count_fragments = s.get_bool("count_fragments") || o.equal_check || o.count_draws;
+    o.prepass = knob_value(s, kPrepass);
+    o.gbuffer = knob_value(s, kPrepassMode) == "gbuffer";
+    o.depth_equal = knob_value(s, kDepthCompare) == "equal";
+    o.alpha_cutoff = knob_value(s, kAlphaCutoff);
+    o.reverse_z = knob_value(s, kReverseZ);
     // The registry allows 1..8; VkSampleCountFlagBits are the powers of two themselves.
-    const int msaa = s.get_int("msaa");
+    const int msaa = knob_value(s, kMsaa);
     if (!std::has_single_bit(unsigned(msaa)))
         throw Error("setting msaa: " + std::to_string(msaa) +
                     " is not a power of two (1, 2, 4, 8)");
     o.samples = VkSampleCountFlagBits(msaa);
-    o.count_discards = s.get_bool("count_discards");
     // Both act on multisampled targets only; at 1x they would change nothing but the key.
-    o.sample_shading = s.get_bool("sample_shading") && o.msaa();
-    o.alpha_to_coverage = s.get_bool("alpha_to_coverage") && o.msaa();
-    // Both diagnostics compare against the prepass's depth and winner; the detector compares
-    // at pixel centres, which a multisampled depth (stored at sample positions) is not.
-    o.zfight = s.get_bool("zfight") && o.prepass && !o.msaa();
-    o.zfight_steps = uint32_t(s.get_int("zfight_steps"));
-    o.depth_precision = (s.get_bool("depth_precision") || o.zfight) && o.prepass;
-    o.hiz = s.get_bool("hiz") && o.prepass;  // built from the prepass's depth
-    o.surface_id =
-        (s.get_bool("surface_id") || o.zfight || o.equal_check || o.count_draws) && o.prepass;
-    o.depth_choice = depth_choice_of(s.get("depth_format"));
-    o.subpass = s.get("render_path") == "subpass" && o.prepass;
-    if (o.subpass) {
-        // Nothing may run between the subpasses, and a render pass leaves no room for the
-        // per-pass instruments (query resets, storage counters read by the next subpass).
-        o.gtao = o.contact_shadows = false;
-        o.equal_check = o.count_draws = o.count_fragments = o.count_discards = false;
-        o.zfight = o.depth_precision = o.surface_id = false;
-        o.hiz = false;  // its place is between the subpasses
-    }
-    o.znear = plane(s, "znear");
-    o.zfar = plane(s, "zfar");
+    o.sample_shading = knob_value(s, kSampleShading) && o.msaa();
+    o.alpha_to_coverage = knob_value(s, kAlphaToCoverage) && o.msaa();
+    o.depth_choice = depth_choice_of(knob_value(s, kDepthFormat));
+    // Nothing may run between the subpasses, and a render pass leaves no room for the per-pass
+    // instruments (query resets, storage counters read by the next subpass): the passes that
+    // cannot run on it say so in their configure().
+    o.subpass = knob_value(s, kRenderPath) == "subpass" && o.prepass;
+    o.znear = knob_value(s, kZnear);
+    o.zfar = knob_value(s, kZfar);
     return o;
 }
 

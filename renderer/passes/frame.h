@@ -71,7 +71,9 @@ inline constexpr const char* kSubpassGroup = "gbuffer_lighting";
 // depth_format's choices; the VkFormat each names depends on the device (resolve_depth_format).
 enum class DepthChoice : uint8_t { D32f, D24, D16 };
 
-// The settings of one frame, parsed once (names and meanings: the registry's help text).
+// The options of one frame: the frame-wide knobs (settings/frame_knobs.h), parsed once by
+// from(), then the facts that passes own and others read, set by their owner's configure()
+// or resolve() (the pass list's order; names and meanings: the registry's help text).
 struct FrameOptions {
     bool prepass = true;
     // prepass_mode=gbuffer: the prepass writes normals and roughness too (forward reads them);
@@ -82,27 +84,10 @@ struct FrameOptions {
     // two subpasses of one render pass (kSubpassGroup); the passes that need neighbours
     // (gtao, contact_shadows) or instrument a pass (counts, surface_id, zfight, ...) are off.
     bool subpass = false;
-    bool masked_split = true;
-    bool prepass_sort = true;           // prepass draws instances front to back
     std::optional<float> alpha_cutoff;  // none: each material's own
-    bool shadows = true;
-    bool gtao = true;             // effective: also needs the prepass
-    bool contact_shadows = true;  // effective: also needs the prepass
-    bool sky = true;
-    bool decal_pass = true;  // effective: decal_pass and the scene has coplanar overlays
-    bool invariant = true;
     bool reverse_z = true;
-    bool count_fragments = false;
-    bool count_discards = false;     // masked prepass: fragments run and discarded
-    bool count_draws = false;        // per draw group counts (implies count_fragments)
-    bool sample_shading = false;     // effective: also needs msaa > 1
-    bool alpha_to_coverage = false;  // effective: also needs msaa > 1
-    bool surface_id = false;         // effective: surface_id or zfight, and the prepass
-    bool zfight = false;             // effective: also needs the prepass and msaa=1
-    uint32_t zfight_steps = 4;
-    bool equal_check = false;      // effective: prepass, depth_compare=equal and msaa=1
-    bool depth_precision = false;  // depth_precision or zfight
-    bool hiz = false;              // effective: also needs the prepass
+    bool sample_shading = false;                            // effective: also needs msaa > 1
+    bool alpha_to_coverage = false;                         // effective: also needs msaa > 1
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // msaa
     DepthChoice depth_choice = DepthChoice::D32f;
     // The scene depth's format for depth_choice on this device: the registry cannot know the
@@ -110,6 +95,25 @@ struct FrameOptions {
     // before the frame begins.
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
     std::optional<float> znear, zfar;  // none: the scene camera's own
+
+    // Set by the pass that owns them (configure), read by others.
+    bool shadows = true;  // ShadowPass: the shadow map exists
+    bool gtao = true;     // GtaoPass: gtao runs (ao_spatial and ao_temporal follow it)
+    std::optional<std::string> gtao_skipped;  // GtaoPass: why not, for the passes that follow
+    bool contact_shadows = true;              // ContactShadowsPass
+    bool sky = true;                          // SkyboxPass
+    bool decal_pass = true;    // DecalsPass: decal groups are drawn by it, not by the others
+    bool count_draws = false;  // DrawCountsPass: per-draw counts and occlusion queries
+    bool zfight = false;       // ZfightPass (clear_counts creates and clears its image)
+    // What passes ask of the passes that provide it (configure), and the providers' decisions
+    // (resolve): per-pixel counts in every geometry pass (ClearCountsPass), the prepass's
+    // winning surface per pixel (DepthPrepass), the depth step per pixel (DepthPrecisionPass).
+    struct Requests {
+        bool counts = false, surface_id = false, depth_precision = false;
+    } requests;
+    bool count_fragments = false;
+    bool surface_id = false;
+    bool depth_precision = false;
 
     static FrameOptions from(const Settings& settings);
     // The depth test that keeps the nearer fragment, and the clear value for "far".
@@ -219,7 +223,6 @@ struct FrameInputs {
     FrameOptions options;
     glm::vec3 camera_position{0.0f};
     uint64_t frame_number = 0;
-    const Settings* settings = nullptr;   // the registry's values (skip reasons name knobs)
     ReadBack read_back = ReadBack::Yes;   // what the caller reads back after the fence
     std::vector<InspectRequest> inspect;  // resources to read back through the inspect pass
     std::optional<PixelQuery> pixel;      // pixel history: the geometry passes replay for it

@@ -28,9 +28,22 @@ void GtaoPass::rebuild_pipelines(vk::DestroyList& retired) {
                     {{"SLICES", std::to_string(slices_)}, {"STEPS", std::to_string(steps_)}});
 }
 
-std::optional<std::string> GtaoPass::skipped(const FrameInputs& in) const {
-    if (in.options.gtao) return std::nullopt;
-    return off_or_without_prepass(in, "gtao");
+std::vector<SettingDef> GtaoPass::knobs() {
+    return {bool_knob(kKnob, "passes", true, "ground-truth AO from prepass depth and normals",
+                      Invalidates::Nothing)};
+}
+
+// GTAO reads the prepass depth (and normals): no prepass, no effect; and nothing may run
+// between the subpasses. ao_spatial and ao_temporal follow it (FrameOptions::gtao_skipped).
+void GtaoPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    const bool knob = knob_value(setup.settings, kKnob);
+    o.gtao = knob && o.prepass && !o.subpass;
+    o.gtao_skipped.reset();
+    if (!o.gtao) {
+        o.gtao_skipped = off_or_without_prepass(knob, o, kKnob.name);
+        set_skipped(*o.gtao_skipped);
+    }
+    if (knob && o.subpass) set_turned_off(kKnob.name);
 }
 
 void GtaoPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {

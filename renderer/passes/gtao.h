@@ -12,6 +12,7 @@
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
+#include "renderer/settings/knob.h"
 
 namespace ds::passes {
 
@@ -38,7 +39,9 @@ class GtaoPass final : public FramePass {
     // Fail-safe: see ComputeKernel::rebuild.
     const char* name() const override { return "gtao"; }
     void rebuild_pipelines(vk::DestroyList& retired) override;
-    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    static constexpr Knob<bool> kKnob{"gtao"};
+    static std::vector<SettingDef> knobs();
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
 
     // Declares "gtao" when in.options.gtao: reads depth, normals (sampled) and the frame
     // uniforms; creates and writes resources.ao_raw. Otherwise adds nothing.

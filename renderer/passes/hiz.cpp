@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include <nlohmann/json.hpp>
+
 #include "renderer/common/error.h"
 #include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/readback/host_readback.h"
@@ -127,19 +129,29 @@ void HizPass::rebuild_pipelines(vk::DestroyList& retired) {
     test_pipeline_.rebuild(retired);
 }
 
-std::optional<std::string> HizPass::skipped(const FrameInputs& in) const {
-    if (in.settings && in.settings->get_bool("hiz") && !in.options.prepass)
-        return std::string("prepass off");
-    if (in.settings && in.settings->get_bool("hiz") && in.options.subpass)
-        return std::string(
-            "render_path=subpass: the depth is in tile memory until lighting has drawn");
-    return std::nullopt;
+std::vector<SettingDef> HizPass::knobs() {
+    return {bool_knob(kKnob, "diagnostics", false,
+                      "prepass on: the hiz pass builds a Hi-Z pyramid from the prepass depth "
+                      "(images hiz.0 ... hiz.N, each texel the farthest of its children; at msaa "
+                      "> 1 level 0 is the farthest sample); with count_draws each draw's screen "
+                      "bounds are tested against it (report draws[].hiz next to samples_passed)",
+                      Invalidates::Nothing)};
+}
+
+void HizPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    const bool knob = knob_value(setup.settings, kKnob);
+    on_ = knob && o.prepass && !o.subpass;  // built from the prepass's depth
+    if (knob && !o.prepass) set_skipped("prepass off");
+    if (knob && o.subpass) {
+        set_skipped("render_path=subpass: the depth is in tile memory until lighting has drawn");
+        set_turned_off(kKnob.name);
+    }
 }
 
 void HizPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
     result_.reset();
     verdicts_ = {};
-    if (!in.options.hiz) return;
+    if (!on_) return;
     if (!built_) build_kernels();  // on first use: most sessions never look at it
     const std::vector<graph::ImageHandle> levels = add_pyramid(graph, in, res);
     HizResult r;
@@ -268,7 +280,27 @@ void HizPass::collect(const FrameCollect& c, std::span<PassResult>, FrameResult&
         }
         group_verdicts(*c.in.scene, r);
     }
-    frame.hiz = std::move(r);
+    frame.slots.put(std::move(r), &hiz_report);
+}
+
+// hiz=on: the pyramid's levels and, with count_draws, the verdicts' tally and the unsafe
+// disagreements (per draw in draws[]).
+void hiz_report(const HizResult& h, const FrameResult&, nlohmann::json& report) {
+    nlohmann::json levels = nlohmann::json::array();
+    for (const auto& [w, ht] : h.levels) levels.push_back({w, ht});
+    nlohmann::json json = {{"levels", levels},
+                           {"source", h.source},
+                           {"samples", h.samples},
+                           {"farthest", h.reverse_z ? "min (reverse-Z)" : "max (forward-Z)"}};
+    if (!h.groups.empty()) {
+        nlohmann::json tally = {{"visible", 0}, {"occluded", 0}, {"outside", 0}};
+        for (HizVerdict v : h.groups)
+            tally[hiz_verdict_name(v)] = tally[hiz_verdict_name(v)].get<int>() + 1;
+        json["draws"] = tally;
+    }
+    json["unsafe_draws"] = h.unsafe ? nlohmann::json(*h.unsafe) : nullptr;
+    json["unsafe_visible_draws"] = h.unsafe_visible ? nlohmann::json(*h.unsafe_visible) : nullptr;
+    report["hiz"] = std::move(json);
 }
 
 }  // namespace ds::passes

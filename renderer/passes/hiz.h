@@ -11,8 +11,9 @@
 //
 // Graph pass "hiz_test" (count_draws=on, compute, shaders/hiz_test.comp): one invocation per
 // scene instance, its world box (GpuScene::instance_bounds) against the pyramid, verdicts into
-// a HostReadback buffer; collect() gives FrameResult::hiz (levels and per-group verdicts;
-// readback_draws puts them next to samples_passed and counts unsafe disagreements).
+// a HostReadback buffer; collect() puts a HizResult (levels and per-group verdicts; the join
+// after collection, frame/frame_joins.cpp, puts them next to samples_passed in the draws and
+// counts unsafe disagreements) and its report.json section "hiz".
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -20,13 +21,51 @@
 
 #include <vulkan/vulkan.h>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame_pass.h"
+#include "renderer/passes/hiz_verdict.h"
+#include "renderer/settings/knob.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
 
+namespace ds {
+
+// hiz_test's finding for one scene instance: the level it read, its box's nearest depth and
+// the pyramid's farthest there (both 0 where the test said nothing: behind the eye, in front
+// of the near plane, outside).
+struct HizInstance {
+    HizVerdict verdict = HizVerdict::Visible;
+    uint32_t level = 0;
+    float nearest = 0.0f, farthest = 0.0f;
+};
+
+// hiz=on (with the prepass): the pyramid's levels, level 0 first (images hiz.0 ... hiz.N);
+// with count_draws=on also the per-group verdicts and, filled by the join, the unsafe
+// disagreements: groups Hi-Z calls not visible (occluded or outside) whose samples_passed > 0.
+struct HizResult {
+    std::vector<std::pair<uint32_t, uint32_t>> levels;  // width, height
+    std::string source;                                 // "depth" | "msaa_depth"
+    uint32_t samples = 1;                               // of the source (farthest of them)
+    bool reverse_z = true;                              // farthest: min; else max
+    std::vector<HizVerdict> groups;                     // count_draws: per draw group
+    std::vector<uint32_t> occluded_instances;           // count_draws: per draw group
+    std::vector<HizInstance> instances;                 // count_draws: per scene instance
+    std::optional<uint64_t> unsafe;                     // count_draws: see above
+    // count_draws: groups Hi-Z calls not visible that won pixels in the final depth
+    // (visible_pixels > 0): wrong whatever the draw order (samples_passed counts what passed
+    // when drawn, so a layer drawn before its occluder passes samples and is still hidden).
+    std::optional<uint64_t> unsafe_visible;
+};
+
+}  // namespace ds
+
 namespace ds::passes {
+
+// Its report.json section(s), put with the result (ResultSlots).
+void hiz_report(const HizResult& result, const FrameResult& frame, nlohmann::json& report);
 
 // The pyramid's level sizes for a `base` (level 0) size: level k+1 is max(1, floor(level k / 2))
 // in each axis, down to 1x1.
@@ -46,8 +85,11 @@ class HizPass final : public FramePass {
 
     explicit HizPass(const PassServices& services);
 
+    static constexpr Knob<bool> kKnob{"hiz"};
+    static std::vector<SettingDef> knobs();
+
     const char* name() const override { return "hiz"; }
-    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
     void rebuild_pipelines(vk::DestroyList& retired) override;
     void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
@@ -74,6 +116,7 @@ class HizPass final : public FramePass {
     vk::PipelineLayout test_layout_;
     LazyComputePipeline test_pipeline_;
     // This frame's.
+    bool on_ = false;  // hiz=on, with the prepass, on the dynamic path
     std::optional<HizResult> result_;
     graph::BufferHandle verdicts_;
 };

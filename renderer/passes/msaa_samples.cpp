@@ -1,5 +1,7 @@
 #include "renderer/passes/msaa_samples.h"
 
+#include "renderer/vk/capabilities.h"
+
 #include <algorithm>
 #include <cstring>
 
@@ -41,6 +43,11 @@ LazyComputePipeline& MsaaSamplesPass::pipeline(bool multisampled, bool surface_i
 
 void MsaaSamplesPass::rebuild_pipelines(vk::DestroyList& retired) {
     for (LazyComputePipeline& p : pipelines_) p.rebuild(retired);
+}
+
+void MsaaSamplesPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    if (setup.request.samples && o.prepass && !o.subpass && setup.device.geometry_shader)
+        o.requests.surface_id = true;
 }
 
 void MsaaSamplesPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
@@ -113,7 +120,7 @@ void MsaaSamplesPass::collect(const FrameCollect& c, std::span<PassResult>, Fram
         std::memcpy(&r, bytes.data() + i * sizeof r, sizeof r);
         out.values[i] = {r.surface, r.depth, r.color};
     }
-    frame.msaa_samples = std::move(out);
+    frame.slots.put(std::move(out));
 }
 
 }  // namespace ds::passes

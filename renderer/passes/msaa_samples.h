@@ -11,12 +11,42 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/common/surface_name.h"
 #include "renderer/passes/compute_kernel.h"
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
+
+namespace ds {
+
+// The MSAA sample view (issue 15): every sample of a rectangle of the frame, as the frame left
+// it (after transparent, before any resolve): the winning surface (the prepass's per-sample
+// surface_id; 0 none), the depth and the HDR colour. At msaa=1 the one sample is the pixel.
+struct PixelSample {
+    uint32_t surface = 0;  // Renderer::describe_surface; 0 nothing (or surface_ids is false)
+    float depth = 0;       // as the depth format stores it (reverse-Z unless off)
+    std::array<float, 4> color{};
+};
+struct MsaaSamples {
+    SampleQuery rect;  // as read: clamped to the frame
+    uint32_t samples = 1;
+    bool surface_ids = false;  // false: no prepass this frame, so no surface per sample
+    // Per pixel of `rect`, row by row, `samples` consecutive.
+    std::vector<PixelSample> values;
+    bool contains(uint32_t x, uint32_t y) const {
+        return x >= rect.x && y >= rect.y && x - rect.x < rect.width && y - rect.y < rect.height;
+    }
+    // The samples of frame pixel (x, y); empty outside `rect`.
+    std::span<const PixelSample> pixel(uint32_t x, uint32_t y) const {
+        if (!contains(x, y) || values.empty()) return {};
+        const size_t i = (size_t(y - rect.y) * rect.width + (x - rect.x)) * samples;
+        return std::span(values).subspan(i, samples);
+    }
+};
+
+}  // namespace ds
 
 namespace ds::passes {
 
@@ -38,6 +68,9 @@ class MsaaSamplesPass final : public FramePass {
     explicit MsaaSamplesPass(const PassServices& services);
 
     const char* name() const override { return "msaa_samples"; }
+    // The sample view names the surface of every sample: it asks the prepass for surface ids
+    // (on the dynamic path, where the device has geometry shaders).
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
     graph::PassRole role() const override { return graph::PassRole::ReadBack; }
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
     void rebuild_pipelines(vk::DestroyList& retired) override;

@@ -237,9 +237,9 @@ ReadbackSet make_readback_set(vk::Context& context, uint32_t samplers, uint32_t 
     return r;
 }
 
-std::string off_or_without_prepass(const FrameInputs& in, const char* knob) {
-    if (!in.settings->get_bool(knob)) return std::string(knob) + "=off";
-    if (in.options.subpass) return subpass_path_reason();
+std::string off_or_without_prepass(bool on, const FrameOptions& options, const char* knob) {
+    if (!on) return std::string(knob) + "=off";
+    if (options.subpass) return subpass_path_reason();
     return "prepass off";
 }
 

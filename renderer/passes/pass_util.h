@@ -113,7 +113,7 @@ ReadbackSet make_readback_set(vk::Context& context, uint32_t samplers, uint32_t 
 // Why a pass that needs the prepass's depth and normals (gtao and its filters, contact
 // shadows) is not in the frame: "<knob>=off", or "prepass off" / the subpass path's reason
 // when the knob is on.
-std::string off_or_without_prepass(const FrameInputs& in, const char* knob);
+std::string off_or_without_prepass(bool on, const FrameOptions& options, const char* knob);
 // Why a pass is not in a render_path=subpass frame.
 std::string subpass_path_reason();
 

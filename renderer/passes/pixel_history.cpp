@@ -270,10 +270,11 @@ void PixelHistoryReplay::collect(const FrameCollect& c, std::span<const HistoryP
     if (!records.empty())  // data() may be null then: memcpy(null, …, 0) is undefined
         std::memcpy(records.data(), bytes.data() + kHistoryHeaderBytes,
                     records.size() * sizeof(HistoryRecord));
-    if (!frame.pixel_history) frame.pixel_history = PixelHistory{c.in.pixel->x, c.in.pixel->y};
-    frame.pixel_history->dropped += count - records.size();
+    PixelHistory* history = frame.slots.find<PixelHistory>();
+    if (!history) history = &frame.slots.put(PixelHistory{c.in.pixel->x, c.in.pixel->y});
+    history->dropped += count - records.size();
     for (PixelFragment& f : simulate(pass_.c_str(), records, log_, pipelines, rules))
-        frame.pixel_history->fragments.push_back(std::move(f));
+        history->fragments.push_back(std::move(f));
 }
 
 }  // namespace ds::passes

@@ -21,6 +21,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/common/surface_name.h"
 #include "renderer/graph/graph.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
@@ -31,6 +32,36 @@
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
+
+namespace ds {
+
+// pixel history (PixelQuery): one fragment that covered the pixel, as its pass's instrumented
+// replay recorded it and the host's simulation of the pass's depth test and blending judged it
+// (renderer/passes/pixel_history.h). Names come from the scene (Scene::instance_name).
+struct PixelAlphaTest {
+    float alpha = 0, cutoff = 0;
+    bool passed = true;  // false: discarded
+};
+struct PixelFragment {
+    std::string pass;      // the geometry pass ("depth_prepass", "forward", ...)
+    std::string pipeline;  // the real pipeline that drew it (PipelineReport::name)
+    uint32_t draw = 0;     // index of its draw in the pass's submission order
+    uint32_t instance = 0, primitive = 0, sample = 0;
+    float depth = 0;  // gl_FragCoord.z, as the depth format stores it
+    bool depth_passed = false;
+    float against = 0;  // the depth buffer's value when the fragment was tested
+    std::optional<PixelAlphaTest> alpha_test;  // pipelines with an alpha test only
+    bool shaded = false;  // the fragment shader ran in the real frame (early-Z: only if passed)
+    std::optional<std::array<float, 4>> color;    // the shader's HDR output (not the prepass)
+    std::optional<std::array<float, 4>> blended;  // blended passes: the colour after blending
+};
+struct PixelHistory {
+    uint32_t x = 0, y = 0;
+    std::vector<PixelFragment> fragments = {};  // submission order: pass, draw, instance, primitive
+    uint64_t dropped = 0;  // records past a replay's buffer (then fragments are incomplete)
+};
+
+}  // namespace ds
 
 namespace ds::passes {
 

@@ -68,9 +68,14 @@ vk::Pipeline ShadowPass::create(const Variant& v, const ShaderStages& s) const {
         .build(services_.context, pipeline_name(v).c_str());
 }
 
-std::optional<std::string> ShadowPass::skipped(const FrameInputs& in) const {
-    if (in.options.shadows) return std::nullopt;
-    return "shadows=off";
+std::vector<SettingDef> ShadowPass::knobs() {
+    return {bool_knob(kKnob, "passes", true, "directional-light shadow map (PCF in forward)",
+                      Invalidates::Nothing)};
+}
+
+void ShadowPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    o.shadows = knob_value(setup.settings, kKnob);
+    if (!o.shadows) set_skipped("shadows=off");
 }
 
 void ShadowPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {

@@ -17,6 +17,7 @@
 #include "renderer/passes/pipeline_use.h"
 #include "renderer/passes/rasterized_count.h"
 #include "renderer/scene/scene.h"
+#include "renderer/settings/knob.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
 
@@ -33,7 +34,9 @@ class ShadowPass final : public FramePass {
     // Fail-safe: all stages compile first; on an error the current pipelines stay.
     const char* name() const override { return kName; }
     void rebuild_pipelines(vk::DestroyList& retired) override;
-    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    static constexpr Knob<bool> kKnob{"shadows"};
+    static std::vector<SettingDef> knobs();
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
     // Creates res.shadow_map and draws into it.
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
     // Its two pipelines and their draws.

@@ -38,9 +38,14 @@ vk::Pipeline SkyboxPass::create(const Variant& v, const ShaderStages& s) const {
                              s);
 }
 
-std::optional<std::string> SkyboxPass::skipped(const FrameInputs& in) const {
-    if (in.options.sky) return std::nullopt;
-    return "sky=off";
+std::vector<SettingDef> SkyboxPass::knobs() {
+    return {bool_knob(kKnob, "passes", true, "procedural sky behind the geometry",
+                      Invalidates::Nothing)};
+}
+
+void SkyboxPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    o.sky = knob_value(setup.settings, kKnob);
+    if (!o.sky) set_skipped("sky=off");
 }
 
 void SkyboxPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {

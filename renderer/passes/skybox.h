@@ -11,6 +11,7 @@
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
+#include "renderer/settings/knob.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
 
@@ -24,7 +25,9 @@ class SkyboxPass final : public FramePass {
 
     const char* name() const override { return kName; }
     void rebuild_pipelines(vk::DestroyList& retired) override;
-    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    static constexpr Knob<bool> kKnob{"sky"};
+    static std::vector<SettingDef> knobs();
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
     // Reads res.depth (read-only attachment), draws into res.hdr. render_path=subpass: in
     // subpass 1 of kSubpassGroup, after forward (so before decals, which are not in it).
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;

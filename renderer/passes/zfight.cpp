@@ -5,6 +5,9 @@
 #include <map>
 #include <set>
 
+#include <nlohmann/json.hpp>
+
+#include "renderer/common/surface_json.h"
 #include "renderer/format/format.h"
 #include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/passes/scene_draw.h"
@@ -105,10 +108,36 @@ vk::Pipeline ZfightPass::create(const Variant& v, const ShaderStages& s) const {
         .build(services_.context, kPipelineName);
 }
 
-std::optional<std::string> ZfightPass::skipped(const FrameInputs& in) const {
-    if (in.options.zfight || !in.settings->get_bool("zfight")) return std::nullopt;
-    if (!in.options.prepass) return "prepass off";
-    return "msaa > 1: it compares at pixel centres, a multisampled depth is stored per sample";
+std::vector<SettingDef> ZfightPass::knobs() {
+    return {bool_knob(kKnob, "diagnostics", false,
+                      "Z-fight detector: re-rasterises opaque and masked geometry and counts, per "
+                      "pixel, other surfaces within zfight_steps depth steps of the stored depth "
+                      "(image zfight, report zfight)",
+                      Invalidates::Pipelines),
+            int_knob(kSteps, "diagnostics", 4, 0, 1024,
+                     "zfight: the largest gap, in representable steps of the depth format (ULPs "
+                     "of D32_SFLOAT, unorm steps of D24 / D16), that still counts as a fight",
+                     Invalidates::Nothing)};
+}
+
+// It compares against the prepass's depth and winner, at pixel centres, which a multisampled
+// depth (stored at sample positions) is not; it names surfaces (surface_id) and measures gaps
+// along the ray (depth_precision).
+void ZfightPass::configure(const FrameSetup& setup, FrameOptions& o) {
+    const bool knob = knob_value(setup.settings, kKnob);
+    steps_ = uint32_t(knob_value(setup.settings, kSteps));
+    o.zfight = knob && o.prepass && !o.msaa() && !o.subpass;
+    if (o.zfight) o.requests.surface_id = o.requests.depth_precision = true;
+    if (!knob || o.zfight) return;
+    if (!o.prepass)
+        set_skipped("prepass off");
+    else if (o.subpass)
+        set_skipped(subpass_path_reason());
+    else
+        set_skipped(
+            "msaa > 1: it compares at pixel centres, a multisampled depth is stored per "
+            "sample");
+    if (o.subpass) set_turned_off(kKnob.name);
 }
 
 void ZfightPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
@@ -121,7 +150,8 @@ void ZfightPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
         graph, "zfight_records", kPairsHeaderBytes + VkDeviceSize(capacity_) * 16,
         kPairsHeaderBytes);
     records_ = records;
-    const Bound bound{res.surface_id, res.depth, bound_.add(graph, in, res), res.zfight, records};
+    const Bound bound{res.surface_id, res.depth, bound_.add(graph, in, res, steps_), res.zfight,
+                      records};
     graph.add_pass(name(), [&](graph::PassBuilder& b) {
         b.read(res.frame_uniforms, Access::UniformRead,
                graph::Shader::Vertex | graph::Shader::Fragment);
@@ -145,8 +175,8 @@ void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bo
     writer.update(services_.context.device(), set);
 
     const VkExtent2D extent = ctx.extent(bound.depth);
-    const ZfightPush push{in.options.zfight_steps, format::depth_bits(ctx.format(bound.depth)),
-                          extent.width, capacity_};
+    const ZfightPush push{steps_, format::depth_bits(ctx.format(bound.depth)), extent.width,
+                          capacity_};
     // No colour: the fragments only count. Layers beyond the limit fail the early test.
     const VkRenderingAttachmentInfo limit =
         depth_attachment(ctx.view(bound.limit), ctx.layout(bound.limit), VK_ATTACHMENT_LOAD_OP_LOAD,
@@ -181,7 +211,7 @@ void ZfightPass::collect(const FrameCollect& c, std::span<PassResult> own, Frame
     if (kept > 0)
         std::memcpy(records.data(), bytes.data() + kPairsHeaderBytes, kept * sizeof(ZfightRecord));
     ZfightResult result = zfight_pairs(records, c.in.scene->surfaces());
-    result.steps = c.in.options.zfight_steps;
+    result.steps = steps_;
     result.dropped = appended - kept;
     const std::span<const std::byte> counts = c.readback.image_bytes(c.res.zfight);
     for (size_t i = 0; i + 4 <= counts.size(); i += 4) {
@@ -189,7 +219,19 @@ void ZfightPass::collect(const FrameCollect& c, std::span<PassResult> own, Frame
         std::memcpy(&v, counts.data() + i, 4);
         result.pixels += v != 0;
     }
-    frame.zfight = std::move(result);
+    frame.slots.put(std::move(result), &zfight_report);
+}
+
+void zfight_report(const ZfightResult& z, const FrameResult&, nlohmann::json& report) {
+    nlohmann::json pairs = nlohmann::json::array();
+    for (const ZfightPair& p : z.pairs)
+        pairs.push_back({{"a", surface_json(p.a)},
+                         {"b", surface_json(p.b)},
+                         {"pixels", p.pixels},
+                         {"min_steps", p.min_steps}});
+    nlohmann::json json = {{"steps", z.steps}, {"pixels", z.pixels}, {"pairs", pairs}};
+    if (z.dropped) json["dropped_records"] = z.dropped;
+    report["zfight"] = std::move(json);
 }
 
 }  // namespace ds::passes

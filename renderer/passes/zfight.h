@@ -14,10 +14,14 @@
 
 #include <vulkan/vulkan.h>
 
+#include <nlohmann/json_fwd.hpp>
+
+#include "renderer/common/surface_name.h"
 #include "renderer/passes/frame_pass.h"
 #include "renderer/passes/pass_util.h"
 #include "renderer/passes/pipeline_use.h"
 #include "renderer/passes/zfight_bound.h"
+#include "renderer/settings/knob.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
@@ -26,7 +30,36 @@ namespace ds {
 struct SurfaceTable;
 }
 
+namespace ds {
+
+// zfight=on: two instances whose surfaces fight, how many pixels they fight in and the
+// smallest gap seen, in representable depth steps.
+struct ZfightPair {
+    SurfaceName a, b;  // a: the one with the lower instance index (a == b: within one mesh)
+    uint64_t pixels = 0;
+    uint32_t min_steps = 0;
+};
+// One pair fighting in one pixel (the least gap seen there).
+struct ZfightHit {
+    uint32_t pixel = 0;  // y * width + x
+    uint32_t pair = 0;   // index into ZfightResult::pairs
+    uint32_t steps = 0;
+    float gap = 0;  // the same gap in scene units, along the pixel's view ray
+};
+struct ZfightResult {
+    uint32_t steps = 0;             // zfight_steps
+    uint64_t pixels = 0;            // pixels with at least one competitor
+    std::vector<ZfightPair> pairs;  // most pixels first
+    std::vector<ZfightHit> hits;    // by pixel, then pair: what the viewer highlights and reads
+    uint64_t dropped = 0;           // competitor records past the buffer (pairs undercount)
+};
+
+}  // namespace ds
+
 namespace ds::passes {
+
+// Its report.json section(s), put with the result (ResultSlots).
+void zfight_report(const ZfightResult& result, const FrameResult& frame, nlohmann::json& report);
 
 // One competitor as the shader appends it (std430 uvec4).
 struct ZfightRecord {
@@ -49,14 +82,18 @@ class ZfightPass final : public FramePass {
   public:
     explicit ZfightPass(const PassServices& services);
 
+    static constexpr Knob<bool> kKnob{"zfight"};
+    static constexpr Knob<int> kSteps{"zfight_steps"};
+    static std::vector<SettingDef> knobs();
+
     const char* name() const override { return "zfight"; }
-    std::optional<std::string> skipped(const FrameInputs& in) const override;
+    void configure(const FrameSetup& setup, FrameOptions& options) override;
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
     void rebuild_pipelines(vk::DestroyList& retired) override {
         pipelines_.rebuild(retired);
         bound_.rebuild_pipelines(retired);
     }
-    // FrameResult::zfight: the competing pixels and the pairs of surfaces, by pixels.
+    // A ZfightResult (report "zfight"): the competing pixels and the pairs of surfaces.
     void collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) override;
 
   private:
@@ -79,6 +116,7 @@ class ZfightPass final : public FramePass {
     graph::BufferHandle records_;  // this frame's, if it ran
     PipelineUses uses_;            // this frame's
     uint32_t capacity_ = 0;
+    uint32_t steps_ = 4;  // zfight_steps, this frame's
 };
 
 }  // namespace ds::passes

@@ -41,7 +41,7 @@ ZfightBound::ZfightBound(const PassServices& services)
 }
 
 graph::ImageHandle ZfightBound::add(graph::RenderGraph& graph, const FrameInputs& in,
-                                    const FrameResources& res) {
+                                    const FrameResources& res, uint32_t steps) {
     const graph::ImageHandle stored = res.depth;
     graph::ImageHandle bound;
     graph.add_pass("zfight_bound", [&](graph::PassBuilder& b) {
@@ -54,20 +54,21 @@ graph::ImageHandle ZfightBound::add(graph::RenderGraph& graph, const FrameInputs
                graph::Shader::Vertex | graph::Shader::Fragment);
         b.read(stored, graph::Access::Sampled);
         b.write(bound, graph::Access::DepthAttachment);
-        return
-            [this, in, stored, bound](graph::PassContext& ctx) { record(ctx, in, stored, bound); };
+        return [this, in, steps, stored, bound](graph::PassContext& ctx) {
+            record(ctx, in, steps, stored, bound);
+        };
     });
     return bound;
 }
 
-void ZfightBound::record(graph::PassContext& ctx, const FrameInputs& in, graph::ImageHandle stored,
-                         graph::ImageHandle bound) {
+void ZfightBound::record(graph::PassContext& ctx, const FrameInputs& in, uint32_t steps,
+                         graph::ImageHandle stored, graph::ImageHandle bound) {
     const VkDescriptorSet set = sets_.allocate(in.frame_number, set_layout_.handle());
     vk::DescriptorWriter writer;
     writer.image(0, ctx.view(stored), nearest_.handle(), ctx.layout(stored));
     writer.update(services_.context.device(), set);
     const VkDescriptorSet sets[] = {in.frame_set, set};
-    const BoundPush push{in.options.zfight_steps, format::depth_bits(in.options.depth_format)};
+    const BoundPush push{steps, format::depth_bits(in.options.depth_format)};
     draw_fullscreen_depth(ctx, bound, pipelines_.get({.depth = in.options.depth_format}),
                           layout_.handle(), sets, std::as_bytes(std::span(&push, 1)));
 }

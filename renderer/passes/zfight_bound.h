@@ -20,15 +20,15 @@ class ZfightBound {
   public:
     explicit ZfightBound(const PassServices& services);
 
-    // Adds the graph pass; returns the bound image.
+    // Adds the graph pass for a bound `steps` behind the stored depth; returns the bound image.
     graph::ImageHandle add(graph::RenderGraph& graph, const FrameInputs& in,
-                           const FrameResources& res);
+                           const FrameResources& res, uint32_t steps);
     void rebuild_pipelines(vk::DestroyList& retired) { pipelines_.rebuild(retired); }
 
   private:
     using Variant = DepthFormatVariant;
-    void record(graph::PassContext& ctx, const FrameInputs& in, graph::ImageHandle stored,
-                graph::ImageHandle bound);
+    void record(graph::PassContext& ctx, const FrameInputs& in, uint32_t steps,
+                graph::ImageHandle stored, graph::ImageHandle bound);
 
     PassServices services_;
     vk::Sampler nearest_;

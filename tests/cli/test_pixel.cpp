@@ -101,8 +101,11 @@ TEST(Pixel, FoliageCutOutIsADiscardedMaskedPrepassFragment) {
         ds::Renderer renderer(ds::RendererOptions{});
         const ds::scene::Scene scene = ds::scene::load_scene("foliage", settings);
         renderer.set_scene(scene);
-        const ds::FrameResult f = renderer.render(scene.camera, settings, kW, kH, ds::ReadBack::No,
-                                                  {"prepass_discarded"});
+        const ds::FrameResult f = renderer.render(scene.camera, settings,
+                                                  {.width = kW,
+                                                   .height = kH,
+                                                   .read_back = ds::ReadBack::No,
+                                                   .inspect = {{"prepass_discarded"}}});
         ASSERT_TRUE(f.inspected);
         for (uint32_t i = 0; i < kW * kH && !cut; ++i) {
             if (f.inspected->texels[size_t(i) * 4] > 0) {

@@ -13,6 +13,8 @@
 #include <imgui.h>
 
 #include "renderer/format/format.h"
+#include "renderer/passes/equal_check.h"
+#include "renderer/passes/zfight.h"
 #include "renderer/view/precision.h"
 #include "renderer/view/readout.h"
 #include "ui/panels/panels.h"
@@ -43,8 +45,9 @@ bool diagnostic_state(PanelIo& io, const char* knob, bool has_results) {
 
 void zfight_section(PanelIo& io) {
     const FrameResult& frame = io.inspector.frame();
-    if (!diagnostic_state(io, "zfight", frame.zfight.has_value())) return;
-    const ZfightResult& z = *frame.zfight;
+    const ZfightResult* zfight = frame.find<ZfightResult>();
+    if (!diagnostic_state(io, "zfight", zfight != nullptr)) return;
+    const ZfightResult& z = *zfight;
     ImGui::Text("%llu pixels fight, %zu pairs (gap <= %u steps)",
                 static_cast<unsigned long long>(z.pixels), z.pairs.size(), z.steps);
     if (ImGui::SmallButton("view zfight")) io.actions.push_back(SelectResource{"zfight"});
@@ -83,8 +86,9 @@ void zfight_section(PanelIo& io) {
 
 void equal_check_section(PanelIo& io) {
     const FrameResult& frame = io.inspector.frame();
-    if (!diagnostic_state(io, "equal_check", frame.equal_check.has_value())) return;
-    const EqualCheckResult& e = *frame.equal_check;
+    const EqualCheckResult* equal = frame.find<EqualCheckResult>();
+    if (!diagnostic_state(io, "equal_check", equal != nullptr)) return;
+    const EqualCheckResult& e = *equal;
     ImGui::Text("%llu holes, %llu pixels shaded more than once",
                 static_cast<unsigned long long>(e.holes),
                 static_cast<unsigned long long>(e.multiple));

@@ -13,6 +13,8 @@
 
 #include <imgui.h>
 
+#include "renderer/passes/draw_counts.h"
+#include "renderer/passes/hiz.h"
 #include "ui/panels/panels.h"
 
 namespace ds::ui {
@@ -163,14 +165,14 @@ void table(PanelIo& io, const std::vector<DrawReport>& draws) {
     ImGui::EndTable();
 }
 
-void summary(const FrameResult& f) {
+void summary(const DrawsResult& f, const HizResult* hiz) {
     size_t occluded = 0;
     for (const DrawReport& d : f.draws) occluded += d.occluded;
     ImGui::Text("%zu draws, %zu fully occluded; samples passed: %s", f.draws.size(), occluded,
-                f.draws_samples_pass.c_str());
-    if (!f.draws_visible_note.empty()) ImGui::TextDisabled("%s", f.draws_visible_note.c_str());
-    if (f.hiz && f.hiz->unsafe) {
-        const uint64_t unsafe = *f.hiz->unsafe;
+                f.samples_pass.c_str());
+    if (!f.visible_note.empty()) ImGui::TextDisabled("%s", f.visible_note.c_str());
+    if (hiz && hiz->unsafe) {
+        const uint64_t unsafe = *hiz->unsafe;
         if (unsafe)
             ImGui::TextColored(ImVec4(1.0f, 0.25f, 0.25f, 1.0f),
                                "Hi-Z: %llu unsafe (not visible, yet samples passed)",
@@ -188,20 +190,21 @@ void draws_panel(PanelIo& io, const PanelLayout& layout) {
         ImGui::End();
         return;
     }
-    const FrameResult& f = io.inspector.frame();
-    if (f.draws.empty()) {
-        if (io.inspector.settings().get("count_draws") != "on") {
+    const FrameResult& frame = io.inspector.frame();
+    const DrawsResult* draws = frame.find<DrawsResult>();
+    if (!draws || draws->draws.empty()) {
+        if (!knob_value(io.inspector.settings(), passes::DrawCountsPass::kKnob)) {
             ImGui::TextDisabled("count_draws is off");
             ImGui::SameLine();
             if (ImGui::SmallButton("turn on"))
-                io.actions.push_back(SetSetting{"count_draws", "on"});
+                io.actions.push_back(SetSetting{passes::DrawCountsPass::kKnob.name, "on"});
         } else {
             ImGui::TextDisabled("no draws counted yet");
         }
         ImGui::End();
         return;
     }
-    summary(f);
+    summary(*draws, frame.find<HizResult>());
     Inspector::PanelState& state = io.inspector.panel_state();
     ImGui::SetNextItemWidth(220);
     ImGui::InputTextWithHint("##filter", "filter mesh / material / node", state.draw_filter.data(),
@@ -210,7 +213,7 @@ void draws_panel(PanelIo& io, const PanelLayout& layout) {
         ImGui::SameLine();
         if (ImGui::SmallButton("clear selection")) io.viewer.draw = -1;
     }
-    table(io, f.draws);
+    table(io, draws->draws);
     ImGui::End();
 }
 

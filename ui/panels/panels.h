@@ -10,6 +10,7 @@
 
 #include <imgui.h>
 
+#include "renderer/passes/draw_counts.h"
 #include "ui/inspector.h"
 
 namespace ds::ui {

@@ -8,6 +8,7 @@
 
 #include <imgui.h>
 
+#include "renderer/settings/frame_knobs.h"
 #include "renderer/view/decode.h"
 #include "ui/panels/panels.h"
 
@@ -111,7 +112,7 @@ void samples_section(const Inspector& in) {
     if (list) sample_table(*list);
     const std::vector<CoverageRow> rows = in.pixel_coverage();
     if (rows.empty()) return;
-    const bool a2c = in.settings().get_bool("alpha_to_coverage");
+    const bool a2c = knob_value(in.settings(), knobs::kAlphaToCoverage);
     ImGui::SameLine();
     help_marker(
         "Per prepass triangle: 'rasterized' is its coverage before any alpha test "

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "renderer/scene/builtin/builtin.h"
+#include "renderer/settings/frame_knobs.h"
 #include "ui/panels/panels.h"
 
 namespace ds::ui {
@@ -17,8 +18,8 @@ namespace {
 void masked_cutoffs(PanelIo& io, const SceneSummary& s) {
     if (s.masked_materials.empty()) return;
     const Settings& settings = io.inspector.settings();
-    const auto overrides = settings.get_map("material_alpha_cutoff");
-    const std::string& global = settings.get("alpha_cutoff");
+    const auto overrides = knob_value(settings, knobs::kMaterialAlphaCutoff);
+    const std::optional<float> global = knob_value(settings, knobs::kAlphaCutoff);
     ImGui::TextDisabled("alpha cutoff per masked material (right-click: the material's own)");
     int id = 0;
     for (const SceneSummary::Masked& m : s.masked_materials) {
@@ -29,19 +30,17 @@ void masked_cutoffs(PanelIo& io, const SceneSummary& s) {
             continue;
         }
         const auto it = overrides.find(m.name);
-        float v = it != overrides.end()  ? it->second
-                  : global == "material" ? m.own_cutoff
-                                         : settings.get_float("alpha_cutoff");
+        float v = it != overrides.end() ? it->second : global.value_or(m.own_cutoff);
         ImGui::SetNextItemWidth(-120);
         if (ImGui::SliderFloat(m.name.c_str(), &v, 0.0f, 1.0f, "%.3f")) {
             auto changed = overrides;
             changed[m.name] = v;
-            io.actions.push_back(SetSetting{"material_alpha_cutoff", format_map(changed)});
+            io.actions.push_back(SetSetting{knobs::kMaterialAlphaCutoff.name, format_map(changed)});
         }
         if (ImGui::IsItemClicked(ImGuiMouseButton_Right) && it != overrides.end()) {
             auto changed = overrides;
             changed.erase(m.name);
-            io.actions.push_back(SetSetting{"material_alpha_cutoff", format_map(changed)});
+            io.actions.push_back(SetSetting{knobs::kMaterialAlphaCutoff.name, format_map(changed)});
         }
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("%s: own %.3f%s", m.name.c_str(), m.own_cutoff,

@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "renderer/settings/frame_knobs.h"
 #include "ui/panels/panels.h"
 
 namespace ds::ui {
@@ -90,7 +91,7 @@ void tiler_panel(PanelIo& io, const PanelLayout& layout) {
         ImGui::TextDisabled(
             "render_path=dynamic: every pass renders on its own, nothing for a tiler to merge.");
         if (ImGui::Button("render_path=subpass"))
-            io.actions.push_back(SetSetting{"render_path", "subpass"});
+            io.actions.push_back(SetSetting{knobs::kRenderPath.name, "subpass"});
         ImGui::SameLine();
         help_marker(
             "seed 002: depth prepass, forward and sky as two subpasses of one render pass; "

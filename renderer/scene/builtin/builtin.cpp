@@ -15,6 +15,7 @@ struct Entry {
     const char* name;
     const char* description;
     BuildFn build;
+    std::vector<SettingDef> (*knobs)() = nullptr;  // the scene's own knobs, if any
 };
 
 // The first entry is the default scene.
@@ -23,9 +24,9 @@ constexpr std::array<Entry, 6> kScenes = {{
      "Sponza-like courtyard: two floors of arcades, curtains, masked foliage, coplanar decals",
      build_atrium},
     {"overdraw", "overdraw_layers view-filling opaque quads at known depths, drawn back to front",
-     build_overdraw},
+     build_overdraw, overdraw_knobs},
     {"zfight", "coplanar and nearly coplanar quad pairs from 1 m to 5 km (znear 0.01, zfar 1e4)",
-     build_zfight},
+     build_zfight, zfight_knobs},
     {"foliage", "alpha-masked cards with an alpha ramp (0 to 1 across) for cutoff tuning",
      build_foliage},
     {"edges", "thin rods, wires, gratings and slanted slabs on a bright backdrop (MSAA)",
@@ -34,6 +35,16 @@ constexpr std::array<Entry, 6> kScenes = {{
      "room corner with OPAQUE, MASK and BLEND overlays lying exactly on its walls and floor",
      build_decals},
 }};
+
+// The registry's scene knobs, in list order (settings/knob.h).
+std::vector<SettingDef> scene_knobs() {
+    std::vector<SettingDef> out;
+    for (const Entry& e : kScenes)
+        if (e.knobs)
+            for (SettingDef& def : e.knobs()) out.push_back(std::move(def));
+    return out;
+}
+const KnobSource kSceneKnobs(KnobOwner::Scenes, &scene_knobs);
 
 const Entry* find(std::string_view name) {
     for (const Entry& e : kScenes) {

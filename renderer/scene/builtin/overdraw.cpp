@@ -19,10 +19,18 @@ glm::vec3 hsv_to_rgb(float h, float s, float v) {
     return v - v * s * glm::clamp(glm::min(k, 4.0f - k), 0.0f, 1.0f);
 }
 
+constexpr Knob<int> kLayers{"overdraw_layers"};
+
 }  // namespace
 
+std::vector<SettingDef> overdraw_knobs() {
+    return {int_knob(kLayers, "scene", 8, 1, 64,
+                     "overdraw scene: number of view-filling quads, drawn back to front",
+                     Invalidates::Scene)};
+}
+
 tinygltf::Model build_overdraw(const Settings& settings) {
-    const int layers = settings.get_int("overdraw_layers");
+    const int layers = knob_value(settings, kLayers);
     ModelBuilder b;
     const Geometry quad = b.add_geometry("layer_quad", make_quad({1.0f, 1.0f}));
     const float half_tan = std::tan(kOverdrawYfov * 0.5f);

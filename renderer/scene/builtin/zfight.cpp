@@ -42,10 +42,18 @@ Slot slot_at(int i, int count, float distance) {
             0.4f * std::min(cell_w * 0.5f, cell_h)};
 }
 
+constexpr Knob<int> kPairs{"zfight_pairs"};
+
 }  // namespace
 
+std::vector<SettingDef> zfight_knobs() {
+    return {int_knob(kPairs, "scene", 6, 1, 16,
+                     "zfight scene: number of coplanar / nearly coplanar quad pairs",
+                     Invalidates::Scene)};
+}
+
 tinygltf::Model build_zfight(const Settings& settings) {
-    const int pairs = settings.get_int("zfight_pairs");
+    const int pairs = knob_value(settings, kPairs);
     ModelBuilder b;
     const Geometry quad = b.add_geometry("square", make_quad({1.0f, 1.0f}));
     // A and B: the exactly coplanar pair; front and back: the nearly coplanar pair.

@@ -6,6 +6,10 @@
 #include <string>
 
 #include "renderer/capture/report.h"
+#include "renderer/passes/depth_prepass.h"
+#include "renderer/passes/draw_counts.h"
+#include "renderer/passes/hiz.h"
+#include "renderer/passes/zfight.h"
 
 namespace ds::capture {
 namespace {
@@ -146,7 +150,7 @@ TEST(Report, PassesListTheirPipelinesOnlyWhereTheyDrew) {
 TEST(Report, OptionalCountsAppearWhenMeasured) {
     FrameResult frame = two_pass_frame();
     frame.covered_pixels = 100;
-    frame.masked_discards = DiscardCounts{.invoked = 9, .discarded = 4};
+    frame.slots.put(DiscardCounts{.invoked = 9, .discarded = 4}, &passes::discards_report);
     frame.msaa.samples = 4;
     frame.msaa.depth_resolve = "shader";
     frame.msaa.edge_pixels = 7;
@@ -161,10 +165,10 @@ TEST(Report, ZfightNamesBothSurfacesOfEveryPair) {
     FrameResult frame = two_pass_frame();
     const nlohmann::json none = report_of(frame);
     EXPECT_FALSE(none.contains("zfight")) << "only with zfight=on";
-    frame.zfight = ZfightResult{};
-    frame.zfight->steps = 4;
-    frame.zfight->pixels = 12;
-    frame.zfight->pairs = {{{"quad", "red", "a"}, {"quad", "blue", "b"}, 12, 1}};
+    ZfightResult& zfight = frame.slots.put(ZfightResult{}, &passes::zfight_report);
+    zfight.steps = 4;
+    zfight.pixels = 12;
+    zfight.pairs = {{{"quad", "red", "a"}, {"quad", "blue", "b"}, 12, 1}};
     const nlohmann::json z = report_of(frame)["zfight"];
     EXPECT_EQ(z["steps"], 4);
     EXPECT_EQ(z["pixels"], 12);
@@ -204,8 +208,9 @@ TEST(Report, PassesJsonMergesWhatTheCallerMeasured) {
 // samples_passed came from and why visible pixels are missing.
 TEST(Report, DrawsListEveryGroupWithNullsWhereNotMeasured) {
     FrameResult frame = two_pass_frame();
-    frame.draws_samples_pass = "forward";
-    frame.draws_visible_note = "prepass=off: no surface_id";
+    DrawsResult& counted = frame.slots.put(DrawsResult{}, &passes::draws_report);
+    counted.samples_pass = "forward";
+    counted.visible_note = "prepass=off: no surface_id";
     DrawReport wall;
     wall.name = {"wall_mesh", "plaster", "wall"};
     wall.instances = 3;
@@ -220,7 +225,7 @@ TEST(Report, DrawsListEveryGroupWithNullsWhereNotMeasured) {
     glass.instances = 1;
     glass.alpha_mode = "blend";
     glass.shaded_fragments = {{"forward", 0}, {"transparent", 40}};
-    frame.draws = {wall, glass};
+    counted.draws = {wall, glass};
     const nlohmann::json report = report_of(frame);
     ASSERT_TRUE(report.contains("draws"));
     const nlohmann::json& draws = report["draws"];
@@ -249,9 +254,9 @@ TEST(Report, DrawsListEveryGroupWithNullsWhereNotMeasured) {
 // null (not measured), never 0; hiz off leaves both out.
 TEST(Report, HizGivesLevelsAndEachDrawsVerdictBesideSamplesPassed) {
     FrameResult frame = two_pass_frame();
-    frame.hiz.emplace();
-    frame.hiz->levels = {{5, 3}, {2, 1}, {1, 1}};
-    frame.hiz->source = "depth";
+    HizResult& hiz = frame.slots.put(HizResult{}, &passes::hiz_report);
+    hiz.levels = {{5, 3}, {2, 1}, {1, 1}};
+    hiz.source = "depth";
     const nlohmann::json pyramid_only = report_of(frame);
     EXPECT_EQ(pyramid_only["hiz"], (nlohmann::json{{"levels", {{5, 3}, {2, 1}, {1, 1}}},
                                                    {"source", "depth"},
@@ -268,10 +273,10 @@ TEST(Report, HizGivesLevelsAndEachDrawsVerdictBesideSamplesPassed) {
     front.group = 1;
     front.samples_passed = 40;
     front.hiz = HizVerdict::Visible;
-    frame.draws = {back, front};
-    frame.hiz->groups = {HizVerdict::Occluded, HizVerdict::Visible};
-    frame.hiz->unsafe = 1;
-    frame.hiz->unsafe_visible = 0;
+    frame.slots.put(DrawsResult{.draws = {back, front}}, &passes::draws_report);
+    hiz.groups = {HizVerdict::Occluded, HizVerdict::Visible};
+    hiz.unsafe = 1;
+    hiz.unsafe_visible = 0;
     const nlohmann::json report = report_of(frame);
     EXPECT_EQ(report["hiz"]["draws"],
               (nlohmann::json{{"visible", 1}, {"occluded", 1}, {"outside", 0}}));

@@ -115,7 +115,9 @@ class SceneSwitching : public SharedRenderer {
             renderer_->set_scene(scene_);
             loaded_ = scene_name;
         }
-        return renderer_->render(scene_.camera, s, width, height, read_back, inspect);
+        return renderer_->render(
+            scene_.camera, s,
+            {.width = width, .height = height, .read_back = read_back, .inspect = {inspect}});
     }
 
     scene::Scene scene_;

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/common/error.h"
+#include "renderer/passes/depth_prepass.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 #include "renderer/vk/capabilities.h"
@@ -41,8 +42,9 @@ class Alpha : public test::SharedRenderer {
     }
     static FrameResult render(const scene::Camera& camera,
                               const std::vector<std::string>& assignments) {
-        return renderer_->render(camera, test::settings_of(assignments), kAlphaWidth, kAlphaHeight,
-                                 ReadBack::Yes);
+        return renderer_->render(
+            camera, test::settings_of(assignments),
+            {.width = kAlphaWidth, .height = kAlphaHeight, .read_back = ReadBack::Yes});
     }
     // After a camera cut: temporal AO forgets the previous frame, so the image depends on
     // these settings only (images are compared across different previous frames).
@@ -156,21 +158,21 @@ TEST_F(Alpha, SampleShadingShadesPerSample) {
 // cutoff discards more of them. Without the prepass nothing is counted.
 TEST_F(Alpha, RaisingTheCutoffRaisesDiscards) {
     const FrameResult plain = render({});
-    EXPECT_FALSE(plain.masked_discards);
+    EXPECT_FALSE(plain.find<DiscardCounts>());
     std::vector<DiscardCounts> counts;
     for (const char* c : {"alpha_cutoff=0.1", "alpha_cutoff=0.5", "alpha_cutoff=0.9"}) {
         const FrameResult f = render({c, "count_discards=on"});
-        ASSERT_TRUE(f.masked_discards) << c;
+        ASSERT_TRUE(f.find<DiscardCounts>()) << c;
         std::printf("%s: invoked %llu, discarded %llu\n", c,
-                    (unsigned long long)f.masked_discards->invoked,
-                    (unsigned long long)f.masked_discards->discarded);
-        counts.push_back(*f.masked_discards);
+                    (unsigned long long)f.find<DiscardCounts>()->invoked,
+                    (unsigned long long)f.find<DiscardCounts>()->discarded);
+        counts.push_back(*f.find<DiscardCounts>());
     }
     for (size_t i = 1; i < counts.size(); ++i) {
         EXPECT_GT(counts[i].discarded, counts[i - 1].discarded);
         EXPECT_EQ(counts[i].invoked, counts[0].invoked);
     }
-    EXPECT_FALSE(render({"count_discards=on", "prepass=off"}).masked_discards);
+    EXPECT_FALSE(render({"count_discards=on", "prepass=off"}).find<DiscardCounts>());
 }
 
 // The new switches together with those that change which pipelines have the alpha test, at
@@ -183,12 +185,12 @@ TEST_F(Alpha, CombinationsAtFourSamplesAreValidationClean) {
                 SCOPED_TRACE(std::string(split) + " " + compare + " " + a2c);
                 const FrameResult f = render({"msaa=4", split, compare, a2c, "count_discards=on",
                                               "sample_shading=on", "count_fragments=on"});
-                ASSERT_TRUE(f.masked_discards);
-                EXPECT_GT(f.masked_discards->invoked, 0u);
+                ASSERT_TRUE(f.find<DiscardCounts>());
+                EXPECT_GT(f.find<DiscardCounts>()->invoked, 0u);
                 if (std::string(a2c) == "alpha_to_coverage=on")
-                    EXPECT_EQ(f.masked_discards->discarded, 0u);
+                    EXPECT_EQ(f.find<DiscardCounts>()->discarded, 0u);
                 else
-                    EXPECT_GT(f.masked_discards->discarded, 0u);
+                    EXPECT_GT(f.find<DiscardCounts>()->discarded, 0u);
                 EXPECT_EQ(renderer_->validation_message_count(), 0u);
             }
 }
@@ -207,24 +209,26 @@ TEST_F(Alpha, PerMaterialCutoffLowersCoverageAndRaisesDiscards) {
     EXPECT_EQ(*render(up, {per_material({{kLeaf, 0.9f}})}).covered_pixels, *plain.covered_pixels);
 
     const FrameResult base = render_cut({"count_discards=on"});
-    ASSERT_TRUE(base.masked_discards);
-    uint64_t previous = base.masked_discards->discarded;
+    ASSERT_TRUE(base.find<DiscardCounts>());
+    uint64_t previous = base.find<DiscardCounts>()->discarded;
     std::printf("discards: default invoked %llu, discarded %llu\n",
-                (unsigned long long)base.masked_discards->invoked, (unsigned long long)previous);
+                (unsigned long long)base.find<DiscardCounts>()->invoked,
+                (unsigned long long)previous);
     for (const char* material : {kRamp, kLeaf}) {
         const std::string knob = per_material({{material, 0.9f}});
         const FrameResult f = render_cut({knob, "count_discards=on"});
-        ASSERT_TRUE(f.masked_discards) << knob;
+        ASSERT_TRUE(f.find<DiscardCounts>()) << knob;
         std::printf("discards: %s invoked %llu, discarded %llu\n", knob.c_str(),
-                    (unsigned long long)f.masked_discards->invoked,
-                    (unsigned long long)f.masked_discards->discarded);
-        EXPECT_EQ(f.masked_discards->invoked, base.masked_discards->invoked) << knob;
-        EXPECT_GT(f.masked_discards->discarded, base.masked_discards->discarded) << knob;
+                    (unsigned long long)f.find<DiscardCounts>()->invoked,
+                    (unsigned long long)f.find<DiscardCounts>()->discarded);
+        EXPECT_EQ(f.find<DiscardCounts>()->invoked, base.find<DiscardCounts>()->invoked) << knob;
+        EXPECT_GT(f.find<DiscardCounts>()->discarded, base.find<DiscardCounts>()->discarded)
+            << knob;
     }
     // Back to the default: the material uniforms are rewritten to no override.
     const FrameResult again = render_cut({"count_discards=on"});
     EXPECT_EQ(again.rgba8, base.rgba8);
-    EXPECT_EQ(again.masked_discards->discarded, base.masked_discards->discarded);
+    EXPECT_EQ(again.find<DiscardCounts>()->discarded, base.find<DiscardCounts>()->discarded);
 }
 
 // A per-material value for every MASK material equal to the global one gives the global
@@ -239,9 +243,11 @@ TEST_F(Alpha, PerMaterialValueEqualToTheGlobalGivesTheSameImage) {
             render_cut({path, per_material({{kRamp, 0.7f}, {kLeaf, 0.7f}}), "count_discards=on"});
         EXPECT_EQ(each.rgba8, global.rgba8);
         EXPECT_EQ(each.covered_pixels, global.covered_pixels);
-        ASSERT_EQ(each.masked_discards.has_value(), global.masked_discards.has_value());
-        if (global.masked_discards) {
-            EXPECT_EQ(each.masked_discards->discarded, global.masked_discards->discarded);
+        ASSERT_EQ((each.find<DiscardCounts>() != nullptr),
+                  (global.find<DiscardCounts>() != nullptr));
+        if (global.find<DiscardCounts>()) {
+            EXPECT_EQ(each.find<DiscardCounts>()->discarded,
+                      global.find<DiscardCounts>()->discarded);
         }
         // And it changes the picture against the materials' own 0.5 at all.
         EXPECT_NE(global.rgba8, render_cut({path}).rgba8);
@@ -256,13 +262,14 @@ TEST_F(Alpha, PerMaterialValueBeatsTheGlobalOne) {
     const FrameResult spelled_out =
         render_cut({per_material({{kRamp, 0.1f}, {kLeaf, 0.9f}}), "count_discards=on"});
     const FrameResult global = render_cut({cutoff(0.9f), "count_discards=on"});
-    ASSERT_TRUE(both.masked_discards && spelled_out.masked_discards && global.masked_discards);
+    ASSERT_TRUE(both.find<DiscardCounts>() && spelled_out.find<DiscardCounts>() &&
+                global.find<DiscardCounts>());
     std::printf("discarded: alpha_cutoff=0.9 %llu; with %s=0.1 %llu\n",
-                (unsigned long long)global.masked_discards->discarded, kRamp,
-                (unsigned long long)both.masked_discards->discarded);
+                (unsigned long long)global.find<DiscardCounts>()->discarded, kRamp,
+                (unsigned long long)both.find<DiscardCounts>()->discarded);
     EXPECT_EQ(both.rgba8, spelled_out.rgba8);
-    EXPECT_EQ(both.masked_discards->discarded, spelled_out.masked_discards->discarded);
-    EXPECT_LT(both.masked_discards->discarded, global.masked_discards->discarded);
+    EXPECT_EQ(both.find<DiscardCounts>()->discarded, spelled_out.find<DiscardCounts>()->discarded);
+    EXPECT_LT(both.find<DiscardCounts>()->discarded, global.find<DiscardCounts>()->discarded);
 }
 
 // A name that is no MASK material of the scene (unknown, or an opaque one) is one clear

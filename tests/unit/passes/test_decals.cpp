@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "renderer/frame/frame_uniforms.h"
+#include "renderer/passes/equal_check.h"
+#include "renderer/passes/zfight.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/builtin/scene_facts.h"
 #include "tests/unit/passes/shared_renderer.h"
@@ -26,8 +28,11 @@ class Decals : public test::SharedScene {
 
     static FrameResult render(const std::vector<std::string>& settings,
                               const InspectRequest& inspect = {}) {
-        return renderer_->render(scene_->camera, test::settings_of(settings), kDecalsWidth,
-                                 kDecalsHeight, ReadBack::Yes, inspect);
+        return renderer_->render(scene_->camera, test::settings_of(settings),
+                                 {.width = kDecalsWidth,
+                                  .height = kDecalsHeight,
+                                  .read_back = ReadBack::Yes,
+                                  .inspect = {inspect}});
     }
     // The pixel a world point lands on (the renderer's projection; either direction).
     static glm::ivec2 pixel_of(const glm::vec3& world) {
@@ -78,14 +83,15 @@ bool is_overlay(const std::string& node) {
 
 TEST_F(Decals, WithoutTheDecalPassOverlaysFightTheirBasesAndTieUnderEqual) {
     const FrameResult f = render({"decal_pass=off", "zfight=on", "equal_check=on"});
-    ASSERT_TRUE(f.zfight);
-    ASSERT_TRUE(f.equal_check);
-    EXPECT_GT(f.equal_check->multiple, 0u);
+    ASSERT_TRUE(f.find<ZfightResult>());
+    ASSERT_TRUE(f.find<EqualCheckResult>());
+    EXPECT_GT(f.find<EqualCheckResult>()->multiple, 0u);
     for (const std::string& n : test::names(f)) EXPECT_NE(n, "decals");
     for (const facts::DecalsOverlay& o : facts::kDecalsOverlays) {
         if (o.alpha == facts::DecalsAlpha::Blend) continue;  // BLEND is never in the prepass
         const std::string base = facts::kDecalsSurfaces[o.surface].node;
-        EXPECT_TRUE(std::any_of(f.zfight->pairs.begin(), f.zfight->pairs.end(),
+        EXPECT_TRUE(std::any_of(f.find<ZfightResult>()->pairs.begin(),
+                                f.find<ZfightResult>()->pairs.end(),
                                 [&](const ZfightPair& p) {
                                     return (p.a.node == o.node && p.b.node == base) ||
                                            (p.a.node == base && p.b.node == o.node);
@@ -96,13 +102,13 @@ TEST_F(Decals, WithoutTheDecalPassOverlaysFightTheirBasesAndTieUnderEqual) {
 
 TEST_F(Decals, TheDecalPassLeavesNoFightAndNoTie) {
     const FrameResult f = render({"zfight=on", "equal_check=on"});
-    ASSERT_TRUE(f.zfight);
-    ASSERT_TRUE(f.equal_check);
-    EXPECT_EQ(f.zfight->pixels, 0u);
-    for (const ZfightPair& p : f.zfight->pairs)
+    ASSERT_TRUE(f.find<ZfightResult>());
+    ASSERT_TRUE(f.find<EqualCheckResult>());
+    EXPECT_EQ(f.find<ZfightResult>()->pixels, 0u);
+    for (const ZfightPair& p : f.find<ZfightResult>()->pairs)
         EXPECT_FALSE(is_overlay(p.a.node) || is_overlay(p.b.node)) << p.a.node << " " << p.b.node;
-    EXPECT_EQ(f.equal_check->multiple, 0u);
-    EXPECT_EQ(f.equal_check->holes, 0u);
+    EXPECT_EQ(f.find<EqualCheckResult>()->multiple, 0u);
+    EXPECT_EQ(f.find<EqualCheckResult>()->holes, 0u);
     const std::vector<std::string> n = test::names(f);
     const auto forward = std::find(n.begin(), n.end(), "forward");
     const auto decals = std::find(n.begin(), n.end(), "decals");

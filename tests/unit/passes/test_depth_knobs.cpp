@@ -110,8 +110,9 @@ class DepthKnobs : public test::SharedScene {
     static void SetUpTestSuite() { set_up_with("atrium"); }
     static FrameResult render(const std::vector<std::string>& assignments,
                               const InspectRequest& inspect = {}) {
-        return renderer_->render(scene_->camera, test::settings_of(assignments), kWidth, kHeight,
-                                 ReadBack::Yes, inspect);
+        return renderer_->render(
+            scene_->camera, test::settings_of(assignments),
+            {.width = kWidth, .height = kHeight, .read_back = ReadBack::Yes, .inspect = {inspect}});
     }
     // The format the device gives `name`; none when it has none (the combination is skipped).
     static std::optional<VkFormat> device_format(const std::string& name) {

@@ -23,9 +23,11 @@ class DepthPrecision : public test::SharedScene {
     static void SetUpTestSuite() { set_up_with("overdraw"); }
     // The texel at the centre of `resource` (its four floats) and the frame's planes.
     static InspectedImage centre(const std::vector<std::string>& settings, const char* resource) {
-        FrameResult f =
-            renderer_->render(scene_->camera, test::settings_of(settings), kPrecisionWidth,
-                              kPrecisionHeight, ReadBack::No, {resource, 0});
+        FrameResult f = renderer_->render(scene_->camera, test::settings_of(settings),
+                                          {.width = kPrecisionWidth,
+                                           .height = kPrecisionHeight,
+                                           .read_back = ReadBack::No,
+                                           .inspect = {{resource, 0}}});
         EXPECT_TRUE(f.inspected) << resource;
         return f.inspected ? *f.inspected : InspectedImage{};
     }
@@ -67,8 +69,9 @@ TEST_F(DepthPrecision, MatchesTheAnalyticStepAtTheFrontLayer) {
 }
 
 TEST_F(DepthPrecision, OffAddsNothing) {
-    const FrameResult f = renderer_->render(scene_->camera, test::settings_of({}), kPrecisionWidth,
-                                            kPrecisionHeight, ReadBack::No);
+    const FrameResult f = renderer_->render(
+        scene_->camera, test::settings_of({}),
+        {.width = kPrecisionWidth, .height = kPrecisionHeight, .read_back = ReadBack::No});
     for (const ResourceSummary& r : f.resources) EXPECT_NE(r.name, "depth_precision");
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "renderer/capture/report.h"
+#include "renderer/passes/draw_counts.h"
 #include "renderer/renderer.h"
 #include "tests/unit/passes/shared_renderer.h"
 
@@ -35,7 +36,8 @@ class DrawCounts : public test::SceneSwitching {
     // The overdraw scene's layers by k (layer_0 the nearest), from their mesh names.
     static std::map<int, const DrawReport*> layers(const FrameResult& f) {
         std::map<int, const DrawReport*> out;
-        for (const DrawReport& d : f.draws) out[std::stoi(d.name.mesh.substr(6))] = &d;
+        for (const DrawReport& d : passes::draws_of(f).draws)
+            out[std::stoi(d.name.mesh.substr(6))] = &d;
         EXPECT_EQ(out.size(), size_t(kLayers));
         return out;
     }
@@ -47,9 +49,9 @@ class DrawCounts : public test::SceneSwitching {
 // passes every pixel. Without the prepass forward's queries see the authored order too.
 TEST_F(DrawCounts, OverdrawLayersPassAsTheirDrawOrderImplies) {
     const FrameResult sorted = render("overdraw", {"count_draws=on"});
-    ASSERT_EQ(sorted.draws.size(), size_t(kLayers));
-    EXPECT_EQ(sorted.draws_samples_pass, "depth_prepass");
-    EXPECT_EQ(sorted.draws_visible_note, "");
+    ASSERT_EQ(passes::draws_of(sorted).draws.size(), size_t(kLayers));
+    EXPECT_EQ(passes::draws_of(sorted).samples_pass, "depth_prepass");
+    EXPECT_EQ(passes::draws_of(sorted).visible_note, "");
     for (const auto& [k, d] : layers(sorted)) {
         const uint64_t front = k == 0 ? kDrawsPixels : 0;
         EXPECT_EQ(d->visible_pixels, front) << k;
@@ -75,9 +77,9 @@ TEST_F(DrawCounts, OverdrawLayersPassAsTheirDrawOrderImplies) {
         EXPECT_EQ(d->occluded, k != 0) << k;
     }
     const FrameResult off = render("overdraw", {"count_draws=on", "prepass=off"});
-    EXPECT_EQ(off.draws_samples_pass, "forward");
-    EXPECT_NE(off.draws_visible_note, "");
-    EXPECT_TRUE(off.draw_pixels.empty());
+    EXPECT_EQ(passes::draws_of(off).samples_pass, "forward");
+    EXPECT_NE(passes::draws_of(off).visible_note, "");
+    EXPECT_TRUE(passes::draws_of(off).draw_pixels.empty());
     for (const auto& [k, d] : layers(off)) {
         EXPECT_EQ(d->visible_pixels, std::nullopt) << k;
         EXPECT_EQ(d->samples_passed, kDrawsPixels) << k;
@@ -93,11 +95,11 @@ TEST_F(DrawCounts, OverdrawLayersPassAsTheirDrawOrderImplies) {
 // have neither.
 TEST_F(DrawCounts, AtriumDrawsAddUpToThePassesAndTheCoverage) {
     const FrameResult f = render("atrium", {"count_draws=on"});
-    ASSERT_FALSE(f.draws.empty());
+    ASSERT_FALSE(passes::draws_of(f).draws.empty());
     ASSERT_TRUE(f.covered_pixels);
     uint64_t visible = 0, occluded = 0;
     std::map<std::string, uint64_t> per_pass;
-    for (const DrawReport& d : f.draws) {
+    for (const DrawReport& d : passes::draws_of(f).draws) {
         visible += d.visible_pixels.value_or(0);
         occluded += d.occluded;
         for (const auto& [pass, n] : d.shaded_fragments) per_pass[pass] += n;
@@ -117,10 +119,10 @@ TEST_F(DrawCounts, AtriumDrawsAddUpToThePassesAndTheCoverage) {
         EXPECT_EQ(per_pass[p.name], *p.shaded_fragments) << p.name;
     }
     // The pixel map agrees with the histogram.
-    ASSERT_EQ(f.draw_pixels.size(), kDrawsPixels);
-    std::vector<uint64_t> from_map(f.draws.size() + 1, 0);
-    for (uint32_t g : f.draw_pixels) ++from_map.at(g);
-    for (const DrawReport& d : f.draws) {
+    ASSERT_EQ(passes::draws_of(f).draw_pixels.size(), kDrawsPixels);
+    std::vector<uint64_t> from_map(passes::draws_of(f).draws.size() + 1, 0);
+    for (uint32_t g : passes::draws_of(f).draw_pixels) ++from_map.at(g);
+    for (const DrawReport& d : passes::draws_of(f).draws) {
         if (d.visible_pixels) {
             EXPECT_EQ(from_map[d.group + 1], *d.visible_pixels);
         }
@@ -131,8 +133,8 @@ TEST_F(DrawCounts, AtriumDrawsAddUpToThePassesAndTheCoverage) {
 TEST_F(DrawCounts, OffAddsNothingAndOnLeavesTheImageAlone) {
     const FrameResult off = render("atrium", {}, ReadBack::Yes);
     const FrameResult on = render("atrium", {"count_draws=on"}, ReadBack::Yes);
-    EXPECT_TRUE(off.draws.empty());
-    EXPECT_TRUE(off.draw_pixels.empty());
+    EXPECT_TRUE(passes::draws_of(off).draws.empty());
+    EXPECT_TRUE(passes::draws_of(off).draw_pixels.empty());
     for (const PassResult& p : off.passes) {
         EXPECT_NE(p.name, "readback_draws");
         EXPECT_TRUE(p.draw_shaded.empty()) << p.name;
@@ -147,7 +149,7 @@ TEST_F(DrawCounts, OffAddsNothingAndOnLeavesTheImageAlone) {
 // and the counts still add up per pass.
 TEST_F(DrawCounts, MultisampledFramesCountSamplesAndSaySo) {
     const FrameResult f = render("overdraw", {"count_draws=on", "msaa=4"});
-    EXPECT_NE(f.draws_visible_note, "");
+    EXPECT_NE(passes::draws_of(f).visible_note, "");
     for (const auto& [k, d] : layers(f))
         EXPECT_EQ(d->samples_passed, k == 0 ? 4 * kDrawsPixels : 0);
 }

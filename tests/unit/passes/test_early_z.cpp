@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "renderer/passes/draw_counts.h"
 #include "renderer/renderer.h"
 #include "renderer/vk/capabilities.h"
 #include "tests/unit/passes/shared_renderer.h"
@@ -24,8 +25,9 @@ class EarlyZ : public test::SharedScene {
     static void SetUpTestSuite() { set_up_with("atrium"); }
 
     static FrameResult render(const std::vector<std::string>& assignments) {
-        return renderer_->render(scene_->camera, test::settings_of(assignments), kEarlyZWidth,
-                                 kEarlyZHeight, ReadBack::No);
+        return renderer_->render(
+            scene_->camera, test::settings_of(assignments),
+            {.width = kEarlyZWidth, .height = kEarlyZHeight, .read_back = ReadBack::No});
     }
     static bool has_msaa4() {
         const vk::DeviceReport& r = renderer_->device_report();

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/passes/depth_prepass.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 #include "renderer/vk/capabilities.h"
@@ -63,13 +64,13 @@ TEST_F(FragmentCounts, OverdrawLayersAreShadedAsTheirDepthOrderImplies) {
 TEST_F(FragmentCounts, PrepassDiscardsAgreeWithCountDiscards) {
     for (const char* split : {"masked_split=on", "masked_split=off"}) {
         const FrameResult f = render("foliage", {"count_fragments=on", "count_discards=on", split});
-        ASSERT_TRUE(f.masked_discards) << split;
+        ASSERT_TRUE(f.find<DiscardCounts>()) << split;
         const PassResult& prepass = pass(f, "depth_prepass");
         ASSERT_TRUE(prepass.discarded_fragments) << split;
         EXPECT_GT(*prepass.discarded_fragments, 0u) << split;
-        EXPECT_EQ(*prepass.discarded_fragments, f.masked_discards->discarded) << split;
+        EXPECT_EQ(*prepass.discarded_fragments, f.find<DiscardCounts>()->discarded) << split;
         // Every fragment that ran counts as shaded, the discarded ones too.
-        EXPECT_GE(*prepass.shaded_fragments, f.masked_discards->invoked) << split;
+        EXPECT_GE(*prepass.shaded_fragments, f.find<DiscardCounts>()->invoked) << split;
         // Forward under EQUAL has no discard: the prepass already cut the alpha.
         EXPECT_EQ(pass(f, "forward").discarded_fragments, 0u) << split;
     }

@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "renderer/capture/report.h"
+#include "renderer/passes/draw_counts.h"
+#include "renderer/passes/hiz.h"
 #include "renderer/renderer.h"
 #include "tests/unit/passes/shared_renderer.h"
 
@@ -70,7 +72,8 @@ class Hiz : public test::SceneSwitching {
         std::vector<InspectRequest> asks;
         for (uint32_t k = 0; k < 16; ++k) asks.push_back({"hiz." + std::to_string(k)});
         if (with_depth) asks.insert(asks.begin(), InspectRequest{"depth"});
-        return renderer_->render(scene_.camera, s, w, h, read_back, asks);
+        return renderer_->render(
+            scene_.camera, s, {.width = w, .height = h, .read_back = read_back, .inspect = asks});
     }
     static const InspectedImage* image(const FrameResult& f, const std::string& name) {
         if (f.inspected && f.inspected->name == name) return &*f.inspected;
@@ -81,11 +84,11 @@ class Hiz : public test::SceneSwitching {
     // Every level k+1 is the CPU reduction of level k (read back), exactly; returns the levels.
     static std::vector<Level> check_levels(const FrameResult& f, bool reverse_z) {
         std::vector<Level> levels;
-        EXPECT_TRUE(f.hiz.has_value());
-        if (!f.hiz) return levels;
+        EXPECT_TRUE((f.find<HizResult>() != nullptr));
+        if (!f.find<HizResult>()) return levels;
         uint32_t w = f.width, h = f.height;
-        for (size_t k = 0; k < f.hiz->levels.size(); ++k) {
-            EXPECT_EQ(f.hiz->levels[k], (std::pair<uint32_t, uint32_t>{w, h})) << k;
+        for (size_t k = 0; k < f.find<HizResult>()->levels.size(); ++k) {
+            EXPECT_EQ(f.find<HizResult>()->levels[k], (std::pair<uint32_t, uint32_t>{w, h})) << k;
             const InspectedImage* img = image(f, "hiz." + std::to_string(k));
             if (!img) {
                 ADD_FAILURE() << "hiz." << k << " not read back";
@@ -105,8 +108,8 @@ class Hiz : public test::SceneSwitching {
             w = std::max(w / 2, 1u);
             h = std::max(h / 2, 1u);
         }
-        EXPECT_EQ(f.hiz->levels.back(), (std::pair<uint32_t, uint32_t>{1, 1}));
-        EXPECT_EQ(image(f, "hiz." + std::to_string(f.hiz->levels.size())), nullptr);
+        EXPECT_EQ(f.find<HizResult>()->levels.back(), (std::pair<uint32_t, uint32_t>{1, 1}));
+        EXPECT_EQ(image(f, "hiz." + std::to_string(f.find<HizResult>()->levels.size())), nullptr);
         return levels;
     }
 };
@@ -126,7 +129,7 @@ TEST_F(Hiz, EveryLevelIsTheFarthestOfItsChildren) {
             const InspectedImage* depth = image(f, "depth");
             ASSERT_NE(depth, nullptr);
             EXPECT_EQ(levels[0].d, level_of(*depth).d);
-            EXPECT_EQ(f.hiz->source, "depth");
+            EXPECT_EQ(f.find<HizResult>()->source, "depth");
             // Not a flat image: sky (far) and geometry both reach level 0, and the 1x1 level
             // holds the far value (some sky is in view).
             const float far = reverse_z ? 0.0f : 1.0f;
@@ -148,8 +151,8 @@ TEST_F(Hiz, MultisampledLevelZeroIsTheFarthestSample) {
             render_levels("edges", {rz, "msaa=4"}, 67, 45, ReadBack::WithMsaaDepth, false);
         const std::vector<Level> levels = check_levels(f, reverse_z);
         ASSERT_FALSE(levels.empty());
-        EXPECT_EQ(f.hiz->source, "msaa_depth");
-        EXPECT_EQ(f.hiz->samples, 4u);
+        EXPECT_EQ(f.find<HizResult>()->source, "msaa_depth");
+        EXPECT_EQ(f.find<HizResult>()->samples, 4u);
         const std::vector<float>& samples = f.msaa.depth_samples;
         ASSERT_EQ(samples.size(), size_t(67) * 45 * 4);
         size_t wrong = 0, differs_from_nearest = 0;
@@ -173,7 +176,8 @@ constexpr uint64_t kDrawsPixels = uint64_t(kDrawsW) * kDrawsH;
 // The overdraw scene's layers by k (layer_0 the nearest), from their mesh names.
 std::map<int, const DrawReport*> overdraw_layers(const FrameResult& f) {
     std::map<int, const DrawReport*> out;
-    for (const DrawReport& d : f.draws) out[std::stoi(d.name.mesh.substr(6))] = &d;
+    for (const DrawReport& d : passes::draws_of(f).draws)
+        out[std::stoi(d.name.mesh.substr(6))] = &d;
     return out;
 }
 
@@ -188,7 +192,7 @@ TEST_F(Hiz, OverdrawBackLayersAreOccludedAndPassNoSamples) {
         const std::string rz = reverse_z ? "reverse_z=on" : "reverse_z=off";
         const FrameResult f =
             render("overdraw", {"count_draws=on", "hiz=on", rz}, kDrawsW, kDrawsH, ReadBack::No);
-        ASSERT_TRUE(f.hiz.has_value());
+        ASSERT_TRUE((f.find<HizResult>() != nullptr));
         const std::map<int, const DrawReport*> layers = overdraw_layers(f);
         ASSERT_EQ(layers.size(), 8u);
         for (const auto& [k, d] : layers) {
@@ -198,17 +202,20 @@ TEST_F(Hiz, OverdrawBackLayersAreOccludedAndPassNoSamples) {
             EXPECT_EQ(d->samples_passed, k == 0 ? kDrawsPixels : 0u) << k;
             EXPECT_FALSE(d->hiz_unsafe) << k;
         }
-        EXPECT_EQ(f.hiz->unsafe, 0u);
-        EXPECT_EQ(f.hiz->unsafe_visible, 0u);
+        EXPECT_EQ(f.find<HizResult>()->unsafe, 0u);
+        EXPECT_EQ(f.find<HizResult>()->unsafe_visible, 0u);
         // Each occluded layer covers the whole view: tested at the first level at most 2x2
         // texels (2x1 for 320x180), against the front layer's depth.
-        ASSERT_EQ(f.hiz->instances.size(), 8u);
+        ASSERT_EQ(f.find<HizResult>()->instances.size(), 8u);
         const float front =
-            layers.at(0)->hiz ? f.hiz->instances[layers.at(0)->first_instance].nearest : 0.0f;
+            layers.at(0)->hiz ? f.find<HizResult>()->instances[layers.at(0)->first_instance].nearest
+                              : 0.0f;
         for (const auto& [k, d] : layers) {
-            const HizInstance& i = f.hiz->instances[d->first_instance];
+            const HizInstance& i = f.find<HizResult>()->instances[d->first_instance];
             if (k == 0) continue;
-            EXPECT_EQ(f.hiz->levels.at(i.level), (std::pair<uint32_t, uint32_t>{2, 1})) << k;
+            EXPECT_EQ(f.find<HizResult>()->levels.at(i.level),
+                      (std::pair<uint32_t, uint32_t>{2, 1}))
+                << k;
             EXPECT_TRUE(reverse_z ? i.nearest < i.farthest : i.nearest > i.farthest) << k;
             EXPECT_NEAR(i.farthest, front, 1e-5f) << k;
         }
@@ -216,15 +223,15 @@ TEST_F(Hiz, OverdrawBackLayersAreOccludedAndPassNoSamples) {
     const FrameResult authored =
         render("overdraw", {"count_draws=on", "hiz=on", "prepass_sort=off"}, kDrawsW, kDrawsH,
                ReadBack::No);
-    ASSERT_TRUE(authored.hiz.has_value());
+    ASSERT_TRUE((authored.find<HizResult>() != nullptr));
     for (const auto& [k, d] : overdraw_layers(authored)) {
         EXPECT_EQ(d->hiz, k == 0 ? HizVerdict::Visible : HizVerdict::Occluded) << k;
         EXPECT_EQ(d->samples_passed, kDrawsPixels) << k;
         EXPECT_EQ(d->hiz_unsafe, k != 0) << k;
         EXPECT_EQ(d->visible_pixels, k == 0 ? kDrawsPixels : 0u) << k;
     }
-    EXPECT_EQ(authored.hiz->unsafe, 7u);
-    EXPECT_EQ(authored.hiz->unsafe_visible, 0u);
+    EXPECT_EQ(authored.find<HizResult>()->unsafe, 7u);
+    EXPECT_EQ(authored.find<HizResult>()->unsafe_visible, 0u);
 }
 
 // Every built-in scene, sorted prepass, both directions and msaa 4: no draw that Hi-Z calls
@@ -237,11 +244,11 @@ TEST_F(Hiz, NoDrawIsHiddenByHizAndSeenByItsQueries) {
             settings.insert(settings.end(), variant.begin(), variant.end());
             SCOPED_TRACE(std::string(scene) + " " + (variant.empty() ? "" : variant[0]));
             const FrameResult f = render(scene, settings, 297, 210, ReadBack::No);
-            ASSERT_TRUE(f.hiz.has_value());
-            ASSERT_FALSE(f.draws.empty());
-            EXPECT_EQ(f.hiz->unsafe, 0u);
-            EXPECT_EQ(f.hiz->unsafe_visible, 0u);
-            for (const DrawReport& d : f.draws) {
+            ASSERT_TRUE((f.find<HizResult>() != nullptr));
+            ASSERT_FALSE(passes::draws_of(f).draws.empty());
+            EXPECT_EQ(f.find<HizResult>()->unsafe, 0u);
+            EXPECT_EQ(f.find<HizResult>()->unsafe_visible, 0u);
+            for (const DrawReport& d : passes::draws_of(f).draws) {
                 ASSERT_TRUE(d.hiz.has_value()) << d.name.mesh;
                 if (*d.hiz != HizVerdict::Visible) {
                     EXPECT_EQ(d.samples_passed.value_or(0), 0u) << d.name.mesh;
@@ -257,19 +264,19 @@ TEST_F(Hiz, NoDrawIsHiddenByHizAndSeenByItsQueries) {
 TEST_F(Hiz, ReportCarriesTheVerdictsNextToSamplesPassed) {
     const Settings s = test::settings_of({"count_draws=on", "hiz=on"});
     const FrameResult f = render("atrium", {"count_draws=on", "hiz=on"}, 640, 360, ReadBack::Yes);
-    ASSERT_TRUE(f.hiz.has_value());
+    ASSERT_TRUE((f.find<HizResult>() != nullptr));
     size_t occluded = 0;
-    for (const DrawReport& d : f.draws) occluded += d.hiz == HizVerdict::Occluded;
+    for (const DrawReport& d : passes::draws_of(f).draws) occluded += d.hiz == HizVerdict::Occluded;
     EXPECT_GT(occluded, 0u);
     const nlohmann::json r =
         capture::frame_report({.device = {}, .scene = scene_, .settings = s, .frame = f});
     ASSERT_TRUE(r.contains("hiz"));
-    EXPECT_EQ(r["hiz"]["levels"].size(), f.hiz->levels.size());
+    EXPECT_EQ(r["hiz"]["levels"].size(), f.find<HizResult>()->levels.size());
     EXPECT_EQ(r["hiz"]["unsafe_draws"], 0);
     EXPECT_EQ(r["hiz"]["draws"]["occluded"], occluded);
-    for (size_t i = 0; i < f.draws.size(); ++i) {
+    for (size_t i = 0; i < passes::draws_of(f).draws.size(); ++i) {
         const nlohmann::json& d = r["draws"][i];
-        EXPECT_EQ(d["hiz"], hiz_verdict_name(*f.draws[i].hiz));
+        EXPECT_EQ(d["hiz"], hiz_verdict_name(*passes::draws_of(f).draws[i].hiz));
         EXPECT_TRUE(d.contains("samples_passed"));
         EXPECT_EQ(d["hiz_unsafe"], false);
     }
@@ -280,10 +287,10 @@ TEST_F(Hiz, ReportCarriesTheVerdictsNextToSamplesPassed) {
 TEST_F(Hiz, OffAddsNothingAndOnLeavesTheImageAlone) {
     const FrameResult off = render("atrium", {"count_draws=on"}, 160, 90, ReadBack::Yes);
     const FrameResult on = render("atrium", {"count_draws=on", "hiz=on"}, 160, 90, ReadBack::Yes);
-    EXPECT_FALSE(off.hiz.has_value());
+    EXPECT_FALSE((off.find<HizResult>() != nullptr));
     for (const PassResult& p : off.passes) EXPECT_NE(p.name.rfind("hiz", 0), 0u) << p.name;
     for (const ResourceSummary& r : off.resources) EXPECT_NE(r.name.rfind("hiz.", 0), 0u);
-    for (const DrawReport& d : off.draws) EXPECT_FALSE(d.hiz.has_value());
+    for (const DrawReport& d : passes::draws_of(off).draws) EXPECT_FALSE(d.hiz.has_value());
     EXPECT_EQ(off.rgba8, on.rgba8);
     std::vector<std::string> on_passes;
     for (const PassResult& p : on.passes)
@@ -291,7 +298,7 @@ TEST_F(Hiz, OffAddsNothingAndOnLeavesTheImageAlone) {
     EXPECT_EQ(on_passes, (std::vector<std::string>{"hiz", "hiz_test"}));
     const FrameResult no_prepass =
         render("atrium", {"hiz=on", "prepass=off"}, 160, 90, ReadBack::No);
-    EXPECT_FALSE(no_prepass.hiz.has_value());
+    EXPECT_FALSE((no_prepass.find<HizResult>() != nullptr));
     EXPECT_NE(std::find(no_prepass.skipped.begin(), no_prepass.skipped.end(),
                         "hiz: skipped (prepass off)"),
               no_prepass.skipped.end());

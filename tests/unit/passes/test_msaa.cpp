@@ -50,7 +50,8 @@ class Msaa : public test::SharedRenderer {
             renderer_->set_scene(scene);
             current_ = &scene;
         }
-        return renderer_->render(scene.camera, s, w, h, read_back);
+        return renderer_->render(scene.camera, s,
+                                 {.width = w, .height = h, .read_back = read_back});
     }
     // What the report must say about the depth resolve on this device.
     static std::string expected_resolve(bool reverse_z) {

@@ -33,8 +33,9 @@ class MsaaCounts : public test::SharedScene {
         return (renderer_->device_report().depth_resolve_modes & mode) != 0;
     }
     static FrameResult render(const std::vector<std::string>& assignments, ReadBack read_back) {
-        return renderer_->render(scene_->camera, test::settings_of(assignments), kMsaaCountsWidth,
-                                 kMsaaCountsHeight, read_back);
+        return renderer_->render(
+            scene_->camera, test::settings_of(assignments),
+            {.width = kMsaaCountsWidth, .height = kMsaaCountsHeight, .read_back = read_back});
     }
 
     // Renders edges at `samples` with every depth sample read back: the report's fields, the

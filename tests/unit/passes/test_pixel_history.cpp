@@ -34,7 +34,12 @@ class PixelHistoryTest : public test::SceneSwitching {
             renderer_->set_scene(scene_);
             loaded_ = scene;
         }
-        return renderer_->render(scene_.camera, s, kWidth, kHeight, ReadBack::Yes, {inspect}, at);
+        return renderer_->render(scene_.camera, s,
+                                 {.width = kWidth,
+                                  .height = kHeight,
+                                  .read_back = ReadBack::Yes,
+                                  .inspect = {{inspect}},
+                                  .pixel = at});
     }
     // The HDR image's texel holds `written` as a half float: within one half step (the
     // conversion may round either way).
@@ -43,7 +48,7 @@ class PixelHistoryTest : public test::SceneSwitching {
     }
     static std::vector<PixelFragment> of_pass(const FrameResult& f, const std::string& pass) {
         std::vector<PixelFragment> out;
-        for (const PixelFragment& p : f.pixel_history->fragments)
+        for (const PixelFragment& p : f.find<PixelHistory>()->fragments)
             if (p.pass == pass) out.push_back(p);
         return out;
     }
@@ -66,12 +71,12 @@ constexpr PixelQuery kCentre{kWidth / 2 + 3, kHeight / 2 - 7};
 // the last, so all N pass; the last, the front layer, is the HDR image's colour.
 TEST_F(PixelHistoryTest, OverdrawWithoutPrepassListsEveryLayerInAuthoredOrder) {
     const FrameResult f = history("overdraw", {"prepass=off"}, kCentre, "hdr");
-    ASSERT_TRUE(f.pixel_history);
-    EXPECT_EQ(f.pixel_history->x, kCentre.x);
-    EXPECT_EQ(f.pixel_history->dropped, 0u);
+    ASSERT_TRUE(f.find<PixelHistory>());
+    EXPECT_EQ(f.find<PixelHistory>()->x, kCentre.x);
+    EXPECT_EQ(f.find<PixelHistory>()->dropped, 0u);
     const std::vector<PixelFragment> forward = of_pass(f, "forward");
     ASSERT_EQ(forward.size(), size_t(kLayers));
-    EXPECT_EQ(f.pixel_history->fragments.size(), size_t(kLayers));  // nothing else covers it
+    EXPECT_EQ(f.find<PixelHistory>()->fragments.size(), size_t(kLayers));  // nothing else covers it
     for (int i = 0; i < kLayers; ++i) {
         const PixelFragment& p = forward[size_t(i)];
         const int layer = kLayers - 1 - i;
@@ -95,7 +100,7 @@ TEST_F(PixelHistoryTest, OverdrawWithoutPrepassListsEveryLayerInAuthoredOrder) {
 // front one passes (and, early-Z, is the only one shaded).
 TEST_F(PixelHistoryTest, OverdrawWithPrepassPassesTheFrontLayerOnce) {
     const FrameResult f = history("overdraw", {"prepass=on", "prepass_sort=on"}, kCentre, "hdr");
-    ASSERT_TRUE(f.pixel_history);
+    ASSERT_TRUE(f.find<PixelHistory>());
     const std::vector<PixelFragment> prepass = of_pass(f, "depth_prepass");
     ASSERT_EQ(prepass.size(), size_t(kLayers));
     for (int i = 0; i < kLayers; ++i) {
@@ -154,7 +159,7 @@ TEST_F(PixelHistoryTest, AtriumDecalBlendingEndsAtTheHdrColour) {
     ASSERT_TRUE(decal) << "atrium has blended overlays in view";
     const FrameResult f = history("atrium", settings, *decal, "hdr");
     const PixelFragment* last = nullptr;
-    for (const PixelFragment& p : f.pixel_history->fragments) {
+    for (const PixelFragment& p : f.find<PixelHistory>()->fragments) {
         if (p.pass != "decals" || !p.depth_passed) continue;
         ASSERT_TRUE(p.color);
         EXPECT_EQ(p.pipeline.rfind("decals blend", 0), 0u) << p.pipeline;
@@ -170,8 +175,9 @@ TEST_F(PixelHistoryTest, AtriumDecalBlendingEndsAtTheHdrColour) {
 TEST_F(PixelHistoryTest, OffAddsNothing) {
     const FrameResult queried = history("overdraw", {}, kCentre);
     const Settings s;
-    const FrameResult off = renderer_->render(scene_.camera, s, kWidth, kHeight);
-    EXPECT_FALSE(off.pixel_history);
+    const FrameResult off =
+        renderer_->render(scene_.camera, s, {.width = kWidth, .height = kHeight});
+    EXPECT_FALSE(off.find<PixelHistory>());
     for (const PassResult& p : off.passes) {
         EXPECT_NE(p.role, graph::PassRole::History) << p.name;
         EXPECT_EQ(p.name.find("history"), std::string::npos) << p.name;
@@ -186,8 +192,12 @@ TEST_F(PixelHistoryTest, OffAddsNothing) {
                                                "transparent_history"};
     EXPECT_EQ(replays, expected);
     const PixelQuery outside{kWidth, 0};
-    EXPECT_THROW(renderer_->render(scene_.camera, s, kWidth, kHeight, ReadBack::Yes,
-                                   InspectRequest{}, outside),
+    EXPECT_THROW(renderer_->render(scene_.camera, s,
+                                   {.width = kWidth,
+                                    .height = kHeight,
+                                    .read_back = ReadBack::Yes,
+                                    .inspect = {},
+                                    .pixel = outside}),
                  ds::Error);
 }
 
@@ -197,8 +207,9 @@ TEST_F(PixelHistoryTest, CountsStayThePassesOwnWithAHistory) {
     const std::vector<std::string> counting = {"count_fragments=on", "count_draws=on"};
     const FrameResult queried = history("foliage", counting, kCentre);
     const Settings s = test::settings_of(counting);
-    const FrameResult off = renderer_->render(scene_.camera, s, kWidth, kHeight);
-    ASSERT_TRUE(queried.pixel_history);
+    const FrameResult off =
+        renderer_->render(scene_.camera, s, {.width = kWidth, .height = kHeight});
+    ASSERT_TRUE(queried.find<PixelHistory>());
     auto by_name = [](const FrameResult& f, const std::string& name) -> const PassResult& {
         for (const PassResult& p : f.passes)
             if (p.name == name && p.role == graph::PassRole::Frame) return p;

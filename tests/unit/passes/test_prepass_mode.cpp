@@ -12,6 +12,11 @@
 #include <gtest/gtest.h>
 
 #include "renderer/common/error.h"
+#include "renderer/passes/depth_prepass.h"
+#include "renderer/passes/draw_counts.h"
+#include "renderer/passes/equal_check.h"
+#include "renderer/passes/pixel_history.h"
+#include "renderer/passes/zfight.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 #include "renderer/vk/capabilities.h"
@@ -180,10 +185,10 @@ TEST_F(PrepassMode, ReconstructedNormalsKeepGtaoCloseToTheGbuffers) {
 // gl_Position bit for bit as forward's full one (same expression, `invariant`).
 TEST_F(PrepassMode, ZOnlyPrepassKeepsEqualExact) {
     const auto [g, d] = both("atrium", {"equal_check=on"});
-    ASSERT_TRUE(g.equal_check && d.equal_check && d.covered_pixels);
-    EXPECT_EQ(d.equal_check->holes, g.equal_check->holes);
-    EXPECT_EQ(d.equal_check->holes, 0u);
-    EXPECT_EQ(d.equal_check->multiple, g.equal_check->multiple);
+    ASSERT_TRUE(g.find<EqualCheckResult>() && d.find<EqualCheckResult>() && d.covered_pixels);
+    EXPECT_EQ(d.find<EqualCheckResult>()->holes, g.find<EqualCheckResult>()->holes);
+    EXPECT_EQ(d.find<EqualCheckResult>()->holes, 0u);
+    EXPECT_EQ(d.find<EqualCheckResult>()->multiple, g.find<EqualCheckResult>()->multiple);
     const double fwd = double(*pass(d, "forward").shaded_fragments);
     EXPECT_GE(fwd, 0.98 * double(*d.covered_pixels));
     EXPECT_LE(fwd, 1.02 * double(*d.covered_pixels));
@@ -203,20 +208,23 @@ TEST_F(PrepassMode, SurfaceIdZfightAndDrawCountsWorkInDepthMode) {
     EXPECT_EQ(ids[0].inspected->texels, ids[1].inspected->texels);
 
     const auto fights = both("zfight", {"zfight=on"});
-    ASSERT_TRUE(fights[0].zfight && fights[1].zfight);
-    EXPECT_GT(fights[1].zfight->pixels, 0u);
-    EXPECT_EQ(fights[0].zfight->pixels, fights[1].zfight->pixels);
-    EXPECT_EQ(fights[0].zfight->pairs.size(), fights[1].zfight->pairs.size());
+    ASSERT_TRUE(fights[0].find<ZfightResult>() && fights[1].find<ZfightResult>());
+    EXPECT_GT(fights[1].find<ZfightResult>()->pixels, 0u);
+    EXPECT_EQ(fights[0].find<ZfightResult>()->pixels, fights[1].find<ZfightResult>()->pixels);
+    EXPECT_EQ(fights[0].find<ZfightResult>()->pairs.size(),
+              fights[1].find<ZfightResult>()->pairs.size());
 
     const auto draws = both("atrium", {"count_draws=on"});
-    ASSERT_EQ(draws[0].draws.size(), draws[1].draws.size());
-    ASSERT_FALSE(draws[1].draws.empty());
+    ASSERT_EQ(passes::draws_of(draws[0]).draws.size(), passes::draws_of(draws[1]).draws.size());
+    ASSERT_FALSE(passes::draws_of(draws[1]).draws.empty());
     // Visible pixels do not depend on the draw order; samples passed do (depth mode sorts
     // whole groups, the G-buffer prepass instances), so only their presence is compared.
-    for (size_t i = 0; i < draws[0].draws.size(); ++i) {
-        EXPECT_EQ(draws[0].draws[i].visible_pixels, draws[1].draws[i].visible_pixels) << i;
-        EXPECT_EQ(draws[0].draws[i].samples_passed.has_value(),
-                  draws[1].draws[i].samples_passed.has_value())
+    for (size_t i = 0; i < passes::draws_of(draws[0]).draws.size(); ++i) {
+        EXPECT_EQ(passes::draws_of(draws[0]).draws[i].visible_pixels,
+                  passes::draws_of(draws[1]).draws[i].visible_pixels)
+            << i;
+        EXPECT_EQ(passes::draws_of(draws[0]).draws[i].samples_passed.has_value(),
+                  passes::draws_of(draws[1]).draws[i].samples_passed.has_value())
             << i;
     }
 }
@@ -224,9 +232,11 @@ TEST_F(PrepassMode, SurfaceIdZfightAndDrawCountsWorkInDepthMode) {
 // The masked Z-only pipeline keeps its alpha test: the same discards, the same coverage.
 TEST_F(PrepassMode, MaskedDiscardsAndPixelHistoryWorkInDepthMode) {
     const auto discards = both("foliage", {"count_discards=on"});
-    ASSERT_TRUE(discards[0].masked_discards && discards[1].masked_discards);
-    EXPECT_EQ(discards[0].masked_discards->invoked, discards[1].masked_discards->invoked);
-    EXPECT_EQ(discards[0].masked_discards->discarded, discards[1].masked_discards->discarded);
+    ASSERT_TRUE(discards[0].find<DiscardCounts>() && discards[1].find<DiscardCounts>());
+    EXPECT_EQ(discards[0].find<DiscardCounts>()->invoked,
+              discards[1].find<DiscardCounts>()->invoked);
+    EXPECT_EQ(discards[0].find<DiscardCounts>()->discarded,
+              discards[1].find<DiscardCounts>()->discarded);
     EXPECT_EQ(discards[0].covered_pixels, discards[1].covered_pixels);
 
     // Overdraw, sorted: the front layer is the one prepass fragment that passes, and forward
@@ -234,11 +244,15 @@ TEST_F(PrepassMode, MaskedDiscardsAndPixelHistoryWorkInDepthMode) {
     const Settings s = test::settings_of({"prepass_mode=depth"});
     frame("overdraw", {"prepass_mode=depth"});  // loads the scene
     const PixelQuery at{kModeWidth / 2, kModeHeight / 2};
-    const FrameResult f = renderer_->render(scene_.camera, s, kModeWidth, kModeHeight, ReadBack::No,
-                                            InspectRequest{}, at);
-    ASSERT_TRUE(f.pixel_history);
+    const FrameResult f = renderer_->render(scene_.camera, s,
+                                            {.width = kModeWidth,
+                                             .height = kModeHeight,
+                                             .read_back = ReadBack::No,
+                                             .inspect = {},
+                                             .pixel = at});
+    ASSERT_TRUE(f.find<PixelHistory>());
     size_t prepass = 0, prepass_passed = 0, forward_passed = 0;
-    for (const PixelFragment& p : f.pixel_history->fragments) {
+    for (const PixelFragment& p : f.find<PixelHistory>()->fragments) {
         if (p.pass == "depth_prepass") {
             ++prepass;
             prepass_passed += p.depth_passed;

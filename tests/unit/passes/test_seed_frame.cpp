@@ -39,7 +39,8 @@ class SeedFrame : public test::SharedScene {
     // `assignments`: "name=value" each.
     static FrameResult render(const std::vector<std::string>& assignments, uint32_t w = kWidth,
                               uint32_t h = kHeight) {
-        return renderer_->render(scene_->camera, test::settings_of(assignments), w, h);
+        return renderer_->render(scene_->camera, test::settings_of(assignments),
+                                 {.width = w, .height = h});
     }
 };
 
@@ -233,7 +234,8 @@ TEST(SeedFrameReload, BrokenShaderKeepsThePipelines) {
     ::unsetenv("DEPTHSCOPE_SHADER_DIR");
     const scene::Scene scene = scene::load_scene("atrium", Settings{});
     renderer.set_scene(scene);
-    const FrameResult before = renderer.render(scene.camera, Settings{}, 96, 54);
+    const FrameResult before =
+        renderer.render(scene.camera, Settings{}, {.width = 96, .height = 54});
 
     const fs::path shader = root / "forward.frag";
     std::string text;
@@ -248,13 +250,15 @@ TEST(SeedFrameReload, BrokenShaderKeepsThePipelines) {
     } catch (const ds::shader::ShaderError& e) {
         EXPECT_NE(std::string(e.what()).find("forward.frag:"), std::string::npos) << e.what();
     }
-    const FrameResult during = renderer.render(scene.camera, Settings{}, 96, 54);
+    const FrameResult during =
+        renderer.render(scene.camera, Settings{}, {.width = 96, .height = 54});
     EXPECT_EQ(during.passes.size(), before.passes.size());
     EXPECT_EQ(during.covered_pixels, before.covered_pixels);
 
     std::ofstream(shader) << text;
     EXPECT_NO_THROW(renderer.rebuild_pipelines());
-    const FrameResult after = renderer.render(scene.camera, Settings{}, 96, 54);
+    const FrameResult after =
+        renderer.render(scene.camera, Settings{}, {.width = 96, .height = 54});
     EXPECT_LT(differing_pixels(before, after, 8), size_t(96) * 54 / 100);
     EXPECT_EQ(renderer.validation_message_count(), 0u);
     fs::remove_all(root);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "renderer/gpu_scene/gpu_scene.h"
+#include "renderer/passes/equal_check.h"
 #include "renderer/passes/zfight.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
@@ -42,7 +43,7 @@ std::string node_index(const std::string& node) {
 
 TEST_F(Zfight, OffAddsNoPassAndNoImage) {
     const FrameResult f = render("zfight", {});
-    EXPECT_FALSE(f.zfight);
+    EXPECT_FALSE(f.find<ZfightResult>());
     EXPECT_FALSE(has_resource(f, "zfight"));
     EXPECT_FALSE(has_resource(f, "surface_id"));
     for (const std::string& n : names(f)) EXPECT_NE(n, "zfight");
@@ -54,9 +55,9 @@ TEST_F(Zfight, SeparatedLayersAndSharedEdgesDoNotFight) {
     for (const char* format : {"depth_format=d32f", "depth_format=d24", "depth_format=d16"}) {
         for (const char* reverse : {"reverse_z=on", "reverse_z=off"}) {
             const FrameResult f = render("overdraw", {"zfight=on", format, reverse});
-            ASSERT_TRUE(f.zfight) << format << " " << reverse;
-            EXPECT_EQ(f.zfight->pixels, 0u) << format << " " << reverse;
-            EXPECT_TRUE(f.zfight->pairs.empty()) << format << " " << reverse;
+            ASSERT_TRUE(f.find<ZfightResult>()) << format << " " << reverse;
+            EXPECT_EQ(f.find<ZfightResult>()->pixels, 0u) << format << " " << reverse;
+            EXPECT_TRUE(f.find<ZfightResult>()->pairs.empty()) << format << " " << reverse;
         }
     }
 }
@@ -83,9 +84,9 @@ TEST_F(Zfight, SurfaceIdNamesTheSurfaceThatWon) {
 TEST_F(Zfight, CoplanarPairsFightAndOnlyTheirOwnPartners) {
     for (const char* reverse : {"reverse_z=on", "reverse_z=off"}) {
         const FrameResult f = render("zfight", {"zfight=on", reverse}, {"zfight", 0});
-        ASSERT_TRUE(f.zfight);
+        ASSERT_TRUE(f.find<ZfightResult>());
         std::set<std::string> coplanar;
-        for (const ZfightPair& p : f.zfight->pairs) {
+        for (const ZfightPair& p : f.find<ZfightResult>()->pairs) {
             EXPECT_EQ(node_index(p.a.node), node_index(p.b.node)) << p.a.node << " " << p.b.node;
             EXPECT_GT(p.pixels, 0u);
             EXPECT_LE(p.min_steps, 4u);
@@ -96,17 +97,17 @@ TEST_F(Zfight, CoplanarPairsFightAndOnlyTheirOwnPartners) {
         uint64_t pixels = 0;
         for (size_t i = 0; i < f.inspected->texels.size(); i += 4)
             pixels += f.inspected->texels[i] > 0.0f;
-        EXPECT_EQ(pixels, f.zfight->pixels) << reverse;
+        EXPECT_EQ(pixels, f.find<ZfightResult>()->pixels) << reverse;
         EXPECT_GT(pixels, 0u);
     }
 }
 
 TEST_F(Zfight, NeedsThePrepassAndOneSample) {
     const FrameResult off = render("zfight", {"zfight=on", "prepass=off"});
-    EXPECT_FALSE(off.zfight);
+    EXPECT_FALSE(off.find<ZfightResult>());
     EXPECT_EQ(off.skipped.back(), "zfight: skipped (prepass off)");
     const FrameResult msaa = render("zfight", {"zfight=on", "msaa=4"});
-    EXPECT_FALSE(msaa.zfight);
+    EXPECT_FALSE(msaa.find<ZfightResult>());
     ASSERT_FALSE(msaa.skipped.empty());
     EXPECT_TRUE(msaa.skipped.back().starts_with("zfight: skipped (msaa > 1"))
         << msaa.skipped.back();
@@ -116,34 +117,34 @@ TEST_F(Zfight, NeedsThePrepassAndOneSample) {
 // without it, holes; coplanar surfaces both pass EQUAL (ties), named by the winner.
 TEST_F(Zfight, EqualCheckFindsHolesWithoutInvarianceAndTiesOnCoplanarSurfaces) {
     const FrameResult on = render("atrium", {"equal_check=on"});
-    ASSERT_TRUE(on.equal_check);
-    EXPECT_EQ(on.equal_check->holes, 0u);
+    ASSERT_TRUE(on.find<EqualCheckResult>());
+    EXPECT_EQ(on.find<EqualCheckResult>()->holes, 0u);
     const FrameResult off = render("atrium", {"equal_check=on", "invariant=off"});
-    ASSERT_TRUE(off.equal_check);
-    EXPECT_GT(off.equal_check->holes, 1000u);
-    ASSERT_FALSE(off.equal_check->surfaces.empty());
-    EXPECT_GT(off.equal_check->surfaces[0].holes, 0u);
+    ASSERT_TRUE(off.find<EqualCheckResult>());
+    EXPECT_GT(off.find<EqualCheckResult>()->holes, 1000u);
+    ASSERT_FALSE(off.find<EqualCheckResult>()->surfaces.empty());
+    EXPECT_GT(off.find<EqualCheckResult>()->surfaces[0].holes, 0u);
 
     const FrameResult ties = render("zfight", {"equal_check=on"}, {"equal_check", 0});
-    ASSERT_TRUE(ties.equal_check);
-    EXPECT_GT(ties.equal_check->multiple, 0u);
-    ASSERT_FALSE(ties.equal_check->surfaces.empty());
-    for (const EqualCheckSurface& s : ties.equal_check->surfaces)
+    ASSERT_TRUE(ties.find<EqualCheckResult>());
+    EXPECT_GT(ties.find<EqualCheckResult>()->multiple, 0u);
+    ASSERT_FALSE(ties.find<EqualCheckResult>()->surfaces.empty());
+    for (const EqualCheckSurface& s : ties.find<EqualCheckResult>()->surfaces)
         EXPECT_TRUE(s.name.node.starts_with("coplanar")) << s.name.node;
     // The image marks exactly the counted pixels: 2 for a tie.
     ASSERT_TRUE(ties.inspected);
     uint64_t marked = 0;
     for (size_t i = 0; i < ties.inspected->texels.size(); i += 4)
         marked += ties.inspected->texels[i] == 2.0f;
-    EXPECT_EQ(marked, ties.equal_check->multiple);
+    EXPECT_EQ(marked, ties.find<EqualCheckResult>()->multiple);
 }
 
 TEST_F(Zfight, EqualCheckIsOffByDefaultAndNeedsEqual) {
     const FrameResult none = render("atrium", {});
-    EXPECT_FALSE(none.equal_check);
+    EXPECT_FALSE(none.find<EqualCheckResult>());
     EXPECT_FALSE(has_resource(none, "equal_check"));
     const FrameResult ge = render("atrium", {"equal_check=on", "depth_compare=greater_or_equal"});
-    EXPECT_FALSE(ge.equal_check);
+    EXPECT_FALSE(ge.find<EqualCheckResult>());
     EXPECT_NE(std::find(ge.skipped.begin(), ge.skipped.end(),
                         "equal_check: skipped (depth_compare is not equal)"),
               ge.skipped.end());

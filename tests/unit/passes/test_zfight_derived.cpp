@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "renderer/frame/frame_uniforms.h"
+#include "renderer/passes/zfight.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 #include "tests/unit/passes/shared_renderer.h"
@@ -240,10 +241,11 @@ TEST_F(ZfightDerived, PairsAreExactlyThoseTheGeometryPredicts) {
             scene_->camera,
             test::settings_of({"zfight=on", std::string("depth_format=") + c.format,
                                c.reverse ? "reverse_z=on" : "reverse_z=off"}),
-            kDerivedWidth, kDerivedHeight, ReadBack::No);
-        ASSERT_TRUE(f.zfight);
+            {.width = kDerivedWidth, .height = kDerivedHeight, .read_back = ReadBack::No});
+        ASSERT_TRUE(f.find<ZfightResult>());
         std::map<std::string, const ZfightPair*> found;
-        for (const ZfightPair& p : f.zfight->pairs) found[p.a.node + "|" + p.b.node] = &p;
+        for (const ZfightPair& p : f.find<ZfightResult>()->pairs)
+            found[p.a.node + "|" + p.b.node] = &p;
         size_t required = 0;
         for (const auto& [key, d] : derived) {
             const std::string name =
@@ -273,22 +275,22 @@ TEST_F(ZfightDerived, PairsAreExactlyThoseTheGeometryPredicts) {
                                     }))
                 << name << " never overlap";
         EXPECT_GE(required, 6u) << "the six coplanar pairs at least";
-        expect_gaps_in_scene_units(*f.zfight, hits, *scene_, c);
+        expect_gaps_in_scene_units(*f.find<ZfightResult>(), hits, *scene_, c);
         // With the widest window forward-Z's nearly coplanar pairs compete too, 64 steps apart
         // (reverse-Z keeps them thousands of ULPs apart).
-        const FrameResult wide =
-            renderer_->render(scene_->camera,
-                              test::settings_of({"zfight=on", "zfight_steps=1024",
-                                                 std::string("depth_format=") + c.format,
-                                                 c.reverse ? "reverse_z=on" : "reverse_z=off"}),
-                              kDerivedWidth, kDerivedHeight, ReadBack::No);
-        ASSERT_TRUE(wide.zfight);
+        const FrameResult wide = renderer_->render(
+            scene_->camera,
+            test::settings_of({"zfight=on", "zfight_steps=1024",
+                               std::string("depth_format=") + c.format,
+                               c.reverse ? "reverse_z=on" : "reverse_z=off"}),
+            {.width = kDerivedWidth, .height = kDerivedHeight, .read_back = ReadBack::No});
+        ASSERT_TRUE(wide.find<ZfightResult>());
         if (!c.reverse) {
-            EXPECT_GT(wide.zfight->hits.size(), f.zfight->hits.size());
+            EXPECT_GT(wide.find<ZfightResult>()->hits.size(), f.find<ZfightResult>()->hits.size());
         }
-        expect_gaps_in_scene_units(*wide.zfight, hits, *scene_, c);
+        expect_gaps_in_scene_units(*wide.find<ZfightResult>(), hits, *scene_, c);
         printf("[ %-16s ] %zu pairs must fight, %zu found, %lu pixels\n", config.c_str(), required,
-               found.size(), (unsigned long)f.zfight->pixels);
+               found.size(), (unsigned long)f.find<ZfightResult>()->pixels);
     }
 }
 

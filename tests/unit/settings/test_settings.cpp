@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "renderer/common/error.h"
+#include "renderer/settings/knob.h"
 #include "renderer/settings/settings.h"
 
 using ds::Settings;
@@ -8,6 +9,19 @@ using ds::SettingsRegistry;
 using ds::UsageError;
 
 namespace {
+
+// This binary links the settings layer alone: the frame-wide knobs, and these two declared the
+// way a pass or a scene declares its own.
+constexpr ds::Knob<int> kTestLayers{"test_layers"};
+constexpr ds::Knob<int> kTestPairs{"test_pairs"};
+std::vector<ds::SettingDef> test_knobs() {
+    return {
+        ds::int_knob(kTestLayers, "scene", 8, 1, 64, "test: an int knob", ds::Invalidates::Scene),
+        ds::int_knob(kTestPairs, "scene", 6, 1, 16, "test: another", ds::Invalidates::Scene),
+        ds::int_knob(ds::Knob<int>{"test_steps"}, "diagnostics", 4, 0, 1024, "test: 0..1024",
+                     ds::Invalidates::Nothing)};
+}
+const ds::KnobSource kTestKnobs(ds::KnobOwner::Scenes, &test_knobs);
 
 // Runs `fn`, expects a UsageError and returns its message.
 template <typename Fn>
@@ -29,28 +43,41 @@ TEST(Settings, DefaultsComeFromTheRegistry) {
         EXPECT_EQ(s.get(def.name), def.default_value) << def.name;
         EXPECT_FALSE(def.help.empty()) << def.name;
     }
-    EXPECT_EQ(s.get_int("overdraw_layers"), 8);
+    EXPECT_EQ(s.get_int("test_layers"), 8);
+}
+
+// Frame-wide knobs come first, then the declared ones; a typed handle reads its knob.
+TEST(Settings, DeclaredKnobsFollowTheFrameWideOnes) {
+    const auto& all = SettingsRegistry::instance().all();
+    ASSERT_GE(all.size(), 3u);
+    EXPECT_EQ(all.front().name, "prepass");
+    EXPECT_EQ(all[all.size() - 3].name, "test_layers");
+    EXPECT_EQ(all[all.size() - 2].name, "test_pairs");
+    Settings s;
+    s.set("test_pairs", "3");
+    EXPECT_EQ(ds::knob_value(s, kTestPairs), 3);
+    EXPECT_EQ(ds::knob_value(s, kTestLayers), 8);
 }
 
 TEST(Settings, UnknownNameListsValidNames) {
     Settings s;
-    const std::string msg = usage_error_of([&] { s.set("overdraw_layer", "3"); });
-    EXPECT_NE(msg.find("unknown setting 'overdraw_layer'"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("overdraw_layers"), std::string::npos) << msg;
+    const std::string msg = usage_error_of([&] { s.set("test_layer", "3"); });
+    EXPECT_NE(msg.find("unknown setting 'test_layer'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("test_layers"), std::string::npos) << msg;
     EXPECT_NE(msg.find("exposure"), std::string::npos) << msg;
 }
 
 TEST(Settings, IntRangeAndTypeAreChecked) {
     Settings s;
-    s.set("overdraw_layers", "12");
-    EXPECT_EQ(s.get_int("overdraw_layers"), 12);
-    EXPECT_NE(usage_error_of([&] { s.set("overdraw_layers", "0"); }).find("out of range 1..64"),
+    s.set("test_layers", "12");
+    EXPECT_EQ(s.get_int("test_layers"), 12);
+    EXPECT_NE(usage_error_of([&] { s.set("test_layers", "0"); }).find("out of range 1..64"),
               std::string::npos);
-    EXPECT_NE(usage_error_of([&] { s.set("overdraw_layers", "2.5"); }).find("not an integer"),
+    EXPECT_NE(usage_error_of([&] { s.set("test_layers", "2.5"); }).find("not an integer"),
               std::string::npos);
-    EXPECT_NE(usage_error_of([&] { s.set("overdraw_layers", "many"); }).find("not a number"),
+    EXPECT_NE(usage_error_of([&] { s.set("test_layers", "many"); }).find("not a number"),
               std::string::npos);
-    EXPECT_EQ(s.get_int("overdraw_layers"), 12);  // a rejected value leaves the old one
+    EXPECT_EQ(s.get_int("test_layers"), 12);  // a rejected value leaves the old one
 }
 
 TEST(Settings, FloatsAreCanonicalised) {
@@ -66,10 +93,9 @@ TEST(Settings, FloatsAreCanonicalised) {
 
 TEST(Settings, ApplyParsesAssignments) {
     Settings s;
-    s.apply("zfight_pairs=3");
-    EXPECT_EQ(s.get_int("zfight_pairs"), 3);
-    EXPECT_NE(usage_error_of([&] { s.apply("zfight_pairs"); }).find("name=value"),
-              std::string::npos);
+    s.apply("test_pairs=3");
+    EXPECT_EQ(s.get_int("test_pairs"), 3);
+    EXPECT_NE(usage_error_of([&] { s.apply("test_pairs"); }).find("name=value"), std::string::npos);
     EXPECT_NE(usage_error_of([&] { s.apply("=3"); }).find("name=value"), std::string::npos);
 }
 
@@ -83,8 +109,8 @@ TEST(Settings, DiffNamesChangedKnobs) {
 
 TEST(Settings, RangeTextDescribesEachType) {
     const auto& reg = SettingsRegistry::instance();
-    EXPECT_EQ(reg.at("overdraw_layers").range_text(), "1..64");
-    EXPECT_EQ(reg.at("overdraw_layers").type_name(), "int");
+    EXPECT_EQ(reg.at("test_layers").range_text(), "1..64");
+    EXPECT_EQ(reg.at("test_layers").type_name(), "int");
     EXPECT_THROW(reg.at("nope"), UsageError);
 }
 
@@ -112,7 +138,8 @@ TEST(Settings, EnumsAndBools) {
                   s.set("depth_compare", "less");
               }).find("not one of equal|greater_or_equal"),
               std::string::npos);
-    EXPECT_NE(usage_error_of([&] { s.set("sky", "maybe"); }).find("on|off"), std::string::npos);
+    EXPECT_NE(usage_error_of([&] { s.set("reverse_z", "maybe"); }).find("on|off"),
+              std::string::npos);
 }
 
 // material_alpha_cutoff: a Map (NAME=V pairs); the names are checked by the renderer against

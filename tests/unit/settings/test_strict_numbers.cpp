@@ -74,14 +74,14 @@ TEST(StrictNumbers, IntKnobsStayInsideTheirRangeAndInt) {
     Settings s;
     for (const char* v :
          {"2147483648", "-2147483649", "4294967297", "1e10", "99999999999999999999"})
-        EXPECT_NE(strict_usage_error(s, "overdraw_layers", v).find("out of range 1..64"),
+        EXPECT_NE(strict_usage_error(s, "test_layers", v).find("out of range 1..64"),
                   std::string::npos)
             << v;
-    EXPECT_NE(strict_usage_error(s, "zfight_steps", "1e-320").find("not an integer"),
+    EXPECT_NE(strict_usage_error(s, "test_steps", "1e-320").find("not an integer"),
               std::string::npos);
-    s.set("zfight_steps", "1e3");  // an exponent that makes a whole number is that number
-    EXPECT_EQ(s.get("zfight_steps"), "1000");
-    EXPECT_EQ(s.get_int("zfight_steps"), 1000);
+    s.set("test_steps", "1e3");  // an exponent that makes a whole number is that number
+    EXPECT_EQ(s.get("test_steps"), "1000");
+    EXPECT_EQ(s.get_int("test_steps"), 1000);
 }
 
 TEST(StrictNumbers, MsaaTakesOnlyVulkanSampleCounts) {
@@ -138,7 +138,7 @@ TEST(Quoted, EverySettingsErrorThatEchoesAValueStaysOneLine) {
     } cases[] = {{"prepass", "on\noff"},
                  {"depth_compare", "equal\n"},
                  {"exposure", "1\n2"},
-                 {"overdraw_layers", "1\r"},
+                 {"test_layers", "1\r"},
                  {"material_alpha_cutoff", "a\nb"},
                  {"material_alpha_cutoff", "\x01=0.5,\x01=0.5"},
                  {"material_alpha_cutoff", "=\n0.5"}};

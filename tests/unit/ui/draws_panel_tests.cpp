@@ -12,6 +12,7 @@
 #include <imgui.h>
 
 #include "renderer/capture/image_writer.h"
+#include "renderer/passes/draw_counts.h"
 #include "renderer/scene/loader.h"
 #include "tests/unit/passes/shared_renderer.h"
 #include "ui/headless.h"
@@ -35,24 +36,27 @@ TEST_F(DrawsPanel, FiltersSortsAndHighlightsTheSelectedDraw) {
     ui::Inspector& in = ui->inspector();
     ImGui::SetWindowCollapsed("Draws", false);
     ui->frame();
-    EXPECT_TRUE(in.frame().draws.empty());
+    EXPECT_TRUE(passes::draws_of(in.frame()).draws.empty());
     in.queue(ui::SetSetting{"count_draws", "on"});
     in.queue(ui::SetSetting{"hiz", "on"});       // the Hi-Z column has verdicts to sort
     in.queue(ui::SelectResource{"surface_id"});  // the same from frame to frame (no history)
     ui->frame();
     ui->frame();  // the panels draw the last frame's results: now the counted one
     const FrameResult& f = in.frame();
-    ASSERT_FALSE(f.draws.empty());
-    EXPECT_EQ(in.panel_state().draw_rows.size(), f.draws.size());  // drawn, unfiltered
-    for (const DrawReport& d : f.draws) EXPECT_TRUE(d.hiz.has_value()) << d.name.mesh;
+    ASSERT_FALSE(passes::draws_of(f).draws.empty());
+    EXPECT_EQ(in.panel_state().draw_rows.size(),
+              passes::draws_of(f).draws.size());  // drawn, unfiltered
+    for (const DrawReport& d : passes::draws_of(f).draws)
+        EXPECT_TRUE(d.hiz.has_value()) << d.name.mesh;
 
     // Sorting: each numeric column orders its measured values, nulls last.
     for (int column = ui::kDrawInstances; column < ui::kDrawShaded + 4; ++column) {
         for (bool ascending : {true, false}) {
-            const std::vector<size_t> rows = ui::draw_rows(f.draws, "", column, ascending);
-            ASSERT_EQ(rows.size(), f.draws.size());
+            const std::vector<size_t> rows =
+                ui::draw_rows(passes::draws_of(f).draws, "", column, ascending);
+            ASSERT_EQ(rows.size(), passes::draws_of(f).draws.size());
             auto value = [&](size_t i) -> std::optional<int64_t> {
-                const DrawReport& d = f.draws[i];
+                const DrawReport& d = passes::draws_of(f).draws[i];
                 switch (column) {
                     case ui::kDrawInstances:
                         return d.instances;
@@ -83,15 +87,15 @@ TEST_F(DrawsPanel, FiltersSortsAndHighlightsTheSelectedDraw) {
         }
     }
     // Filtering by a node name keeps the draws whose mesh, material or node contains it.
-    const std::string node = f.draws.back().name.node;
+    const std::string node = passes::draws_of(f).draws.back().name.node;
     std::snprintf(in.panel_state().draw_filter.data(), in.panel_state().draw_filter.size(), "%s",
                   node.c_str());
     ui->frame();
 
     ASSERT_FALSE(in.panel_state().draw_rows.empty());
-    EXPECT_LT(in.panel_state().draw_rows.size(), f.draws.size());
+    EXPECT_LT(in.panel_state().draw_rows.size(), passes::draws_of(f).draws.size());
     for (size_t i : in.panel_state().draw_rows) {
-        const SurfaceName& n = in.frame().draws[i].name;
+        const SurfaceName& n = passes::draws_of(in.frame()).draws[i].name;
         EXPECT_TRUE((n.mesh + n.material + n.node).find(node) != std::string::npos) << n.node;
     }
     in.panel_state().draw_filter[0] = '\0';
@@ -99,13 +103,14 @@ TEST_F(DrawsPanel, FiltersSortsAndHighlightsTheSelectedDraw) {
     // Selection: the draw with the most visible pixels stays as it was, another one dims.
     const FrameResult& g = in.frame();
     size_t best = 0;
-    for (size_t i = 0; i < g.draws.size(); ++i)
-        if (g.draws[i].visible_pixels.value_or(0) > g.draws[best].visible_pixels.value_or(0))
+    for (size_t i = 0; i < passes::draws_of(g).draws.size(); ++i)
+        if (passes::draws_of(g).draws[i].visible_pixels.value_or(0) >
+            passes::draws_of(g).draws[best].visible_pixels.value_or(0))
             best = i;
-    ASSERT_GT(g.draws[best].visible_pixels.value_or(0), 0u);
+    ASSERT_GT(passes::draws_of(g).draws[best].visible_pixels.value_or(0), 0u);
     auto first_pixel = [&](auto pred) {
-        for (size_t p = 0; p < g.draw_pixels.size(); ++p)
-            if (pred(g.draw_pixels[p])) return p;
+        for (size_t p = 0; p < passes::draws_of(g).draw_pixels.size(); ++p)
+            if (pred(passes::draws_of(g).draw_pixels[p])) return p;
         ADD_FAILURE() << "no such pixel";
         return size_t(0);
     };
@@ -119,7 +124,7 @@ TEST_F(DrawsPanel, FiltersSortsAndHighlightsTheSelectedDraw) {
     const auto mine_before = colour(mine), other_before = colour(other);
     in.viewer().draw = int(best);
     ui->frame();
-    EXPECT_EQ(in.selected_draw_pixels().size(), in.frame().draw_pixels.size());
+    EXPECT_EQ(in.selected_draw_pixels().size(), passes::draws_of(in.frame()).draw_pixels.size());
     EXPECT_EQ(colour(mine), mine_before);
     EXPECT_NE(colour(other), other_before);
     for (size_t c = 0; c < 3; ++c) EXPECT_LE(colour(other)[c], other_before[c]);

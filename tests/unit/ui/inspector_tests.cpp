@@ -14,6 +14,8 @@
 #include <imgui.h>
 
 #include "renderer/capture/image_writer.h"
+#include "renderer/passes/depth_prepass.h"
+#include "renderer/passes/zfight.h"
 #include "renderer/scene/loader.h"
 #include "tests/unit/passes/shared_renderer.h"
 #include "tests/unit/ui/inspector_ui.h"
@@ -147,11 +149,11 @@ TEST_F(Inspector, RaisingAlphaCutoffLowersWhatTheMaskedPipelineKeeps) {
     ui::Inspector& in = ui->inspector();
     in.queue(ui::SetSetting{"alpha_cutoff", "0.1"});
     ui->frame();
-    ASSERT_TRUE(in.frame().masked_discards);
-    const uint64_t low = in.frame().masked_discards->discarded;
+    ASSERT_TRUE(in.frame().find<DiscardCounts>());
+    const uint64_t low = in.frame().find<DiscardCounts>()->discarded;
     in.queue(ui::SetSetting{"alpha_cutoff", "0.9"});
     ui->frame();
-    EXPECT_GT(in.frame().masked_discards->discarded, low);
+    EXPECT_GT(in.frame().find<DiscardCounts>()->discarded, low);
 }
 
 TEST_F(Inspector, ARefusedValueIsShownAndTheLastGoodSettingsStay) {
@@ -230,10 +232,10 @@ TEST_F(Inspector, ZfightViewNamesFightsAndShowsTheSelectedPair) {
     ui->inspector().queue(ui::SelectResource{"zfight"});
     ui->frame();
     const FrameResult& f = ui->inspector().frame();
-    ASSERT_TRUE(f.zfight);
-    ASSERT_GE(f.zfight->pairs.size(), 2u);
+    ASSERT_TRUE(f.find<ZfightResult>());
+    ASSERT_GE(f.find<ZfightResult>()->pairs.size(), 2u);
     auto first_hit = [&](uint32_t pair) {
-        for (const ZfightHit& h : f.zfight->hits)
+        for (const ZfightHit& h : f.find<ZfightResult>()->hits)
             if (h.pair == pair) return h;
         ADD_FAILURE() << "no pixel for pair " << pair;
         return ZfightHit{};
@@ -241,7 +243,7 @@ TEST_F(Inspector, ZfightViewNamesFightsAndShowsTheSelectedPair) {
     const ZfightHit h0 = first_hit(0), h1 = first_hit(1);
     const uint32_t w = f.width;
     const auto text = ui->inspector().readout_at(h0.pixel % w, h0.pixel / w)->decoded_text;
-    const ZfightPair& p0 = f.zfight->pairs[0];
+    const ZfightPair& p0 = f.find<ZfightResult>()->pairs[0];
     EXPECT_NE(text.find(p0.a.node + " vs " + p0.b.node), std::string::npos) << text;
     auto colour = [&](uint32_t pixel) {
         const auto& v = ui->inspector().view();

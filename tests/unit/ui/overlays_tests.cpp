@@ -78,15 +78,21 @@ TEST_F(Overlays, TheInspectPassReadsEveryImageAsked) {
                                                  {.resource = "no_such_image"},
                                                  {.resource = "surface_id"},
                                                  {.resource = "final"}};
-    const FrameResult all = renderer_->render(scene.camera, s, 160, 90, ReadBack::No, request);
+    const FrameResult all = renderer_->render(
+        scene.camera, s,
+        {.width = 160, .height = 90, .read_back = ReadBack::No, .inspect = request});
     ASSERT_TRUE(all.inspected);
     EXPECT_EQ(all.inspected->name, "normals");
     ASSERT_EQ(all.overlays.size(), 2u) << "names the frame lacks and final are left out";
     EXPECT_EQ(all.overlays[0].name, "forward_counts");
     EXPECT_EQ(all.overlays[1].name, "surface_id");
     for (const InspectedImage& o : all.overlays) {
-        const FrameResult alone = renderer_->render(scene.camera, s, 160, 90, ReadBack::No,
-                                                    InspectRequest{.resource = o.name});
+        const FrameResult alone =
+            renderer_->render(scene.camera, s,
+                              {.width = 160,
+                               .height = 90,
+                               .read_back = ReadBack::No,
+                               .inspect = {InspectRequest{.resource = o.name}}});
         ASSERT_TRUE(alone.inspected);
         EXPECT_EQ(alone.inspected->texels, o.texels) << o.name;
         EXPECT_EQ(alone.inspected->semantic, o.semantic) << o.name;
@@ -341,8 +347,11 @@ TEST_F(Overlays, DISABLED_CostPerOverlay) {
     for (int round = 0; round < 15; ++round) {
         for (size_t n = 1; n <= all.size(); ++n) {
             const auto start = std::chrono::steady_clock::now();
-            const FrameResult f = renderer_->render(scene.camera, s, 1280, 720, ReadBack::No,
-                                                    std::span(all.data(), n));
+            const FrameResult f = renderer_->render(scene.camera, s,
+                                                    {.width = 1280,
+                                                     .height = 720,
+                                                     .read_back = ReadBack::No,
+                                                     .inspect = {all.begin(), all.begin() + n}});
             const double ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count();
@@ -362,8 +371,9 @@ TEST_F(Overlays, DISABLED_CostPerOverlay) {
             "overlays %zu: render %.1f ms wall (%+.1f against none), inspect + "
             "readback_inspect %.2f GPU ms (medians)\n",
             n - 1, median(wall[n - 1]), median(wall[n - 1]) - none, median(inspect_ms[n - 1]));
-    const FrameResult f =
-        renderer_->render(scene.camera, s, 1280, 720, ReadBack::No, std::span(all.data() + 1, 1));
+    const FrameResult f = renderer_->render(
+        scene.camera, s,
+        {.width = 1280, .height = 720, .read_back = ReadBack::No, .inspect = {all[1]}});
     ASSERT_TRUE(f.inspected);
     view::DecodedView base = view::decode(*f.inspected, view::ViewParams{}), over;
     const auto start = std::chrono::steady_clock::now();

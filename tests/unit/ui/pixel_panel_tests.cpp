@@ -13,6 +13,7 @@
 #include <imgui_internal.h>  // ImGui::FindWindowByName: whether a panel is open
 
 #include "renderer/capture/image_writer.h"
+#include "renderer/passes/pixel_history.h"
 #include "tests/unit/ui/inspector_ui.h"
 
 namespace ds::test {

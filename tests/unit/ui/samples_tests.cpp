@@ -16,6 +16,8 @@
 #include <glm/glm.hpp>
 
 #include "renderer/capture/image_writer.h"
+#include "renderer/passes/msaa_samples.h"
+#include "renderer/passes/pixel_history.h"
 #include "renderer/view/decode.h"
 #include "tests/unit/ui/inspector_ui.h"
 
@@ -102,9 +104,9 @@ TEST_F(SampleView, ASilhouettePixelListsTwoSurfacesWithTheirDepths) {
     settings.set("msaa", "4");
     auto ui = open("edges", settings, {960, 540});
     ui::Inspector& in = ui->inspector();
-    EXPECT_FALSE(in.frame().msaa_samples) << "zoomed out: no samples asked";
+    EXPECT_FALSE(in.frame().find<MsaaSamples>()) << "zoomed out: no samples asked";
     const std::optional<Silhouette> found = zoom_to_silhouette(*ui);
-    ASSERT_TRUE(in.frame().msaa_samples) << in.message();
+    ASSERT_TRUE(in.frame().find<MsaaSamples>()) << in.message();
     ASSERT_TRUE(found) << "no backdrop silhouette in the zoomed views";
     const PixelSampleList& list = found->list;
     EXPECT_EQ(list.samples, 4u);
@@ -199,7 +201,7 @@ TEST_F(SampleView, TheViewerDrawsEachSampleInItsSurfacesColour) {
     // Zoomed out: no samples asked, none shown.
     in.viewer().zoom = 1.0f;
     ui->frame();
-    EXPECT_FALSE(in.frame().msaa_samples);
+    EXPECT_FALSE(in.frame().find<MsaaSamples>());
     EXPECT_EQ(in.shown_samples(), nullptr);
     for (const PassResult& p : in.frame().passes) EXPECT_NE(p.name, "msaa_samples");
 }

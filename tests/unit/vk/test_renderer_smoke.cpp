@@ -186,7 +186,7 @@ TEST(RendererSmoke, GroundAndCube) {
     renderer.set_scene(s);
     const Settings settings = sky_off();  // a uniform background: coverage by colour
 
-    const FrameResult a = renderer.render(s.camera, settings, 128, 96);
+    const FrameResult a = renderer.render(s.camera, settings, {.width = 128, .height = 96});
     ASSERT_EQ(a.width, 128u);
     ASSERT_EQ(a.height, 96u);
     std::printf("smoke 128x96: gpu %.3f ms, cpu %.3f ms\n", a.gpu_ms, a.cpu_ms);
@@ -205,30 +205,31 @@ TEST(RendererSmoke, GroundAndCube) {
     EXPECT_GT(a.gpu_ms, 0.0);
 
     // The default frame (procedural sky): the same coverage, a sky that is blue at the top.
-    const FrameResult with_sky = renderer.render(s.camera, Settings{}, 128, 96);
+    const FrameResult with_sky =
+        renderer.render(s.camera, Settings{}, {.width = 128, .height = 96});
     stbi_write_png("/tmp/ds_smoke.png", int(with_sky.width), int(with_sky.height), 4,
                    with_sky.rgba8.data(), int(with_sky.width * 4));
     EXPECT_EQ(with_sky.covered_pixels, a.covered_pixels);
     EXPECT_GT(with_sky.rgba8[2], with_sky.rgba8[0]);
 
-    const FrameResult b = renderer.render(s.camera, settings, 128, 96);
+    const FrameResult b = renderer.render(s.camera, settings, {.width = 128, .height = 96});
     EXPECT_TRUE(a.rgba8 == b.rgba8) << "same input must give byte-identical pixels";
 
-    const FrameResult big = renderer.render(s.camera, settings, 200, 150);
+    const FrameResult big = renderer.render(s.camera, settings, {.width = 200, .height = 150});
     EXPECT_EQ(big.rgba8.size(), size_t(200) * 150 * 4);
     check_frame(big, s, sky);
     std::printf("smoke 200x150: gpu %.3f ms, cpu %.3f ms\n", big.gpu_ms, big.cpu_ms);
 
-    const FrameResult again = renderer.render(s.camera, settings, 128, 96);
+    const FrameResult again = renderer.render(s.camera, settings, {.width = 128, .height = 96});
     EXPECT_TRUE(a.rgba8 == again.rgba8) << "resizing back must not change the image";
 
     // A second scene replaces the first; an empty scene draws only background.
     renderer.set_scene(scene::Scene{});
-    const FrameResult empty = renderer.render(s.camera, settings, 32, 24);
+    const FrameResult empty = renderer.render(s.camera, settings, {.width = 32, .height = 24});
     EXPECT_EQ(empty.covered_pixels, 0u);
     for (uint32_t y = 0; y < empty.height; ++y)
         for (uint32_t x = 0; x < empty.width; ++x) ASSERT_EQ(pixel(empty, x, y), sky);
-    EXPECT_THROW(renderer.render(s.camera, settings, 0, 24), ds::Error);
+    EXPECT_THROW(renderer.render(s.camera, settings, {.width = 0, .height = 24}), ds::Error);
 
     EXPECT_EQ(renderer.validation_message_count(), 0u);
 }
@@ -308,7 +309,7 @@ TEST(RendererSmoke, MaskAndBlend) {
     options.validate = true;
     Renderer renderer(options);
     renderer.set_scene(s);
-    const FrameResult f = renderer.render(s.camera, sky_off(), 160, 120);
+    const FrameResult f = renderer.render(s.camera, sky_off(), {.width = 160, .height = 120});
     const uint32_t sky = pixel(f, 0, 0);
     auto at = [&](glm::vec3 p) {
         const glm::ivec2 q = project(s, f.width, f.height, p);
@@ -327,7 +328,7 @@ TEST(RendererSmoke, MaskAndBlend) {
     const uint32_t both = at({1.6f, 0.2f, 0.5f});
     EXPECT_GT(channel(both, 0), channel(both, 1)) << "blend order must be back to front";
 
-    const FrameResult again = renderer.render(s.camera, sky_off(), 160, 120);
+    const FrameResult again = renderer.render(s.camera, sky_off(), {.width = 160, .height = 120});
     EXPECT_TRUE(f.rgba8 == again.rgba8);
     stbi_write_png("/tmp/ds_smoke_alpha.png", int(f.width), int(f.height), 4, f.rgba8.data(),
                    int(f.width * 4));

@@ -61,13 +61,13 @@ TEST(VkTeardown, RendererShutdownCountsWhatTeardownReports) {
     Renderer renderer(options);
     const scene::Scene scene = scene::load_scene("edges", Settings{});
     renderer.set_scene(scene);
-    renderer.render(scene.camera, Settings{}, 64, 36);
+    renderer.render(scene.camera, Settings{}, {.width = 64, .height = 36});
     leak_a_sampler(renderer.context());
     EXPECT_EQ(renderer.validation_message_count(), 0u);
     renderer.shutdown();
     EXPECT_GT(renderer.validation_message_count(), 0u)
         << "the exit code reads this after shutdown(): a leak must make it 3";
-    EXPECT_THROW(renderer.render(scene.camera, Settings{}, 64, 36), ds::Error);
+    EXPECT_THROW(renderer.render(scene.camera, Settings{}, {.width = 64, .height = 36}), ds::Error);
 }
 
 TEST(VkLimits, ImageBeyondTheDimensionLimitIsRefusedByName) {
@@ -122,9 +122,9 @@ TEST(VkLimits, RendererRefusesAFrameOverTheHeapBeforeAllocatingIt) {
     Renderer renderer(options);
     const scene::Scene scene = scene::load_scene("edges", Settings{});
     renderer.set_scene(scene);
-    EXPECT_NO_THROW(renderer.render(scene.camera, Settings{}, 64, 36));
+    EXPECT_NO_THROW(renderer.render(scene.camera, Settings{}, {.width = 64, .height = 36}));
     try {
-        renderer.render(scene.camera, Settings{}, 1280, 720);
+        renderer.render(scene.camera, Settings{}, {.width = 1280, .height = 720});
         FAIL() << "expected ds::Error";
     } catch (const ds::Error& e) {
         const std::string what = e.what();
@@ -132,7 +132,7 @@ TEST(VkLimits, RendererRefusesAFrameOverTheHeapBeforeAllocatingIt) {
         EXPECT_NE(what.find("the 32.0 MiB device-local heap"), std::string::npos) << what;
     }
     // The refused frame was never submitted: the renderer goes on at a size that fits.
-    EXPECT_NO_THROW(renderer.render(scene.camera, Settings{}, 64, 36));
+    EXPECT_NO_THROW(renderer.render(scene.camera, Settings{}, {.width = 64, .height = 36}));
     renderer.shutdown();
     EXPECT_EQ(renderer.validation_message_count(), 0u);
 }
