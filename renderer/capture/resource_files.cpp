@@ -82,6 +82,7 @@ std::vector<ExrChannel> exr_channels(const InspectedImage& image, const std::str
         case Semantic::DepthStep:
             return {float_channel(image, layer + "step", 0),
                     float_channel(image, layer + "distance", 1)};
+        case Semantic::Scalar:  // by the format until the writer reads the Display
         case Semantic::Other:
             break;
     }
