@@ -22,12 +22,13 @@ const ResourceSummary* resource(std::span<const ResourceSummary> resources, std:
     return nullptr;
 }
 
-// A pass gets a wasted view when it counts shaded fragments at the scene depth's size (a
-// shadow map's counts have no scene pixel to be visible in).
+// A pass gets a wasted view when it counts shaded fragments (a Count image) at the scene
+// depth's size (a shadow map's counts have no scene pixel to be visible in).
 bool wastable(std::span<const ResourceSummary> resources, const std::string& pass) {
     const ResourceSummary* shaded = resource(resources, count_image(pass, view::kShadedKind));
     const ResourceSummary* depth = resource(resources, kDepth);
-    return shaded && depth && shaded->width == depth->width && shaded->height == depth->height;
+    return shaded && depth && shaded->semantic == graph::Semantic::Count &&
+           shaded->width == depth->width && shaded->height == depth->height;
 }
 
 bool same_pass(std::string_view image, const std::string& pass) {
@@ -183,9 +184,20 @@ void ViewComposer::stack_overlays(const FrameResult& frame, const ViewerState& v
     }
 }
 
-// One legend per scale: a pass's count images share one when the scale is shared.
+// One legend per scale: a pass's count images share one when the scale is shared; a Scalar
+// image has one (a colour bar) when its Display asks for the heat map.
 void ViewComposer::add_legend(const InspectedImage& image, const ViewerState& viewer,
                               const view::DecodedView& decoded) {
+    if (image.semantic == graph::Semantic::Scalar) {
+        if (image.display.palette != graph::Palette::Heat) return;
+        if (std::find(legend_keys_.begin(), legend_keys_.end(), image.name) != legend_keys_.end())
+            return;
+        legend_keys_.push_back(image.name);
+        const std::string& title = image.display.legend;
+        legends_.push_back({title.empty() ? image.name : title, decoded.black, decoded.white, false,
+                            image.display});
+        return;
+    }
     const bool log = image.semantic == graph::Semantic::DepthStep;
     if (image.semantic != graph::Semantic::Count && !log) return;
     const auto c = count_image_name(image.name);

@@ -19,11 +19,13 @@ namespace ds::ui {
 struct ViewerState;
 
 // One legend the viewer draws: a heat scale and what shares it ("forward: counts,
-// discarded, wasted"), or a log scale (depth steps).
+// discarded, wasted"), a log scale (depth steps), or a Scalar image's colour bar (its
+// Display's Heat palette: label = the Display's legend, else the image's name).
 struct ViewLegend {
     std::string label;
-    float black = 0, white = 1;
+    float black = 0, white = 1;  // the value's unit
     bool log = false;
+    std::optional<graph::Display> display{};  // a colour bar (view::display_legend)
 };
 
 class ViewComposer {

@@ -48,6 +48,30 @@ std::vector<ExrChannel> by_format(const InspectedImage& image, const std::string
     return out;
 }
 
+// A Scalar image's one channel, named and typed by its Display ("" names it "Y").
+ExrChannel scalar_channel(const InspectedImage& image, const std::string& layer) {
+    const graph::Display& d = image.display;
+    const std::string name = layer + (d.exr_channel.empty() ? "Y" : d.exr_channel);
+    return d.exr_type == graph::ExrType::Uint ? uint_channel(image, name, 0)
+                                              : float_channel(image, name, 0);
+}
+
+// report.json's "display" of a Scalar image: its graph::Display, field by field.
+nlohmann::json display_json(const graph::Display& d) {
+    nlohmann::json range = {{"rule", graph::range_rule_name(d.range.rule)}};
+    if (d.range.rule == graph::DisplayRange::Rule::Fixed) {
+        range["black"] = d.range.black;
+        range["white"] = d.range.white;
+    }
+    return {{"scale", graph::value_scale_name(d.scale)},
+            {"range", range},
+            {"palette", graph::palette_name(d.palette)},
+            {"unit", d.unit},
+            {"legend", d.legend},
+            {"hover", d.hover},
+            {"exr", {{"channel", d.exr_channel}, {"type", graph::exr_type_name(d.exr_type)}}}};
+}
+
 }  // namespace
 
 std::vector<ExrChannel> exr_channels(const InspectedImage& image, const std::string& layer) {
@@ -82,6 +106,8 @@ std::vector<ExrChannel> exr_channels(const InspectedImage& image, const std::str
         case Semantic::DepthStep:
             return {float_channel(image, layer + "step", 0),
                     float_channel(image, layer + "distance", 1)};
+        case Semantic::Scalar:
+            return {scalar_channel(image, layer)};
         case Semantic::Other:
             break;
     }
@@ -126,7 +152,7 @@ nlohmann::json write_resource_files(const std::filesystem::path& dir, const Reso
     nlohmann::json channels = nlohmann::json::array();
     for (const ExrChannel& c : exr.channels)
         channels.push_back({{"name", c.name}, {"type", c.is_uint ? "UINT" : "FLOAT"}});
-    return {
+    nlohmann::json entry = {
         {"name", image.name},
         {"format", format::name(image.format)},
         {"width", image.width},
@@ -142,6 +168,10 @@ nlohmann::json write_resource_files(const std::filesystem::path& dir, const Reso
           {"depth_view", view::is_perspective_depth(first.semantic) ? "linear" : ""}}},
         {"exr", {{"file", "resources/" + stem + ".exr"}, {"channels", channels}}},
     };
+    // Only Scalar images have one, so the other entries stay as they were. From the read
+    // image, which carries what the graph declared, as the PNG and the EXR do.
+    if (first.semantic == Semantic::Scalar) entry["display"] = display_json(first.display);
+    return entry;
 }
 
 }  // namespace ds::capture

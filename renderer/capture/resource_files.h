@@ -10,6 +10,7 @@
 //   counts                                count       UINT
 //   surface ids                           id          UINT
 //   depth steps                           step, distance (scene units), FLOAT
+//   Scalar (graph/display.h)              the Display's exr_channel ("" : Y), FLOAT or UINT
 //   anything else                         R, G, B, A  by the format's channels; UINT if integer
 // A multisampled image has one layer per sample: "sample0.Z", "sample1.Z", …; a single-sample
 // image has no layer prefix. Integer values come through the inspect pass as floats, exact up
@@ -35,8 +36,8 @@ ExrImage exr_image(std::span<const InspectedImage> samples);
 
 // Writes `dir`/NAME.png and `dir`/NAME.exr for one graph image (`samples`: every sample of it
 // as read, in order) and returns report.json's entry for it, with the graph's format, size and
-// semantic; paths in the entry are relative to the capture folder, `dir` being its resources/
-// folder. Throws ds::Error.
+// semantic (a Scalar image's entry has its Display too, as "display"); paths in the entry are
+// relative to the capture folder, `dir` being its resources/ folder. Throws ds::Error.
 nlohmann::json write_resource_files(const std::filesystem::path& dir, const ResourceSummary& image,
                                     std::span<const InspectedImage> samples);
 

@@ -157,6 +157,8 @@ const char* semantic_name(Semantic semantic) {
             return "DepthStep";
         case Semantic::Other:
             return "Other";
+        case Semantic::Scalar:
+            return "Scalar";
     }
     return "?";
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The semantic every graph image carries (DESIGN decision 7): how the viewer and the capture
-// writer decode and show it. Its own header, free of Vulkan, so the view library
-// (renderer/view) can read it without the graph.
+// writer decode and show it. Built-in kinds have a decoder each in renderer/view; Scalar is
+// any one-value image, shown as its graph::Display (display.h) says. Its own header, free of
+// Vulkan, so the view library (renderer/view) can read it without the graph.
 #include <cstdint>
 
 namespace ds::graph {
@@ -19,6 +20,7 @@ enum class Semantic : uint8_t {
     SurfaceId,  // u32 surface ids (0: nothing drawn; gpu_scene.h SurfaceTable)
     DepthStep,  // r: one depth step along the view ray, g: the ray distance (scene units)
     Other,
+    Scalar,  // r: one value, shown as the image's graph::Display says (display.h)
 };
 
 }  // namespace ds::graph

@@ -6,6 +6,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/graph/display.h"
 #include "renderer/graph/semantic.h"
 #include "renderer/vk/memory.h"
 
@@ -44,6 +45,7 @@ struct ImageDesc {
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     uint32_t mip_levels = 1;
     Semantic semantic = Semantic::Other;
+    Display display{};  // how a Scalar image is shown; the other semantics ignore it
 };
 
 struct BufferDesc {

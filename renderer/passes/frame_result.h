@@ -25,6 +25,9 @@ struct ResourceSummary {
     VkFormat format = VK_FORMAT_UNDEFINED;  // images
     uint32_t width = 0, height = 0, samples = 1;
     graph::Semantic semantic = graph::Semantic::Other;
+    // Scalar images: how they are shown. Not filled yet (Renderer's summarize copies the
+    // semantic only); the read images carry it (InspectedImage::display).
+    graph::Display display{};
     graph::Lifetime lifetime = graph::Lifetime::Transient;
     uint64_t bytes = 0;  // buffers
 };

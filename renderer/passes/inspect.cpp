@@ -73,6 +73,7 @@ std::vector<InspectPass::Read> InspectPass::plan(const graph::RenderGraph& graph
         r.info.name = wanted[i].resource;
         r.info.format = info.image.format;
         r.info.semantic = info.image.semantic;
+        r.info.display = info.image.display;
         r.info.width = info.extent.width;
         r.info.height = info.extent.height;
         r.info.samples = uint32_t(info.image.samples);

@@ -199,6 +199,49 @@ void decode_depth_step(const InspectedImage& image, const ViewParams& params, si
     view.unit = "scene units per depth step (log)";
 }
 
+// A Scalar image's range: `r` over the shown quantity, black and white in the value's unit.
+struct ScalarRange {
+    Range r;
+    float black = 0.0f, white = 1.0f;
+};
+
+// The viewer's manual range, else the one the image's Display picks (graph/display.h).
+ScalarRange scalar_range(const InspectedImage& image, const ViewParams& params, size_t count) {
+    using Rule = graph::DisplayRange::Rule;
+    const graph::Display& d = image.display;
+    const graph::ValueScale scale = d.scale;
+    auto manual = [scale](float black, float white) {
+        return ScalarRange{detail::scalar_range(scale, black, white), black, white};
+    };
+    if (!params.auto_fit) return manual(params.black, params.white);
+    if (d.range.rule == Rule::Fixed) return manual(d.range.black, d.range.white);
+    const bool log = scale == graph::ValueScale::Log;
+    // Fitted on the values (log10 keeps their order), so black and white are values read.
+    const MinMax m = fit(image.texels.data(), count, [log](const float* t) {
+        return log && !(t[0] > 0.0f) ? std::numeric_limits<float>::quiet_NaN() : t[0];
+    });
+    const float zero = log ? 1.0f : 0.0f, one = log ? 10.0f : 1.0f;  // shown 0 and 1
+    if (d.range.rule == Rule::ZeroToMax)
+        return manual(zero, !m.empty() && m.hi > zero ? m.hi : one);
+    if (m.empty()) return manual(zero, one);
+    if (m.lo == m.hi) return {Range::flat(detail::scalar_shown(scale, m.lo)), m.lo, m.hi};
+    return manual(m.lo, m.hi);
+}
+
+// Scalar: r as its Display says (scale, range, palette, unit); the channel is ignored.
+void decode_scalar(const InspectedImage& image, const ViewParams& params, size_t count,
+                   uint8_t* out, DecodedView& view) {
+    const graph::Display& d = image.display;
+    const ScalarRange range = scalar_range(image, params, count);
+    each_texel(image.texels.data(), count, out, [&](const float* t, uint8_t* p) {
+        if (!std::isfinite(t[0])) return put(p, kNonFiniteColor);
+        put(p, detail::scalar_rgb(d, range.r, t[0]));
+    });
+    view.black = range.black;
+    view.white = range.white;
+    view.unit = d.unit;
+}
+
 // Surface ids: a colour of its own per id (a hash: neighbours differ), nothing drawn in the sky
 // colour. No range.
 void decode_surface(const InspectedImage& image, size_t count, uint8_t* out) {
@@ -356,6 +399,9 @@ void decode_into(const InspectedImage& image, const ViewParams& params, DecodedV
             break;
         case Semantic::Other:
             decode_other(image, vp, count, p, out);
+            break;
+        case Semantic::Scalar:
+            decode_scalar(image, vp, count, p, out);
             break;
     }
 }

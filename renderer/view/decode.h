@@ -19,15 +19,18 @@
 // - Count: heat map (count_color) over black..white; a count <= black is black. Auto-fit uses
 //   0..max, so zero is always black.
 // - Other: the format's first channels as rgb (one channel as grey) over the range.
+// - Scalar: r as the image's graph::Display says (graph/display.h: log or linear, its range
+//   rule for auto-fit, grey or the heat map); the range is in the value's unit (Log too), the
+//   unit is the Display's.
 // `channel` 0..3 shows that channel as grey, through the same transform (range, exposure...),
-// for the multi-channel semantics (normals, colours, Other); depth, scalars, AO and counts have
-// one quantity in r and ignore it. A texel whose shown quantity is NaN or infinite is
+// for the multi-channel semantics (normals, colours, Other); depth, scalars (Scalar too), AO and
+// counts have one quantity in r and ignore it. A texel whose shown quantity is NaN or infinite is
 // kNonFiniteColor (magenta), and auto-fit skips it.
 // Auto-fit: black/white = the finite min/max of the shown quantity over the image (depth:
-// excluding sky; counts: black 0, white max). A flat image (min == max) shows mid grey; an
-// image with nothing to fit (all sky, all NaN, no count above 0) uses the default range:
-// znear..zfar for linear depth, 0..1 otherwise. A manual range with black == white is a
-// threshold: at or below black shows 0, above 1; black > white inverts. A colour's alpha
+// excluding sky; counts: black 0, white max; Scalar: its Display's rule). A flat image (min == max)
+// shows mid grey; an image with nothing to fit (all sky, all NaN, no count above 0) uses the
+// default range: znear..zfar for linear depth, 0..1 otherwise. A manual range with black == white
+// is a threshold: at or below black shows 0, above 1; black > white inverts. A colour's alpha
 // (channel 3 of HdrColor, LdrColor) shows as stored, clamped to 0..1: no exposure, no encode.
 #include <array>
 #include <cstdint>
@@ -46,7 +49,7 @@ struct ViewParams {
     DepthView depth = DepthView::Linear;  // depth semantics (not ShadowDepth: always raw)
     bool auto_fit = true;                 // black/white from the image (see above)
     // Range when !auto_fit, in the shown quantity's units (linear depth: scene units; raw
-    // depth, scalars, Other: stored value; counts: count).
+    // depth, scalars, Other: stored value; counts: count; Scalar: the value, log scale too).
     float black = 0.0f, white = 1.0f;
     int channel = -1;       // -1 all, 0..3 isolate r/g/b/a as grey
     float exposure = 0.0f;  // HdrColor: EV stops, before the clamp and sRGB encode
@@ -57,7 +60,7 @@ struct DecodedView {
     std::vector<uint8_t> rgba8;        // tightly packed, row 0 = top, alpha 255
     float black = 0.0f, white = 1.0f;  // the range actually used (after auto-fit); 0..1 where
                                        // the semantic ignores the range
-    std::string unit;                  // "scene units", "raw depth", "count", "" (stored values)
+    std::string unit;  // "scene units", "raw depth", "count", a Scalar's, "" (stored values)
 };
 
 // Colours with a meaning of their own.

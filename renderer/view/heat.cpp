@@ -106,4 +106,23 @@ std::vector<LegendStop> log_legend(float black, float white, int stops) {
     return out;
 }
 
+std::vector<LegendStop> display_legend(const graph::Display& display, float black, float white,
+                                       int stops) {
+    std::vector<LegendStop> out;
+    if (black == white) {
+        const Range flat = Range::flat(detail::scalar_shown(display.scale, black));
+        out.push_back({black, detail::scalar_rgb(display, flat, black)});
+        return out;
+    }
+    if (!(white > black) || stops < 2) return out;
+    const Range r = detail::scalar_range(display.scale, black, white);
+    const bool log = display.scale == graph::ValueScale::Log;
+    for (int k = 0; k < stops; ++k) {
+        const float shown = r.black + (r.white - r.black) * float(k) / float(stops - 1);
+        const float value = log ? std::pow(10.0f, shown) : shown;
+        out.push_back({value, detail::scalar_rgb(display, r, value)});
+    }
+    return out;
+}
+
 }  // namespace ds::view

@@ -8,6 +8,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/graph/display.h"
 #include "renderer/graph/semantic.h"
 
 namespace ds {
@@ -21,6 +22,7 @@ struct InspectedImage {
     std::string name;
     VkFormat format = VK_FORMAT_UNDEFINED;
     graph::Semantic semantic = graph::Semantic::Other;
+    graph::Display display{};  // Scalar: how it is shown (graph/display.h)
     uint32_t width = 0, height = 0;
     uint32_t samples = 1;       // of the resource
     uint32_t sample = 0;        // the sample that was read

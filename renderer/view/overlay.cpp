@@ -18,9 +18,10 @@ std::optional<InspectedImage> wasted_image(const InspectedImage& shaded,
                                            const InspectedImage& depth) {
     const auto name = count_image_name(shaded.name);
     const size_t texels = size_t(shaded.width) * shaded.height;
-    if (!name || name->kind != kShadedKind || !is_perspective_depth(depth.semantic) ||
-        shaded.width != depth.width || shaded.height != depth.height ||
-        shaded.texels.size() != texels * 4 || depth.texels.size() != texels * 4)
+    if (!name || name->kind != kShadedKind || shaded.semantic != graph::Semantic::Count ||
+        !is_perspective_depth(depth.semantic) || shaded.width != depth.width ||
+        shaded.height != depth.height || shaded.texels.size() != texels * 4 ||
+        depth.texels.size() != texels * 4)
         return std::nullopt;
     InspectedImage out;
     out.name = count_image(name->pass, kWastedKind);

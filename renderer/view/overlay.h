@@ -39,7 +39,7 @@ inline std::string count_image(std::string_view pass, std::string_view kind) {
 // A counting pass's wasted fragments per pixel: max(shaded - covered, 0), covered = 1 where
 // `depth` (the frame's resolved scene depth) is not at the far value — the pixels
 // FrameResult::covered_pixels counts. A Count image named "<pass>_wasted" (from
-// `shaded`'s name); none when `shaded` is no "<pass>_counts" image, `depth` is no perspective
+// `shaded`'s name); none when `shaded` is no "<pass>_counts" Count image, `depth` is no perspective
 // depth, or the sizes differ.
 std::optional<InspectedImage> wasted_image(const InspectedImage& shaded,
                                            const InspectedImage& depth);

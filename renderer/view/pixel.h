@@ -4,7 +4,11 @@
 // the readout turn a value into the same byte. Not for callers outside renderer/view.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
+
+#include "renderer/graph/display.h"
 
 namespace ds::view::detail {
 
@@ -50,5 +54,30 @@ struct Range {
 
     float t(float v) const { return (v - black) * scale + bias; }
 };
+
+// A Scalar image's shown quantity (graph/display.h): v, or log10 v (NaN for v <= 0).
+inline float scalar_shown(graph::ValueScale scale, float v) {
+    if (scale == graph::ValueScale::Linear) return v;
+    return v > 0.0f ? std::log10(v) : std::numeric_limits<float>::quiet_NaN();
+}
+// A black..white range in the value's unit as the range over the shown quantity (Log: values
+// at or below 0 count as 1e-30).
+inline Range scalar_range(graph::ValueScale scale, float black, float white) {
+    if (scale == graph::ValueScale::Linear) return Range::manual(black, white);
+    return Range::manual(std::log10(std::max(black, 1e-30f)), std::log10(std::max(white, 1e-30f)));
+}
+// The colour of a finite value `v` of a Scalar image over `r` (the shown quantity's range):
+// decode and the legend both come here, so the legend matches the pixels.
+inline Rgb scalar_rgb(const graph::Display& d, const Range& r, float v) {
+    const bool log = d.scale == graph::ValueScale::Log;
+    if (log && !(v > 0.0f)) return {0, 0, 0};  // no log: nothing to show
+    const float t = r.t(log ? std::log10(v) : v);
+    if (d.palette == graph::Palette::Grey) {
+        const uint8_t g = unorm8(t);
+        return {g, g, g};
+    }
+    const int i = heat_index(t);
+    return heat_table()[log ? std::max(i, 1) : i];  // Log: only "no value" is black
+}
 
 }  // namespace ds::view::detail

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "renderer/format/format.h"
 #include "renderer/view/decode.h"
@@ -126,6 +127,10 @@ void describe(const InspectedImage& image, Readout& r) {
             r.raw_text = r.channels == 1 ? text("%.5g", double(v))
                                          : tuple_text(r.raw.data(), r.channels, "%.5g");
             break;
+        case Semantic::Scalar:
+            r.raw_text = text("%.5g", double(v));
+            r.decoded_text = hover_text(image.display.hover, v);
+            break;
     }
 }
 
@@ -137,6 +142,27 @@ std::string length_text(float metres) {
     if (m < 1.0) return text("%.3g mm", m * 1e3);
     if (m < 1e3) return text("%.3g m", m);
     return text("%.3g km", m * 1e-3);
+}
+
+std::string value_text(float value) {
+    const std::string s = text("%.3g", double(value));
+    const double rounded = std::abs(std::strtod(s.c_str(), nullptr));
+    if (s.find('e') == std::string::npos || rounded < 1e3 || rounded >= 1e6) return s;
+    return text("%.0f", std::strtod(s.c_str(), nullptr));  // "1.23e+03" -> "1230"
+}
+
+std::string hover_text(std::string_view format, float value) {
+    const std::string number = value_text(value);
+    std::string out;
+    for (size_t i = 0; i < format.size(); ++i) {
+        if (format.compare(i, 2, "{}") == 0) {
+            out += number;
+            ++i;
+        } else {
+            out += format[i];
+        }
+    }
+    return out;
 }
 
 std::optional<Readout> readout(const InspectedImage& image, uint32_t x, uint32_t y) {

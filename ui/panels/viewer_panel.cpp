@@ -10,6 +10,7 @@
 #include "renderer/graph/names.h"
 #include "renderer/view/decode.h"
 #include "renderer/view/heat.h"
+#include "renderer/view/readout.h"
 #include "ui/panels/panels.h"
 #include "ui/viewer_blit.h"
 
@@ -159,9 +160,36 @@ void controls(PanelIo& io) {
     if (ImGui::SmallButton("capture")) io.actions.push_back(CaptureFrame{});  // F12 too
 }
 
+// A Scalar image's legend: its title over a colour bar (decode's colours from black to
+// white), black's value at the bar's left, white's with the unit at its right.
+void colour_bar(const ViewLegend& scale) {
+    const graph::Display& d = *scale.display;
+    ImGui::TextDisabled("%s", scale.label.c_str());
+    ImGui::TextUnformatted(view::value_text(scale.black).c_str());
+    ImGui::SameLine();
+    const std::vector<LegendStop> stops = view::display_legend(d, scale.black, scale.white);
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const float width = 240.0f, height = ImGui::GetTextLineHeight();
+    const float step = width / float(std::max<size_t>(stops.size(), 1));
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    for (size_t i = 0; i < stops.size(); ++i) {
+        const std::array<uint8_t, 3>& c = stops[i].rgb;
+        draw->AddRectFilled(ImVec2(at.x + step * float(i), at.y),
+                            ImVec2(at.x + step * float(i + 1), at.y + height),
+                            IM_COL32(c[0], c[1], c[2], 255));
+    }
+    ImGui::Dummy(ImVec2(width, height));
+    ImGui::SameLine();
+    std::string white = view::value_text(scale.white);
+    if (!d.unit.empty()) white += " " + d.unit;
+    if (d.scale == graph::ValueScale::Log) white += " (log)";
+    ImGui::TextUnformatted(white.c_str());
+}
+
 // A heat map's legend: counts, or scene units on a log scale (depth_precision), after what
-// shares it ("forward: counts, wasted").
+// shares it ("forward: counts, wasted"); a Scalar image's colour bar.
 void legend(const ViewLegend& scale, int& id) {
+    if (scale.display) return colour_bar(scale);
     const bool log_scale = scale.log;
     const std::vector<LegendStop> stops = log_scale ? view::log_legend(scale.black, scale.white)
                                                     : count_legend(scale.black, scale.white);
