@@ -75,6 +75,7 @@ std::vector<ResourceSummary> summarize(const graph::RenderGraph& graph) {
                           .height = r.extent.height,
                           .samples = uint32_t(r.image.samples),
                           .semantic = r.image.semantic,
+                          .display = r.image.display,
                           .lifetime = r.lifetime,
                           .bytes = r.size};
         if (!r.is_image) s.format = VK_FORMAT_UNDEFINED;
