@@ -125,14 +125,17 @@ void GpuScene::upload_geometry(const scene::Scene& scene, vk::UploadBatch& batch
     }
     const VkDeviceSize vbytes = vertices.size() * sizeof(scene::Vertex);
     const VkDeviceSize ibytes = indices.size() * sizeof(uint32_t);
-    vertices_ =
-        vk::Buffer(context_, {std::max(vbytes, kMinBufferSize),
-                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                              vk::MemoryUsage::GpuOnly, "scene vertices"});
-    indices_ =
-        vk::Buffer(context_, {std::max(ibytes, kMinBufferSize),
-                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                              vk::MemoryUsage::GpuOnly, "scene indices"});
+    // Storage usage too: compute passes (triangle_size) fetch positions and indices.
+    vertices_ = vk::Buffer(context_,
+                           {std::max(vbytes, kMinBufferSize),
+                            VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            vk::MemoryUsage::GpuOnly, "scene vertices"});
+    indices_ = vk::Buffer(context_,
+                          {std::max(ibytes, kMinBufferSize),
+                           VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                               VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                           vk::MemoryUsage::GpuOnly, "scene indices"});
     batch.buffer(vertices_, vertices.data(), vbytes);
     batch.buffer(indices_, indices.data(), ibytes);
 }
