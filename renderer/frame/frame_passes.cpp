@@ -26,6 +26,7 @@
 #include "renderer/passes/skybox.h"
 #include "renderer/passes/tonemap.h"
 #include "renderer/passes/transparent.h"
+#include "renderer/passes/triangle_size.h"
 #include "renderer/passes/zfight.h"
 
 namespace ds {
@@ -65,6 +66,7 @@ const std::vector<Entry>& pass_list() {
         pass<AoTemporalPass>(),
         pass<ContactShadowsPass>(),
         pass<ZfightPass>(),  // diagnostics: against the prepass's result
+        pass<TriangleSizePass>(),
         pass<ForwardPass>(),
         // Right after forward, one run: render_path=subpass puts them all in subpass 1 of one
         // render pass. The sky covers only "far" pixels, which no decal does, so its place
