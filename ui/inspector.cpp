@@ -89,7 +89,15 @@ void Inspector::set_scene(scene::Scene scene) {
     scene_ = std::move(scene);
     summary_ = summarize(scene_);
     camera_.reset(scene_.camera, scene_.bounds);
-    viewer_.draw = -1;  // a draw group of the previous scene
+    // What was picked or selected names the previous scene's instances, draws and pairs: a
+    // pixel history read with this scene's names would be wrong (or out of its range).
+    viewer_.draw = -1;
+    viewer_.zfight_pair = -1;
+    pixel_history_.reset();
+    pixel_depth_.reset();
+    pixel_samples_.reset();
+    pixel_label_.clear();
+    pixel_error_.clear();
     // Per-material cutoffs name the previous scene's materials: keep those this one has.
     auto cutoffs = knob_value(settings_, knobs::kMaterialAlphaCutoff);
     std::erase_if(cutoffs, [&](const auto& entry) {

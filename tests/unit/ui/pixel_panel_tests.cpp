@@ -3,6 +3,7 @@
 // mode.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <optional>
@@ -91,6 +92,32 @@ TEST_F(PixelPanel, PickPixelListsTheOverdrawLayersAndAClickPicks) {
 // The issue's other two pixel-history cases through the inspector's action: overdraw with the
 // prepass off (every layer in authored order, all passing), and a foliage pixel where the
 // frame's own prepass_discarded image says a cut-out was discarded (a masked prepass
+// A scene switch drops what was picked: the history named atrium's instances (224 of them),
+// and the Pixel panel read them with foliage's names (24 instances): out of range, a crash
+// once the panel drew (the issue: "vector::_M_range_check: __n (which is 129)").
+TEST_F(PixelPanel, ASceneSwitchDropsThePickAndTheSelectedPair) {
+    auto ui = open("atrium", {}, {960, 540});
+    ui::Inspector& in = ui->inspector();
+    const VkExtent2D size = in.render_size();
+    uint32_t highest = 0;
+    for (uint32_t k = 1; k < 8 && highest < 24; ++k) {  // until an instance foliage lacks
+        in.queue(ui::PickPixel{size.width * k / 8, size.height / 3});
+        ui->frame();
+        ASSERT_TRUE(in.pixel_history()) << in.pixel_error();
+        for (const PixelFragment& f : in.pixel_history()->fragments)
+            highest = std::max(highest, f.instance);
+    }
+    ASSERT_GE(highest, 24u) << "no picked fragment names an instance foliage lacks";
+    in.viewer().zfight_pair = 0;
+    in.queue(ui::LoadScene{"foliage"});
+    for (int i = 0; i < 3; ++i) ui->frame();  // every panel draws with the new scene
+    EXPECT_EQ(in.scene().name, "foliage");
+    EXPECT_FALSE(in.pixel_history());
+    EXPECT_FALSE(in.pixel_samples());
+    EXPECT_TRUE(in.pixel_label().empty());
+    EXPECT_EQ(in.viewer().zfight_pair, -1);
+}
+
 // fragment, alpha below the cutoff).
 TEST_F(PixelPanel, PickPixelWithoutPrepassAndInAFoliageCutOut) {
     auto ui = open("overdraw", settings_of({"prepass=off"}), {1280, 720});
