@@ -309,9 +309,10 @@ void TriangleSize::check(const std::vector<std::string>& settings) {
               << " covered pixels checked, largest relative error " << t.worst << "\n";
     for (uint32_t instance = 0; instance < kInstances; ++instance)
         EXPECT_GT(t.pixels_of[instance], 0u) << scene_->instances[instance].node << " wins none";
-    // The sub-pixel triangles are there: 42 pixels under 1 px² at 1x, 30 at 4x (sample 0 lies
-    // off the pixel centre and misses some).
-    EXPECT_GE(t.under_1, 20u);
+    // The sub-pixel triangles are there: 42 pixels under 1 px² at 1x on lavapipe (the H200 meets
+    // the same bound); at 4x sample 0 lies off the pixel centre and which sub-pixel triangles
+    // it meets depends on the device's rasteriser (30 on lavapipe, 8 on the H200).
+    EXPECT_GE(t.under_1, settings == std::vector<std::string>{"msaa=4"} ? 5u : 20u);
     EXPECT_GE(t.under_4 - t.under_1, 50u);
     const TriangleSizeResult& r = *f.find<TriangleSizeResult>();
     EXPECT_EQ(r.covered, t.covered);
