@@ -89,15 +89,7 @@ void Inspector::set_scene(scene::Scene scene) {
     scene_ = std::move(scene);
     summary_ = summarize(scene_);
     camera_.reset(scene_.camera, scene_.bounds);
-    // What was picked or selected names the previous scene's instances, draws and pairs: a
-    // pixel history read with this scene's names would be wrong (or out of its range).
-    viewer_.draw = -1;
-    viewer_.zfight_pair = -1;
-    pixel_history_.reset();
-    pixel_depth_.reset();
-    pixel_samples_.reset();
-    pixel_label_.clear();
-    pixel_error_.clear();
+    forget_scene_state();  // no index into the previous scene's tables survives
     // Per-material cutoffs name the previous scene's materials: keep those this one has.
     auto cutoffs = knob_value(settings_, knobs::kMaterialAlphaCutoff);
     std::erase_if(cutoffs, [&](const auto& entry) {
@@ -251,6 +243,7 @@ void Inspector::change_settings(const Settings& changed) {
         set_scene(std::move(rebuilt));
     } else {
         settings_ = changed;
+        repick();  // the picked pixel's history under the new settings
     }
     message_.clear();
 }
@@ -262,6 +255,7 @@ void Inspector::update() {
     std::vector<Action> actions;
     actions.swap(pending_);
     for (const Action& a : actions) apply(a);
+    drop_pick_of_other_size();
     camera_input_.dt =
         std::clamp(ImGui::GetCurrentContext() ? ImGui::GetIO().DeltaTime : 0.016f, 0.0f, 0.25f);
     camera_input_.viewport_height = std::max(viewer_.h, 1.0f);
@@ -305,32 +299,13 @@ void Inspector::measure_advice() {
 void Inspector::pick_pixel(const PickPixel& pick) {
     const VkExtent2D size = render_size();
     ++pixel_picks_;
-    try {
-        // The pick names a texel of the frame shown, which may be a smaller one rendered
-        // while the camera moved: the history is of the same point at the full size.
-        const uint32_t x =
-            frame_.width ? uint32_t(uint64_t(pick.x) * size.width / frame_.width) : pick.x;
-        const uint32_t y =
-            frame_.height ? uint32_t(uint64_t(pick.y) * size.height / frame_.height) : pick.y;
-        FrameResult f;
-        worker_->exclusive([&](Renderer& r) {
-            f = r.render(camera_.camera(), settings_,
-                         {.width = size.width,
-                          .height = size.height,
-                          .read_back = ReadBack::No,
-                          .inspect = {},
-                          .pixel = PixelQuery{x, y},
-                          .samples = SampleQuery{x, y, 1, 1}});
-        });
-        pixel_history_ = f.copy_of<PixelHistory>();
-        pixel_depth_ = f.depth;
-        pixel_samples_ = f.copy_of<MsaaSamples>();
-        pixel_label_ =
-            scene_.name + " at " + std::to_string(size.width) + "x" + std::to_string(size.height);
-        pixel_error_.clear();
-    } catch (const std::exception& e) {
-        pixel_error_ = e.what();  // a pixel outside the frame, a refused setting
-    }
+    // The pick names a texel of the frame shown, which may be a smaller one rendered while the
+    // camera moved: the history is of the same point at the full size.
+    const uint32_t x =
+        frame_.width ? uint32_t(uint64_t(pick.x) * size.width / frame_.width) : pick.x;
+    const uint32_t y =
+        frame_.height ? uint32_t(uint64_t(pick.y) * size.height / frame_.height) : pick.y;
+    render_pick({x, y, size});
 }
 
 // The selected zfight pair's pixels as a keep mask (empty: no pair selected, show all).

@@ -289,6 +289,18 @@ class Inspector {
     void refresh_view();
     void measure_advice();
     void pick_pixel(const PickPixel& pick);
+    // inspector_state.cpp: what is derived from a scene or a frame follows it.
+    struct Pick {
+        uint32_t x = 0, y = 0;  // at the full render size
+        VkExtent2D size{};
+    };
+    void render_pick(const Pick& pick);  // the history of `pick`, under the current settings
+    void repick();                       // settings changed: the same pixel again, if picked
+    void drop_pick();
+    void drop_pick_of_other_size();  // the render size changed: the pick names another point
+    void forget_scene_state();       // a new scene: picks, selections, advice, the compare pin
+    // A new frame landed: the selected Z-fight pair is found again by its surfaces (-1 gone).
+    void follow_selected_pair(const FrameResult& previous);
     // inspector_capture.cpp
     struct PendingCapture {
         scene::Camera camera;  // as the frame shown when it was asked for
@@ -329,6 +341,7 @@ class Inspector {
     std::optional<DepthResult> pixel_depth_;
     std::optional<MsaaSamples> pixel_samples_;
     std::string pixel_label_, pixel_error_;
+    std::optional<Pick> pick_;  // the last pick that rendered
     uint64_t pixel_picks_ = 0;
     uint64_t updates_ = 0;
     std::optional<PendingCapture> pending_capture_;

@@ -11,6 +11,7 @@
 // after the camera stops is full size, from a cut.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <imgui.h>
 
@@ -138,7 +139,8 @@ bool Inspector::collect() {
         }
         return false;
     }
-    frame_ = std::move(*done->frame);
+    const FrameResult previous = std::exchange(frame_, std::move(*done->frame));
+    follow_selected_pair(previous);
     last_good_ = done->job.settings;
     shown_nominal_ = done->job.nominal;
     ++frames_rendered_;
