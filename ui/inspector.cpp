@@ -145,6 +145,7 @@ void Inspector::key_pressed(int key) {
 }
 
 void Inspector::draw() {
+    frames_drawn_ = frames_rendered_;  // the panels below show the newest frame collected
     const ImGuiIO& io = ImGui::GetIO();
     const PanelLayout layout{io.DisplaySize.x, io.DisplaySize.y};
     PanelIo panel{*this, viewer_, camera_input_, pending_};

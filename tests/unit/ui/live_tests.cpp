@@ -96,6 +96,28 @@ TEST_F(LiveInspector, UiFramesContinueWhileASlowSceneFrameRenders) {
     EXPECT_EQ(ui->ui_validation_messages(), 0u);
 }
 
+// A frame that lands is shown with no input: the panels draw before update() collects it, so
+// the UI frame that collects it is not the last one; the inspector is idle (the window would
+// sleep until an event) only once the panels have drawn it.
+TEST_F(LiveInspector, AFrameThatLandsIsDrawnBeforeTheUiSleeps) {
+    auto ui = open("edges");
+    ui::Inspector& in = ui->inspector();
+    for (int round = 0; round < 2; ++round) {  // the first frame, then a setting's
+        if (round == 1) in.queue(ui::SetSetting{"sun_azimuth", "80"});
+        const uint64_t before = in.frames_rendered();
+        const auto deadline = std::chrono::steady_clock::now() + 120s;
+        while (in.frames_rendered() == before && std::chrono::steady_clock::now() < deadline) {
+            ui->frame();  // idle only once the frame has been drawn
+            if (in.frames_rendered() == before) std::this_thread::sleep_for(5ms);
+        }
+        ASSERT_GT(in.frames_rendered(), before) << "round " << round;
+        EXPECT_FALSE(in.idle()) << "round " << round << ": collected after the panels drew";
+        ui->frame();
+        EXPECT_TRUE(in.idle()) << "round " << round;
+    }
+    EXPECT_EQ(ui->ui_validation_messages(), 0u);
+}
+
 TEST_F(LiveInspector, RendersOnlyWhenSomethingChanged) {
     auto ui = open("edges");
     ui::Inspector& in = ui->inspector();
