@@ -8,7 +8,16 @@
 // the pixel's count and appends (pixel, winner, competitor, steps and gap) for the report:
 // the gap in scene units along the view ray as a float with its low 11 mantissa bits
 // replaced by the steps (at most 1024).
+// PER_SAMPLE=1 (msaa > 1): the pass runs multisampled against a per-sample zfight_bound and
+// this shader runs once per sample (it reads gl_SampleID, which turns sample shading on):
+// each sample's fragment depth (gl_FragCoord at the sample) is compared with that sample's
+// stored depth and winner (msaa_depth, msaa_surface_id). The count image stays per pixel and
+// sums the competing samples; records name the pixel, so pairs count distinct pixels.
 #extension GL_GOOGLE_include_directive : require
+
+#ifndef PER_SAMPLE
+#define PER_SAMPLE 0
+#endif
 
 #include "common/bindings.glsl"
 
@@ -21,8 +30,15 @@ layout(location = 2) in vec2 in_uv0;
 layout(location = 3) in vec4 in_tangent;
 layout(location = 4) flat in uint in_surface_base;
 
+#if PER_SAMPLE
+layout(set = 2, binding = 0) uniform usampler2DMS surface_ids;
+layout(set = 2, binding = 1) uniform sampler2DMS stored_depth;
+#define STORED_SAMPLE gl_SampleID
+#else
 layout(set = 2, binding = 0) uniform usampler2D surface_ids;
 layout(set = 2, binding = 1) uniform sampler2D stored_depth;
+#define STORED_SAMPLE 0  // the level
+#endif
 layout(set = 2, binding = 2, r32ui) uniform uimage2D competitors;
 layout(set = 2, binding = 3, std430) buffer Records {
     uint count;  // appended; past push.capacity the records are dropped (and counted)
@@ -52,14 +68,14 @@ uint depth_steps(float a, float b) {
 
 void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
-    const uint winner = texelFetch(surface_ids, p, 0).r;
+    const uint winner = texelFetch(surface_ids, p, STORED_SAMPLE).r;
     const uint me = in_surface_base + uint(gl_PrimitiveID) + 1u;
     if (winner == 0u || winner == me) return;
     if ((material.flags & kMaterialAlphaMask) != 0u) {
         const float alpha = texture(base_color_texture, in_uv0).a * material.base_color_factor.a;
         if (alpha < alpha_cutoff()) return;
     }
-    const float stored = texelFetch(stored_depth, p, 0).r;
+    const float stored = texelFetch(stored_depth, p, STORED_SAMPLE).r;
     const uint steps = depth_steps(stored, gl_FragCoord.z);
     if (steps > push.max_steps) return;
     imageAtomicAdd(competitors, p, 1u);

@@ -323,8 +323,9 @@ std::vector<VkRenderingAttachmentInfo> DepthPrepass::color_attachments(graph::Pa
     if (res.surface_id.valid()) {  // cleared to 0, none
         colors.push_back(image(res.surface_id, msaa.surface_id, {}));
         if (multi) colors.back().resolveMode = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;  // integers
-        // The sample view reads every sample after the frame (msaa_samples).
-        if (multi && in.samples) colors.back().storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        // The sample view (msaa_samples) and zfight read every sample later in the frame.
+        if (multi && (in.samples || in.options.requests.surface_id_samples))
+            colors.back().storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     }
     return colors;
 }

@@ -24,7 +24,8 @@
 // alpha_to_coverage=on (msaa > 1): the pipeline with the alpha test writes a sharpened alpha
 // to output 0 (normals) and alpha-to-coverage cuts samples instead of the discard.
 // surface_id (knob surface_id, or zfight): a third attachment, R32_UINT res.surface_id, the
-// winning surface per pixel (at msaa > 1 resolved SAMPLE_ZERO, as integers must be).
+// winning surface per pixel (at msaa > 1 resolved SAMPLE_ZERO, as integers must be; the
+// samples, res.msaa_surface_id, are STOREd for the sample view and zfight).
 //
 // count_draws=on: the prepass decides visibility, so each of its draws is inside a precise
 // occlusion query (DrawQueries; samples_passed per draw group).

@@ -108,8 +108,11 @@ struct FrameOptions {
     // What passes ask of the passes that provide it (configure), and the providers' decisions
     // (resolve): per-pixel counts in every geometry pass (ClearCountsPass), the prepass's
     // winning surface per pixel (DepthPrepass), the depth step per pixel (DepthPrecisionPass).
+    // surface_id_samples: at msaa > 1 with surface ids, the prepass STOREs every sample of
+    // res.msaa_surface_id for a later pass (zfight), not only the SAMPLE_ZERO resolve.
     struct Requests {
         bool counts = false, surface_id = false, depth_precision = false;
+        bool surface_id_samples = false;
     } requests;
     bool count_fragments = false;
     bool surface_id = false;
@@ -181,7 +184,7 @@ struct FrameResources {
     graph::ImageHandle msaa_depth;
     graph::ImageHandle msaa_hdr;
     // msaa > 1 with surface_id: the prepass's per-sample surface ids (a transient, STOREd only
-    // when the frame has a SampleQuery: msaa_samples reads it).
+    // when the frame has a SampleQuery, msaa_samples reads it, or when requested: zfight).
     graph::ImageHandle msaa_surface_id;
     graph::ImageHandle final_image;  // R8G8B8A8_SRGB (imported; tonemap writes it)
     // With count_fragments=on: each counting pass's CountImages (those that run).
@@ -196,7 +199,8 @@ struct FrameResources {
                 &transparent_counts};
     }
     // Diagnostics (off: invalid). surface_id: R32_UINT, the prepass's winning surface per
-    // pixel (gpu_scene.h SurfaceTable; 0 = none); zfight: R32_UINT competitors per pixel.
+    // pixel (gpu_scene.h SurfaceTable; 0 = none); zfight: R32_UINT competitors per pixel (at
+    // msaa > 1 competing samples, summed over the pixel's samples).
     graph::ImageHandle surface_id;
     graph::ImageHandle zfight;
     graph::ImageHandle equal_check;      // R32_UINT: 0 ok, 1 hole, 2 shaded more than once

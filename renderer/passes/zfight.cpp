@@ -13,6 +13,7 @@
 #include "renderer/passes/scene_draw.h"
 #include "renderer/readback/host_readback.h"
 #include "renderer/shader/compiler.h"
+#include "renderer/vk/capabilities.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/functions.h"
 
@@ -95,24 +96,29 @@ ZfightPass::ZfightPass(const PassServices& services)
     layout_ = vk::PipelineLayout(services.context, sets, {&push, 1}, "zfight layout");
 }
 
-ShaderStages ZfightPass::compile(const Variant&) const {
+ShaderStages ZfightPass::compile(const Variant& v) const {
     // The prepass's vertex shader, handing the surface base on: the same gl_Position.
     const std::vector<shader::Define> surface = {{"SURFACE_ID", "1"}};
+    std::vector<shader::Define> frag;
+    if (v.per_sample()) frag.push_back({"PER_SAMPLE", "1"});
     return {services_.compiler.compile("depth_prepass.vert", shader::Stage::Vertex, surface).spirv,
-            services_.compiler.compile("zfight.frag", shader::Stage::Fragment).spirv};
+            services_.compiler.compile("zfight.frag", shader::Stage::Fragment, frag).spirv};
 }
 
 vk::Pipeline ZfightPass::create(const Variant& v, const ShaderStages& s) const {
-    return scene_pipeline_builder(layout_.handle(), s.vert, s.frag)
-        .depth_attachment(v.depth)
-        .build(services_.context, kPipelineName);
+    vk::GraphicsPipelineBuilder b = scene_pipeline_builder(layout_.handle(), s.vert, s.frag);
+    b.depth_attachment(v.depth);
+    // One invocation per sample (the shader's gl_SampleID asks for it too).
+    if (v.per_sample()) b.samples(v.samples).sample_shading(1.0f);
+    return b.build(services_.context, kPipelineName);
 }
 
 std::vector<SettingDef> ZfightPass::knobs() {
     return {bool_knob(kKnob, "diagnostics", false,
                       "Z-fight detector: re-rasterises opaque and masked geometry and counts, per "
                       "pixel, other surfaces within zfight_steps depth steps of the stored depth "
-                      "(image zfight, report zfight)",
+                      "(image zfight, report zfight); at msaa > 1 per sample, against each "
+                      "sample's stored depth and winner (the image sums the samples)",
                       Invalidates::Pipelines),
             int_knob(kSteps, "diagnostics", 4, 0, 1024,
                      "zfight: the largest gap, in representable steps of the depth format (ULPs "
@@ -120,14 +126,17 @@ std::vector<SettingDef> ZfightPass::knobs() {
                      Invalidates::Nothing)};
 }
 
-// It compares against the prepass's depth and winner, at pixel centres, which a multisampled
-// depth (stored at sample positions) is not; it names surfaces (surface_id) and measures gaps
-// along the ray (depth_precision).
+// It compares against the prepass's depth and winner (at msaa > 1 per sample, which takes
+// sample-rate shading); it names surfaces (surface_id, every sample's at msaa > 1) and
+// measures gaps along the ray (depth_precision).
 void ZfightPass::configure(const FrameSetup& setup, FrameOptions& o) {
     const bool knob = knob_value(setup.settings, kKnob);
     steps_ = uint32_t(knob_value(setup.settings, kSteps));
-    o.zfight = knob && o.prepass && !o.msaa() && !o.subpass;
+    const vk::DeviceReport& device = services_.context.report();
+    const bool per_sample_ok = !o.msaa() || device.sample_rate_shading;
+    o.zfight = knob && o.prepass && !o.subpass && per_sample_ok;
     if (o.zfight) o.requests.surface_id = o.requests.depth_precision = true;
+    if (o.zfight && o.msaa()) o.requests.surface_id_samples = true;
     if (!knob || o.zfight) return;
     if (!o.prepass)
         set_skipped("prepass off");
@@ -135,8 +144,9 @@ void ZfightPass::configure(const FrameSetup& setup, FrameOptions& o) {
         set_skipped(subpass_path_reason());
     else
         set_skipped(
-            "msaa > 1: it compares at pixel centres, a multisampled depth is stored per "
-            "sample");
+            "msaa > 1: it compares per sample, which needs the sampleRateShading "
+            "feature, which " +
+            device.candidate.name + " does not offer");
     if (o.subpass) set_turned_off(kKnob.name);
 }
 
@@ -145,13 +155,16 @@ void ZfightPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
     uses_.clear();
     if (!in.options.zfight) return;
     const VkExtent2D extent = graph.resources()[res.depth.index].extent;
+    // At msaa > 1 too (every fighting sample appends one): N samples of one pixel fill N.
     capacity_ = extent.width * extent.height * kRecordsPerPixel;
     const graph::BufferHandle records = services_.readback.import_storage(
         graph, "zfight_records", kPairsHeaderBytes + VkDeviceSize(capacity_) * 16,
         kPairsHeaderBytes);
     records_ = records;
-    const Bound bound{res.surface_id, res.depth, bound_.add(graph, in, res, steps_), res.zfight,
-                      records};
+    const bool msaa = in.options.msaa();
+    const Bound bound{msaa ? res.msaa_surface_id : res.surface_id,
+                      msaa ? res.msaa_depth : res.depth, bound_.add(graph, in, res, steps_),
+                      res.zfight, records};
     graph.add_pass(name(), [&](graph::PassBuilder& b) {
         b.read(res.frame_uniforms, Access::UniformRead,
                graph::Shader::Vertex | graph::Shader::Fragment);
@@ -185,7 +198,7 @@ void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bo
     set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());
     bind_geometry(cmd, *in.scene);
     const VkPipelineLayout layout = layout_.handle();
-    const Variant variant{.depth = in.options.depth_format};
+    const Variant variant{.depth = in.options.depth_format, .samples = in.options.samples};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get(variant));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
                             nullptr);

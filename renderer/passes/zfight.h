@@ -1,14 +1,19 @@
 #pragma once
 // zfight (zfight=on, with the prepass): the Z-fight detector. Opaque and masked geometry is
-// drawn again over the prepass result without a depth test; every fragment of another
-// surface than the pixel's winner (res.surface_id) that passes its alpha test and lies
-// within zfight_steps representable depth steps of the stored depth (D32_SFLOAT: ULPs; D24 /
-// D16: unorm steps) competes (shaders/zfight.frag). Image res.zfight (created and zeroed by
-// clear_counts) holds competitors per pixel; a host buffer of (pixel, winner, competitor,
-// steps) records becomes FrameResult::zfight's pairs. A surface is one triangle of one
-// instance, so overlapping triangles of one mesh fight too, and triangles that share an
-// edge never do (each pixel centre belongs to one of them). It needs the prepass and msaa=1
-// (a multisampled depth is stored at sample positions, not at the centre it compares at).
+// drawn again over the prepass result, tested early against zfight_bound (the stored depth
+// moved zfight_steps + 1 steps towards far); every fragment of another surface than the
+// pixel's winner (res.surface_id) that passes its alpha test and lies within zfight_steps
+// representable depth steps of the stored depth (D32_SFLOAT: ULPs; D24 / D16: unorm steps)
+// competes (shaders/zfight.frag). Image res.zfight (created and zeroed by clear_counts) holds
+// competitors per pixel; a host buffer of (pixel, winner, competitor, steps) records becomes
+// FrameResult::zfight's pairs. A surface is one triangle of one instance, so overlapping
+// triangles of one mesh fight too, and triangles that share an edge never do (each pixel
+// centre, or sample, belongs to one of them). It needs the prepass.
+// msaa > 1: it compares per sample. The pass runs multisampled against a multisampled bound
+// with sample shading (the device's sampleRateShading, else skipped), and each sample's
+// fragment is compared with that sample's stored depth (res.msaa_depth) and winner
+// (res.msaa_surface_id, which the prepass then STOREs): the competitor image sums competing
+// samples per pixel; a pair's pixels are the distinct pixels where it fights in any sample.
 #include <bit>
 #include <cstdint>
 
@@ -101,7 +106,7 @@ class ZfightPass final : public FramePass {
         graph::ImageHandle surfaces, depth, limit, competitors;  // limit: ZfightBound's
         graph::BufferHandle records;
     };
-    using Variant = DepthFormatVariant;  // the frame's depth_format (the limit's)
+    using Variant = ZfightVariant;  // the frame's depth_format and msaa (the limit's)
     ShaderStages compile(const Variant& variant) const;
     vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
     void record(graph::PassContext& ctx, const FrameInputs& in, const Bound& bound);

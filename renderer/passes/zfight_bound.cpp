@@ -21,13 +21,20 @@ ZfightBound::ZfightBound(const PassServices& services)
       nearest_(vk::nearest_clamp_sampler(services.context, "zfight bound nearest")),
       sets_(services.context, 1, kZfightBoundPoolSizes, "zfight bound sets"),
       pipelines_(
-          [this](const Variant&) {
-              return compile_fullscreen(services_.compiler, "zfight_bound.frag");
+          [this](const Variant& v) {
+              if (!v.per_sample())
+                  return compile_fullscreen(services_.compiler, "zfight_bound.frag");
+              return ShaderStages{
+                  services_.compiler.compile("fullscreen.vert", shader::Stage::Vertex).spirv,
+                  services_.compiler
+                      .compile("zfight_bound.frag", shader::Stage::Fragment, {{"PER_SAMPLE", "1"}})
+                      .spirv};
           },
           [this](const Variant& v, const ShaderStages& s) {
               return create_fullscreen(services_.context,
                                        {.fragment = "zfight_bound.frag",
                                         .depth = v.depth,
+                                        .samples = v.samples,
                                         .layout = layout_.handle(),
                                         .name = "zfight bound"},
                                        s);
@@ -42,12 +49,13 @@ ZfightBound::ZfightBound(const PassServices& services)
 
 graph::ImageHandle ZfightBound::add(graph::RenderGraph& graph, const FrameInputs& in,
                                     const FrameResources& res, uint32_t steps) {
-    const graph::ImageHandle stored = res.depth;
+    const graph::ImageHandle stored = in.options.msaa() ? res.msaa_depth : res.depth;
     graph::ImageHandle bound;
     graph.add_pass("zfight_bound", [&](graph::PassBuilder& b) {
         bound = b.create_image("zfight_bound",
                                {.format = in.options.depth_format,
                                 .size = graph::ImageSize::relative(1.0f),
+                                .samples = in.options.samples,
                                 .semantic = in.options.reverse_z ? graph::Semantic::ReverseZDepth
                                                                  : graph::Semantic::ForwardZDepth});
         b.read(res.frame_uniforms, graph::Access::UniformRead,
@@ -69,8 +77,9 @@ void ZfightBound::record(graph::PassContext& ctx, const FrameInputs& in, uint32_
     writer.update(services_.context.device(), set);
     const VkDescriptorSet sets[] = {in.frame_set, set};
     const BoundPush push{steps, format::depth_bits(in.options.depth_format)};
-    draw_fullscreen_depth(ctx, bound, pipelines_.get({.depth = in.options.depth_format}),
-                          layout_.handle(), sets, std::as_bytes(std::span(&push, 1)));
+    const Variant variant{.depth = in.options.depth_format, .samples = in.options.samples};
+    draw_fullscreen_depth(ctx, bound, pipelines_.get(variant), layout_.handle(), sets,
+                          std::as_bytes(std::span(&push, 1)));
 }
 
 }  // namespace ds::passes
