@@ -48,8 +48,9 @@ void zfight_section(PanelIo& io) {
     const ZfightResult* zfight = frame.find<ZfightResult>();
     if (!diagnostic_state(io, "zfight", zfight != nullptr)) return;
     const ZfightResult& z = *zfight;
-    ImGui::Text("%llu pixels fight, %zu pairs (gap <= %u steps)",
-                static_cast<unsigned long long>(z.pixels), z.pairs.size(), z.steps);
+    ImGui::Text("%s, %s (gap <= %s)", counted(z.pixels, "pixel fights", "pixels fight").c_str(),
+                counted(z.pairs.size(), "pair", "pairs").c_str(),
+                counted(z.steps, "step", "steps").c_str());
     if (ImGui::SmallButton("view zfight")) io.actions.push_back(SelectResource{"zfight"});
     ImGui::SameLine();
     if (ImGui::SmallButton("view surface_id")) io.actions.push_back(SelectResource{"surface_id"});

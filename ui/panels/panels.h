@@ -15,6 +15,11 @@
 
 namespace ds::ui {
 
+// "1 pair", "3 pairs": a count with its noun, singular or plural.
+inline std::string counted(uint64_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 struct PanelIo {
     const Inspector& inspector;
     ViewerState& viewer;

@@ -10,6 +10,7 @@
 #include <imgui.h>
 #include <glm/glm.hpp>
 
+#include "renderer/settings/frame_knobs.h"
 #include "ui/panels/panels.h"
 
 namespace ds::ui {
@@ -46,9 +47,9 @@ std::vector<int> accepted_ints(const SettingDef& def) {
 std::string number_for_keyword(PanelIo& io, const SettingDef& def) {
     double v = 0.5 * (def.min + def.max);
     const scene::Camera& camera = io.inspector.camera();
-    if (def.name == "fov") v = double(glm::degrees(camera.yfov));
-    if (def.name == "znear") v = double(camera.znear);
-    if (def.name == "zfar") v = double(camera.zfar);
+    if (def.name == knobs::kFov.name) v = double(glm::degrees(camera.yfov));
+    if (def.name == knobs::kZnear.name) v = double(camera.znear);
+    if (def.name == knobs::kZfar.name) v = double(camera.zfar);
     char text[32];
     std::snprintf(text, sizeof text, "%.4g", std::clamp(v, def.min, def.max));
     return text;
@@ -101,7 +102,8 @@ void float_knob(PanelIo& io, const SettingDef& def, const std::string& value) {
         tooltip(def);
         ImGui::SameLine();
     }
-    float v = keyword ? 0.5f : std::stof(value);
+    // At the keyword the slider shows the value in use (the scene camera's planes and fov).
+    float v = std::stof(keyword ? number_for_keyword(io, def) : value);
     if (keyword) ImGui::BeginDisabled();
     if (ImGui::SliderFloat(def.name.c_str(), &v, float(def.min), float(def.max), "%.3g")) {
         char text[32];

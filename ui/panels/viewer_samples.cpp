@@ -102,8 +102,9 @@ void draw_samples(const PanelIo& io, ImVec2 scale, std::optional<std::array<uint
 }
 
 void sample_table(const PixelSampleList& list) {
-    ImGui::Text("pixel (%u, %u): %u samples, %zu surfaces", list.x, list.y, list.samples,
-                list.surfaces.size());
+    ImGui::Text("pixel (%u, %u): %s, %s", list.x, list.y,
+                counted(list.samples, "sample", "samples").c_str(),
+                counted(list.surfaces.size(), "surface", "surfaces").c_str());
     if (!list.standard_positions)
         ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1),
                            "positions not standard on this device: drawn approximate");
