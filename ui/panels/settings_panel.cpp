@@ -80,8 +80,17 @@ void int_knob(PanelIo& io, const SettingDef& def, const std::string& value) {
     if (def.max - def.min <= 8) {
         if (ImGui::BeginCombo(label, value.c_str())) {
             for (int option : accepted_ints(def)) {
-                const std::string text = std::to_string(option);
-                if (ImGui::Selectable(text.c_str(), option == v)) set_knob(io, def, text);
+                // msaa: a sample count the device refuses is shown, disabled, with the reason.
+                const std::vector<int>& counts = io.inspector.device().msaa_counts;
+                const bool refused =
+                    def.name == knobs::kMsaa.name &&
+                    std::find(counts.begin(), counts.end(), option) == counts.end();
+                const std::string text =
+                    std::to_string(option) + (refused ? " (not on this device)" : "");
+                if (refused) ImGui::BeginDisabled();
+                if (ImGui::Selectable(text.c_str(), option == v))
+                    set_knob(io, def, std::to_string(option));
+                if (refused) ImGui::EndDisabled();
             }
             ImGui::EndCombo();
         }
