@@ -124,6 +124,10 @@ void apply_style() {
     ImGuiStyle& s = ImGui::GetStyle();
     s.WindowRounding = 0.0f;
     s.FrameRounding = 2.0f;
+    // Opaque panels and popups: text behind them never shows through.
+    for (ImGuiCol c :
+         {ImGuiCol_WindowBg, ImGuiCol_ChildBg, ImGuiCol_PopupBg, ImGuiCol_TitleBgCollapsed})
+        s.Colors[c].w = 1.0f;
 }
 
 ImDrawData* Inspector::run_frame() {
