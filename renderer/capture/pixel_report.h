@@ -1,5 +1,5 @@
 #pragma once
-// `depthscope pixel`'s output: the pixel history of one frame (FrameResult::pixel_history) as
+// `depthscope pixel`'s output: the pixel history of one frame (its PixelHistory) as
 // JSON and as a table. Names come from the scene (Scene::instance_name), linear depths from
 // the frame's depth planes (view::linear_depth).
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // readback_draws (read-back role; count_draws=on): copies the prepass's surface_id to the host
-// and, after the fence, assembles FrameResult::draws — one DrawReport per scene draw group —
+// and, after the fence, assembles a DrawsResult — one DrawReport per scene draw group —
 // from what the passes measured: visible pixels, a histogram of surface_id (surface ->
 // instance -> group, gpu_scene SurfaceTable and instance_groups); samples passed, from the
 // pass whose PassResult carries occlusion queries per draw (the prepass, else forward);

@@ -4,7 +4,7 @@
 // prepass depth and surface_id. Image `equal_check` (R32_UINT): 1 where the prepass covered
 // the pixel and forward shaded nothing (a hole: invariance, jitter or cutoff mismatch), 2
 // where forward shaded more than once (a tie: coplanar surfaces both passing EQUAL).
-// FrameResult::equal_check counts both and names the surfaces most involved. It turns on
+// An EqualCheckResult counts both and names the surfaces most involved. It turns on
 // count_fragments (the counts) and surface_id (the names).
 #include <cstdint>
 

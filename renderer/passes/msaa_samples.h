@@ -4,8 +4,8 @@
 // any resolve: the winning surface (the prepass's per-sample surface ids, res.msaa_surface_id;
 // the renderer turns surface_id on for such frames), the depth and the HDR colour. At msaa=1
 // the single-sample depth, HDR and surface_id images. One compute dispatch
-// (shaders/msaa_samples.comp) into a host buffer (HostReadback); FrameResult::msaa_samples.
-// Without a query nothing of it runs (no pass; the pipelines are built on first use).
+// (shaders/msaa_samples.comp) into a host buffer (HostReadback); an MsaaSamples in the frame's
+// slots. Without a query nothing of it runs (no pass; the pipelines are built on first use).
 #include <array>
 #include <cstdint>
 

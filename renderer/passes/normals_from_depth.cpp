@@ -16,7 +16,8 @@ void NormalsFromDepthPass::rebuild_pipelines(vk::DestroyList& retired) {
 }
 
 bool NormalsFromDepthPass::runs(const FrameOptions& o) {
-    // gtao and contact_shadows are already false without the prepass (FrameOptions::from).
+    // gtao and contact_shadows are already false without the prepass (GtaoPass and
+    // ContactShadowsPass::configure).
     return o.depth_only_prepass() && (o.gtao || o.contact_shadows);
 }
 

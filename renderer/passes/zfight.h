@@ -6,7 +6,7 @@
 // representable depth steps of the stored depth (D32_SFLOAT: ULPs; D24 / D16: unorm steps)
 // competes (shaders/zfight.frag). Image res.zfight (created and zeroed by clear_counts) holds
 // competitors per pixel; a host buffer of (pixel, winner, competitor, steps) records becomes
-// FrameResult::zfight's pairs. A surface is one triangle of one instance, so overlapping
+// ZfightResult's pairs. A surface is one triangle of one instance, so overlapping
 // triangles of one mesh fight too, and triangles that share an edge never do (each pixel
 // centre, or sample, belongs to one of them). It needs the prepass.
 // msaa > 1: it compares per sample. The pass runs multisampled against a multisampled bound

@@ -2,7 +2,7 @@
 // texel or more, every visible pixel shows its samples at their positions (the standard
 // table's, or approximate where the device's are not standard), each a square in the colour of
 // the surface that holds it (the surface_id view's colours; the sky's for none); hovering a
-// pixel lists its samples. The data is the frame's own (FrameResult::msaa_samples).
+// pixel lists its samples. The data is the frame's own (its MsaaSamples).
 #include <algorithm>
 #include <cmath>
 #include <string>
