@@ -101,11 +101,7 @@ std::vector<std::unique_ptr<FramePass>> make_frame_passes(const PassServices& s)
 }
 
 std::vector<SettingDef> frame_pass_knobs() {
-    std::vector<SettingDef> out;
-    for (const Entry& e : pass_list())
-        if (e.knobs)
-            for (SettingDef& def : e.knobs()) out.push_back(std::move(def));
-    return out;
+    return gather_knobs(pass_list());
 }
 
 std::span<const FrameJoin> frame_joins() {

@@ -3,9 +3,10 @@
 // type after the fence (FramePass::collect) and readers ask for it by type,
 // frame.find<HizResult>(). A slot may carry the function that writes the pass's report.json
 // section, so the report iterates what the passes put, in pass order, and names no pass.
+// Slots hold values (std::any): a copied FrameResult owns copies of its results.
+#include <any>
 #include <functional>
-#include <memory>
-#include <typeindex>
+#include <typeinfo>
 #include <utility>
 #include <vector>
 
@@ -22,42 +23,48 @@ using ReportWriter = void (*)(const T& result, const FrameResult& frame, nlohman
 class ResultSlots {
   public:
     // Stores `value` (replacing one of the same type) with its report writer (none: not in the
-    // report).
+    // report); returns the stored value.
     template <typename T>
     T& put(T value, ReportWriter<T> writer = nullptr) {
-        auto stored = std::make_shared<T>(std::move(value));
-        Slot slot{std::type_index(typeid(T)), stored, {}};
+        Slot slot{std::move(value), {}};
         if (writer)
-            slot.write = [writer](const void* v, const FrameResult& f, nlohmann::json& r) {
-                writer(*static_cast<const T*>(v), f, r);
+            slot.write = [writer](const std::any& v, const FrameResult& f, nlohmann::json& r) {
+                writer(*std::any_cast<T>(&v), f, r);
             };
-        for (Slot& s : slots_)
-            if (s.type == slot.type) return s = std::move(slot), *stored;
-        slots_.push_back(std::move(slot));
-        return *stored;
+        Slot* s = find_slot(*this, typeid(T));
+        if (s)
+            *s = std::move(slot);
+        else
+            s = &slots_.emplace_back(std::move(slot));
+        return *std::any_cast<T>(&s->value);
     }
     template <typename T>
     const T* find() const {
-        for (const Slot& s : slots_)
-            if (s.type == std::type_index(typeid(T))) return static_cast<const T*>(s.value.get());
-        return nullptr;
+        const Slot* s = find_slot(*this, typeid(T));
+        return s ? std::any_cast<T>(&s->value) : nullptr;
     }
     template <typename T>
     T* find() {
-        return const_cast<T*>(std::as_const(*this).find<T>());
+        Slot* s = find_slot(*this, typeid(T));
+        return s ? std::any_cast<T>(&s->value) : nullptr;
     }
     // Every slot's report section, in the order they were put.
     void write_report(const FrameResult& frame, nlohmann::json& report) const {
         for (const Slot& s : slots_)
-            if (s.write) s.write(s.value.get(), frame, report);
+            if (s.write) s.write(s.value, frame, report);
     }
 
   private:
     struct Slot {
-        std::type_index type;
-        std::shared_ptr<void> value;
-        std::function<void(const void*, const FrameResult&, nlohmann::json&)> write;
+        std::any value;
+        std::function<void(const std::any&, const FrameResult&, nlohmann::json&)> write;
     };
+    template <typename Self>  // ResultSlots or const ResultSlots
+    static auto* find_slot(Self& self, const std::type_info& type) {
+        for (auto& s : self.slots_)
+            if (s.value.type() == type) return &s;
+        return static_cast<decltype(&self.slots_.front())>(nullptr);
+    }
     std::vector<Slot> slots_;
 };
 

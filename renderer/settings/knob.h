@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "renderer/settings/settings.h"
@@ -54,6 +55,17 @@ SettingDef optional_float_knob(Knob<OptionalFloat> k, std::string group, std::st
                                Invalidates inv);
 SettingDef map_knob(Knob<KnobMap> k, std::string group, double min, double max, std::string help,
                     Invalidates inv);
+
+// The knobs of a list whose entries have `knobs` (a function returning their declarations,
+// or null): the pass list's, the scene list's.
+template <typename Entries>
+std::vector<SettingDef> gather_knobs(const Entries& entries) {
+    std::vector<SettingDef> out;
+    for (const auto& e : entries)
+        if (e.knobs)
+            for (SettingDef& def : e.knobs()) out.push_back(std::move(def));
+    return out;
+}
 
 // Where knobs come from beyond the frame-wide ones, in the order `depthscope settings` lists
 // them: the frame's passes, the built-in scenes, the inspector.

@@ -38,11 +38,7 @@ constexpr std::array<Entry, 6> kScenes = {{
 
 // The registry's scene knobs, in list order (settings/knob.h).
 std::vector<SettingDef> scene_knobs() {
-    std::vector<SettingDef> out;
-    for (const Entry& e : kScenes)
-        if (e.knobs)
-            for (SettingDef& def : e.knobs()) out.push_back(std::move(def));
-    return out;
+    return gather_knobs(kScenes);
 }
 const KnobSource kSceneKnobs(KnobOwner::Scenes, &scene_knobs);
 
