@@ -31,7 +31,7 @@ class ResultSlots {
             slot.write = [writer](const std::any& v, const FrameResult& f, nlohmann::json& r) {
                 writer(*std::any_cast<T>(&v), f, r);
             };
-        Slot* s = find_slot(*this, typeid(T));
+        Slot* s = find_slot(typeid(T));
         if (s)
             *s = std::move(slot);
         else
@@ -40,12 +40,12 @@ class ResultSlots {
     }
     template <typename T>
     const T* find() const {
-        const Slot* s = find_slot(*this, typeid(T));
+        const Slot* s = find_slot(typeid(T));
         return s ? std::any_cast<T>(&s->value) : nullptr;
     }
     template <typename T>
     T* find() {
-        Slot* s = find_slot(*this, typeid(T));
+        Slot* s = find_slot(typeid(T));
         return s ? std::any_cast<T>(&s->value) : nullptr;
     }
     // Every slot's report section, in the order they were put.
@@ -59,11 +59,13 @@ class ResultSlots {
         std::any value;
         std::function<void(const std::any&, const FrameResult&, nlohmann::json&)> write;
     };
-    template <typename Self>  // ResultSlots or const ResultSlots
-    static auto* find_slot(Self& self, const std::type_info& type) {
-        for (auto& s : self.slots_)
+    const Slot* find_slot(const std::type_info& type) const {
+        for (const Slot& s : slots_)
             if (s.value.type() == type) return &s;
-        return static_cast<decltype(&self.slots_.front())>(nullptr);
+        return nullptr;
+    }
+    Slot* find_slot(const std::type_info& type) {
+        return const_cast<Slot*>(std::as_const(*this).find_slot(type));
     }
     std::vector<Slot> slots_;
 };
