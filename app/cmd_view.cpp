@@ -1,9 +1,12 @@
 // view (the default command with a display): the inspector in a GLFW window; and the two
 // offscreen forms of the same UI, `capture --ui` and `bench --ui` (see cmd_capture/cmd_bench).
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <optional>
+#include <tuple>
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -155,6 +158,59 @@ void open_in(ui::Inspector& inspector, OpenedCapture& opened) {
     inspector.viewer().compare.match_size = true;
 }
 
+// SIGINT and SIGTERM end a session as closing the window does: the loop stops within half a
+// second (its longest wait) and the state is saved.
+volatile std::sig_atomic_t g_stop = 0;
+
+class StopOnSignal {
+  public:
+    StopOnSignal() {
+        struct sigaction action {};
+        action.sa_handler = [](int) { g_stop = 1; };
+        sigemptyset(&action.sa_mask);
+        sigaction(SIGINT, &action, &old_int_);
+        sigaction(SIGTERM, &action, &old_term_);
+    }
+    ~StopOnSignal() {
+        sigaction(SIGINT, &old_int_, nullptr);
+        sigaction(SIGTERM, &old_term_, nullptr);
+    }
+    StopOnSignal(const StopOnSignal&) = delete;
+    StopOnSignal& operator=(const StopOnSignal&) = delete;
+
+  private:
+    struct sigaction old_int_ {
+    }, old_term_{};
+};
+
+// $DEPTHSCOPE_PRESENT_LOG: a line each time a presented UI frame shows a newer scene frame
+// than the last line, its panels and image drawn from it ("shown 3 800x500 of 800x500 scene
+// edges"). The window tests read it to see what reached the screen without input.
+class PresentLog {
+  public:
+    PresentLog() {
+        if (const char* path = std::getenv("DEPTHSCOPE_PRESENT_LOG"); path && *path)
+            out_.open(path, std::ios::app);
+    }
+    void presented(const ui::Inspector& in) {
+        if (!out_.is_open() || in.frames_rendered() == 0 ||
+            in.frames_drawn() != in.frames_rendered())
+            return;
+        const VkExtent2D full = in.render_size();
+        const auto now = std::make_tuple(in.frames_rendered(), in.frame().width, in.frame().height,
+                                         full.width, full.height);
+        if (now == last_) return;
+        last_ = now;
+        out_ << "shown " << in.frames_rendered() << ' ' << in.frame().width << 'x'
+             << in.frame().height << " of " << full.width << 'x' << full.height << " scene "
+             << in.scene().name << std::endl;
+    }
+
+  private:
+    std::ofstream out_;
+    std::tuple<uint64_t, uint32_t, uint32_t, uint32_t, uint32_t> last_{};
+};
+
 // Frames until the window closes or --frames are drawn; returns the count drawn. Between UI
 // frames the loop sleeps when nothing can change what it draws: after a few frames without
 // input, while the inspector is idle it waits for an event (a finished scene frame wakes it
@@ -168,7 +224,9 @@ uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& present
     size_t written = 0;  // captures reported so far
     int quiet = 0;       // UI frames since the last input
     const bool scripted = o.view_frames != 0;
-    while (!window.should_close() && (!scripted || frames < uint64_t(o.view_frames))) {
+    const StopOnSignal stop;
+    PresentLog log;
+    while (!window.should_close() && !g_stop && (!scripted || frames < uint64_t(o.view_frames))) {
         window.poll_events();
         const VkExtent2D fb = window.framebuffer_size();
         if (fb.width == 0 || fb.height == 0) {  // minimised: nothing to draw
@@ -190,6 +248,7 @@ uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& present
                           target.acquired, target.rendered);
         window.present(target, changed);
         if (changed) presenter.forget_targets();
+        log.presented(inspector);
         ++frames;
         for (; written < inspector.captures_written().size(); ++written) {  // F12
             std::printf("depthscope: wrote %s\n", inspector.captures_written()[written].c_str());
@@ -197,7 +256,7 @@ uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& present
         }
         quiet = window.take_input() ? 0 : std::min(quiet + 1, kSettleUiFrames);
         if (scripted || quiet < kSettleUiFrames) continue;
-        while (inspector.idle() && !window.should_close()) {
+        while (inspector.idle() && !window.should_close() && !g_stop) {
             window.wait_events(0.5);
             if (window.input_pending() || inspector.poll_shader_watch()) break;
         }

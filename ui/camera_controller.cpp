@@ -36,12 +36,12 @@ bool CameraInput::any() const {
            look != glm::vec2(0.0f) || move != glm::vec3(0.0f) || frame;
 }
 
-void CameraController::reset(const scene::Camera& camera, const scene::Bounds& bounds) {
+void CameraController::reset(const scene::Camera& camera, const scene::Bounds& content) {
     camera_ = camera;
-    bounds_ = bounds;
-    scene_size_ = bounds.valid() ? std::max(glm::length(bounds.extent()), 1e-3f) : 1.0f;
-    // Orbit around the point the camera looks at, at the bounds' centre's distance.
-    const glm::vec3 centre = bounds.valid() ? bounds.center() : camera.position + camera.forward;
+    bounds_ = content;
+    scene_size_ = content.valid() ? std::max(glm::length(content.extent()), 1e-3f) : 1.0f;
+    // Orbit around the point the camera looks at, at the content's centre's distance.
+    const glm::vec3 centre = content.valid() ? content.center() : camera.position + camera.forward;
     distance_ = std::max(glm::dot(centre - camera.position, camera.forward), 1e-3f);
     target_ = camera.position + camera.forward * distance_;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The inspector's camera: orbit (left drag), pan (middle drag), dolly (wheel), fly (right drag
-// with WASD / QE, shift for speed), F frames the scene. Pure math on scene::Camera; the
-// viewer panel turns ImGui input into a CameraInput.
+// with WASD / QE, shift for speed), F frames the scene's content (scene::content_bounds: not
+// a ground or backdrop that dwarfs it). Pure math on scene::Camera; the viewer panel turns
+// ImGui input into a CameraInput.
 #include <glm/glm.hpp>
 
 #include "renderer/scene/scene.h"
@@ -23,8 +24,11 @@ struct CameraInput {
 
 class CameraController {
   public:
-    // Starts from `camera`, orbiting around the centre of `bounds`.
-    void reset(const scene::Camera& camera, const scene::Bounds& bounds);
+    // Starts from `camera`, orbiting around the centre of `content` (what F frames; its size
+    // sets the fly speed).
+    void reset(const scene::Camera& camera, const scene::Bounds& content);
+    // Back to `camera` (the scene's own), with the same content.
+    void reset(const scene::Camera& camera) { reset(camera, bounds_); }
     // Returns true when the camera moved (a camera cut is not needed: temporal passes follow).
     bool update(const CameraInput& input);
     const scene::Camera& camera() const { return camera_; }
@@ -36,7 +40,7 @@ class CameraController {
     scene::Bounds bounds_;
     glm::vec3 target_{0.0f};
     float distance_ = 5.0f;
-    float scene_size_ = 1.0f;
+    float scene_size_ = 1.0f;  // the content's diagonal
 };
 
 }  // namespace ds::ui

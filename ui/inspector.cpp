@@ -88,7 +88,7 @@ void Inspector::set_scene(scene::Scene scene) {
     dirty_ = true;
     scene_ = std::move(scene);
     summary_ = summarize(scene_);
-    camera_.reset(scene_.camera, scene_.bounds);
+    camera_.reset(scene_.camera, scene::content_bounds(scene_));
     forget_scene_state();  // no index into the previous scene's tables survives
     // Per-material cutoffs name the previous scene's materials: keep those this one has.
     auto cutoffs = knob_value(settings_, knobs::kMaterialAlphaCutoff);
@@ -216,6 +216,7 @@ void Inspector::apply(const Action& action) {
                        }
                    },
                    [&](const MeasureAdvice&) { measure_advice(); },
+                   [&](const SceneCamera&) { camera_.reset(scene_.camera); },
                    [&](const AddOverlay& a) { viewer_.overlays.push_back({a.resource}); },
                    [&](const RemoveOverlay& a) {
                        if (a.index < viewer_.overlays.size())

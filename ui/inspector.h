@@ -68,6 +68,8 @@ struct SetAutoReload {
 struct ResetSettings {};
 // The Advisor panel's "measure": the prepass advisor over the current camera and settings.
 struct MeasureAdvice {};
+// Back to the scene's own camera (the file's, or the framed view of a scene without one).
+struct SceneCamera {};
 // The Overlays panel's list edits (opacity and visibility it writes directly: view state).
 struct AddOverlay {
     std::string resource;  // an image of the frame or a derived view ("forward_wasted")
@@ -93,8 +95,8 @@ struct PinCapture {
     std::filesystem::path dir;
 };
 using Action = std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders,
-                            SetAutoReload, ResetSettings, MeasureAdvice, AddOverlay, RemoveOverlay,
-                            MoveOverlay, PickPixel, CaptureFrame, PinCapture>;
+                            SetAutoReload, ResetSettings, MeasureAdvice, SceneCamera, AddOverlay,
+                            RemoveOverlay, MoveOverlay, PickPixel, CaptureFrame, PinCapture>;
 
 enum class MouseTarget : uint8_t { Camera, Image, Pick };
 
@@ -212,6 +214,7 @@ class Inspector {
     bool shader_error() const { return shader_error_; }
     bool auto_reload() const { return auto_reload_; }
     uint64_t frames_rendered() const { return frames_rendered_; }
+    uint64_t frames_drawn() const { return frames_drawn_; }  // the newest the panels drew
     // The last MeasureAdvice's result (none until measured), what it measured ("overdraw at
     // 960x540") and its error, if it failed.
     const std::optional<capture::Advice>& advice() const { return advice_; }

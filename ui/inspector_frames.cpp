@@ -72,10 +72,12 @@ bool Inspector::moving() const {
 
 bool Inspector::idle() const {
     // A frame collected after the panels drew (update() runs after draw()) still needs one UI
-    // frame: its timings, resources and labels would otherwise wait for the next input.
-    return !worker_->busy() && !worker_->has_finished() && !moving() && !pending_capture_ &&
-           !dirty_ && !knob_value(settings_, kContinuous) && pending_.empty() &&
-           frames_drawn_ == frames_rendered_;
+    // frame: its timings, resources and labels would otherwise wait for the next input. The
+    // last frame posted while the camera moved (motion_scale, smaller) is replaced by the
+    // full-size one that the next update() posts, once the camera has been still kMotionHold.
+    return !worker_->busy() && !worker_->has_finished() && !moving() && !posted_moving_ &&
+           !pending_capture_ && !dirty_ && !knob_value(settings_, kContinuous) &&
+           pending_.empty() && frames_drawn_ == frames_rendered_;
 }
 
 FrameJob Inspector::next_job() const {

@@ -177,4 +177,12 @@ struct Scene {
 // Camera that looks at `bounds` from a pleasant direction with the whole box in view.
 Camera frame_bounds(const Bounds& bounds, float yfov = 0.8f);
 
+// What a camera should frame (the inspector's F, its orbit centre and fly speed): the world
+// box of the scene's instances without the few largest that dwarf the rest — a ground plane,
+// a backdrop, a sky dome. Sorted by size, the k largest instances are left out for the
+// smallest k (at most max(2, n/10), never all) that leaves a box whose diagonal is at most
+// 1/kContentDwarf of the whole; without such a k, the whole bounds.
+inline constexpr float kContentDwarf = 4.0f;
+Bounds content_bounds(const Scene& scene);
+
 }  // namespace ds::scene

@@ -138,7 +138,8 @@ void mouse_mode(ViewerState& v) {
     ImGui::SameLine();
     help_marker(
         "Camera: left drag orbits, middle drag pans, wheel dollies, right drag + WASD/QE flies "
-        "(shift: faster), F frames the scene.\nImage (or hold Ctrl): wheel zooms at the cursor, "
+        "(shift: faster; the speed scales with the scene's content), F frames the content.\nImage "
+        "(or hold Ctrl): wheel zooms at the cursor, "
         "drag pans. Nearest-neighbour when zoomed in.\nPick (or Alt + click): a click lists "
         "every fragment of that pixel in the Pixel panel.");
 }
@@ -158,6 +159,18 @@ void controls(PanelIo& io) {
     mouse_mode(v);
     ImGui::SameLine();
     if (ImGui::SmallButton("capture")) io.actions.push_back(CaptureFrame{});  // F12 too
+    ImGui::SameLine();
+    if (ImGui::SmallButton("frame")) io.camera.frame = true;  // F too
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "The camera frames the scene's content (F): what a ground plane, "
+            "backdrop or sky dome many times larger than the rest leaves.");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("scene camera")) io.actions.push_back(SceneCamera{});
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Back to the scene's own camera (the file's first camera, or the "
+            "view depthscope framed when it has none).");
 }
 
 // A Scalar image's legend: its title over a colour bar (decode's colours from black to

@@ -81,3 +81,69 @@ TEST(SceneModel, FrameBoundsOfAPointStaysFinite) {
 
 }  // namespace
 }  // namespace ds::scene
+
+namespace ds::scene {
+namespace {
+
+// A scene of boxes: each (min, max) a mesh of its own placed once, scaled from a unit box by
+// its instance's transform (content_bounds reads mesh bounds through instance transforms).
+Scene boxes(const std::vector<std::pair<glm::vec3, glm::vec3>>& list) {
+    Scene s;
+    s.meshes.resize(1);
+    s.meshes[0].bounds.extend(glm::vec3(0.0f));
+    s.meshes[0].bounds.extend(glm::vec3(1.0f));
+    for (const auto& [lo, hi] : list) {
+        glm::mat4 world(1.0f);
+        world[0][0] = hi.x - lo.x;
+        world[1][1] = hi.y - lo.y;
+        world[2][2] = hi.z - lo.z;
+        world[3] = glm::vec4(lo, 1.0f);
+        s.instances.push_back({0, world, "box"});
+        s.bounds.extend(lo);
+        s.bounds.extend(hi);
+    }
+    return s;
+}
+
+void expect_box(const Bounds& b, glm::vec3 lo, glm::vec3 hi) {
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_NEAR(b.min[a], lo[a], 1e-3f) << "axis " << a;
+        EXPECT_NEAR(b.max[a], hi[a], 1e-3f) << "axis " << a;
+    }
+}
+
+TEST(ContentBounds, AGroundPlaneThatDwarfsTheSubjectIsLeftOut) {
+    const Scene s = boxes({{{-500, -0.1f, -500}, {500, 0, 500}},  // ground
+                           {{-1, 0, -1}, {1, 2, 1}},
+                           {{2, 0, 0}, {3, 1, 1}}});
+    expect_box(content_bounds(s), {-1, 0, -1}, {3, 2, 1});
+}
+
+TEST(ContentBounds, AGroundAndABackdropBothGo) {
+    const Scene s = boxes({{{-500, -0.1f, -500}, {500, 0, 500}},  // ground
+                           {{-500, 0, -501}, {500, 400, -500}},   // backdrop wall
+                           {{-1, 0, -1}, {1, 2, 1}},
+                           {{0, 0, 2}, {1, 1, 3}}});
+    expect_box(content_bounds(s), {-1, 0, -1}, {1, 2, 3});
+}
+
+TEST(ContentBounds, ARoomIsItsWholeBox) {
+    // Floor, four walls and furniture: the largest parts are the room itself.
+    const Scene s = boxes({{{-10, -0.1f, -6}, {10, 0, 6}},
+                           {{-10, 0, -6.1f}, {10, 8, -6}},
+                           {{-10, 0, 6}, {10, 8, 6.1f}},
+                           {{-10.1f, 0, -6}, {-10, 8, 6}},
+                           {{10, 0, -6}, {10.1f, 8, 6}},
+                           {{-1, 0, -1}, {1, 1, 1}},
+                           {{3, 0, 2}, {4, 2, 3}}});
+    expect_box(content_bounds(s), s.bounds.min, s.bounds.max);
+}
+
+TEST(ContentBounds, ASingleInstanceOrNoneIsTheSceneBounds) {
+    const Scene one = boxes({{{-500, -0.1f, -500}, {500, 0, 500}}});
+    expect_box(content_bounds(one), one.bounds.min, one.bounds.max);
+    EXPECT_FALSE(content_bounds(Scene{}).valid());
+}
+
+}  // namespace
+}  // namespace ds::scene

@@ -118,6 +118,58 @@ TEST_F(LiveInspector, AFrameThatLandsIsDrawnBeforeTheUiSleeps) {
     EXPECT_EQ(ui->ui_validation_messages(), 0u);
 }
 
+// UI frames with `input` until the inspector is idle (where the window would sleep until an
+// event), at most 120 s.
+void until_idle(HeadlessUi& ui, const HeadlessInput& input = {}) {
+    const auto deadline = std::chrono::steady_clock::now() + 120s;
+    do {
+        ui.frame(input);
+        std::this_thread::sleep_for(5ms);
+    } while (!ui.inspector().idle() && std::chrono::steady_clock::now() < deadline);
+    ASSERT_TRUE(ui.inspector().idle());
+}
+
+// Where the window would go to sleep after a scene switch, the new scene's frame is drawn: its
+// passes' timings and the viewer's image, not the previous scene's.
+TEST_F(LiveInspector, AfterASceneSwitchTheNewScenesFrameIsDrawnBeforeTheUiSleeps) {
+    auto ui = open("edges");
+    ui::Inspector& in = ui->inspector();
+    until_idle(*ui);
+    const uint64_t before = in.frames_rendered();
+    in.queue(ui::LoadScene{"overdraw"});
+    until_idle(*ui);
+    EXPECT_EQ(in.scene().name, "overdraw");
+    EXPECT_GT(in.frames_rendered(), before);
+    EXPECT_EQ(in.frames_drawn(), in.frames_rendered());
+    const VkExtent2D full = in.render_size();
+    EXPECT_EQ(in.frame().width, full.width);
+    EXPECT_EQ(in.frame().height, full.height);
+    EXPECT_EQ(ui->ui_validation_messages(), 0u);
+}
+
+// A wheel dolly renders a motion-scaled frame; with no more input, the full-size frame replaces
+// it before the UI sleeps (it used to stay on screen until the mouse moved).
+// (edges: its scaled frame lands within the motion hold, which is when it stayed.)
+TEST_F(LiveInspector, AfterAWheelDollyTheFullSizeFrameIsShownBeforeTheUiSleeps) {
+    auto ui = open("edges");
+    ui::Inspector& in = ui->inspector();
+    until_idle(*ui);
+    const VkExtent2D full = in.render_size();
+    const uint64_t before = in.frames_rendered();
+    const ui::ViewerState& v = in.viewer();
+    const glm::vec2 centre{v.x + v.w / 2, v.y + v.h / 2};
+    HeadlessInput wheel = mouse_at(centre);
+    wheel.wheel = 1.0f;
+    ui->frame(wheel);
+    ASSERT_TRUE(in.moving());
+    until_idle(*ui, mouse_at(centre));  // the cursor rests where it was: no input
+    EXPECT_GE(in.frames_rendered(), before + 2) << "the scaled frame, then the full size";
+    EXPECT_EQ(in.frame().width, full.width);
+    EXPECT_EQ(in.frame().height, full.height);
+    EXPECT_EQ(in.frames_drawn(), in.frames_rendered());
+    EXPECT_EQ(ui->ui_validation_messages(), 0u);
+}
+
 TEST_F(LiveInspector, RendersOnlyWhenSomethingChanged) {
     auto ui = open("edges");
     ui::Inspector& in = ui->inspector();
