@@ -34,7 +34,7 @@ TEST_F(DrawsPanel, FiltersSortsAndHighlightsTheSelectedDraw) {
     HeadlessUi* ui = &ui_owner;
     ui->frame();  // lays the panels out
     ui::Inspector& in = ui->inspector();
-    ImGui::SetWindowCollapsed("Draws", false);
+    in.workspace().select("Draws");
     ui->frame();
     EXPECT_TRUE(passes::draws_of(in.frame()).draws.empty());
     in.queue(ui::SetSetting{"count_draws", "on"});
