@@ -151,7 +151,11 @@ void Inspector::key_pressed(int key) {
 }
 
 void Inspector::draw() {
-    frames_drawn_ = frames_rendered_;  // the panels below show the newest frame collected
+    // The panels below show the newest frame collected. ImGui fits table columns to what the
+    // previous UI frame drew, so a new frame counts as drawn at its second UI frame: the UI
+    // does not sleep with its tables laid out for the frame before.
+    if (frames_seen_ == frames_rendered_) frames_drawn_ = frames_rendered_;
+    frames_seen_ = frames_rendered_;
     PanelIo panel{*this, viewer_, camera_input_, pending_};
     workspace_.draw(panel);  // every panel in its tab, the viewer last
 }

@@ -366,7 +366,8 @@ class Inspector {
     VkExtent2D shown_nominal_{};  // the full render size of the frame shown (motion: larger)
     std::chrono::steady_clock::time_point last_motion_{};
     uint64_t frames_posted_ = 0;
-    uint64_t frames_drawn_ = 0;             // frames_rendered_ when the panels last drew
+    uint64_t frames_drawn_ = 0;  // frames_rendered_ when the panels drew it a second time
+    uint64_t frames_seen_ = 0;   // frames_rendered_ when the panels last drew
     std::unique_ptr<RenderWorker> worker_;  // last: its thread stops before the rest goes
 };
 

@@ -182,7 +182,7 @@ void table(PanelIo& io, const DrawsResult& result) {
                                   ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX |
                                   ImGuiTableFlags_ScrollY | ImGuiTableFlags_Sortable |
                                   ImGuiTableFlags_Resizable;
-    if (!ImGui::BeginTable("draws", columns, flags)) return;
+    if (!ImGui::BeginTable("draws", columns, flags, scrolling_table_size())) return;
     ImGui::TableSetupScrollFreeze(1, 1);  // the group's number and the header stay
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_DefaultSort, 0, kDrawGroup);
     ImGui::TableSetupColumn("mesh", 0, 0, kDrawMesh);

@@ -85,6 +85,9 @@ void header_row_with_help(const std::vector<std::string>& help);
 // at the last frame, so that none is squeezed (a narrower tab scrolls sideways instead); 0,
 // the width available, before its first frame.
 float table_fit_width(const char* str_id);
+// A ScrollY table's outer size: the rest of the tab, at least `rows` rows high (a short tab
+// scrolls to it: the table is never squeezed away).
+ImVec2 scrolling_table_size(int rows = 8);
 // The sample view (viewer_samples.cpp): every visible pixel's samples over the image when
 // zoomed in (the hovered texel outlined), a pixel's sample list (hover tooltip, Pixel panel).
 void draw_samples(const PanelIo& io, ImVec2 scale, std::optional<std::array<uint32_t, 2>> hover);

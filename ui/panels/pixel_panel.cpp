@@ -110,7 +110,7 @@ void history_table(const Inspector& in) {
         return;
     }
     const int columns = int(std::size(kColumns));
-    if (!ImGui::BeginTable("fragments", columns, kTableFlags)) return;
+    if (!ImGui::BeginTable("fragments", columns, kTableFlags, scrolling_table_size())) return;
     // The alpha column is as wide as its widest text: "discarded" and "kept" whole.
     const float alpha_width = ImGui::CalcTextSize("0.000 / 0.000 discarded").x;
     std::vector<std::string> help;

@@ -13,7 +13,7 @@ void resources_panel(PanelIo& io) {
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX |
                                   ImGuiTableFlags_ScrollY;
-    if (ImGui::BeginTable("resources", 5, flags)) {
+    if (ImGui::BeginTable("resources", 5, flags, scrolling_table_size())) {
         ImGui::TableSetupScrollFreeze(0, 1);
         ImGui::TableSetupColumn("name");
         ImGui::TableSetupColumn("format");

@@ -1,5 +1,6 @@
 // Shared table widgets: a header row whose tooltips say what each column's numbers mean; the
 // width that keeps a table's columns from being squeezed.
+#include <algorithm>
 #include <cmath>
 
 #include <imgui.h>
@@ -27,6 +28,11 @@ void header_row_with_help(const std::vector<std::string>& help) {
 float table_fit_width(const char* str_id) {
     const ImGuiTable* table = ImGui::TableFindByID(ImGui::GetID(str_id));
     return table ? std::ceil(table->ColumnsAutoFitWidth) + 1.0f : 0.0f;
+}
+
+ImVec2 scrolling_table_size(int rows) {
+    const float least = float(rows) * ImGui::GetTextLineHeightWithSpacing();
+    return ImVec2(0.0f, std::max(ImGui::GetContentRegionAvail().y, least));
 }
 
 }  // namespace ds::ui

@@ -77,14 +77,24 @@ void Workspace::splitters() {
     float left = l.splits.left, right = l.splits.right, bottom = l.splits.bottom;
     float centre = v.w, above = v.h;
     const float height = l.regions[size_t(Region::Left)].h;
-    bool moved = splitter("##split_left", ImRect(left, 0, left + kGap, height), ImGuiAxis_X, left,
-                          centre, kMinLeft, l.viewer_min_width);
-    moved |= splitter("##split_right", ImRect(v.right(), 0, v.right() + kGap, height), ImGuiAxis_X,
-                      centre, right, l.viewer_min_width, kMinRight);
-    moved |= splitter("##split_bottom", ImRect(v.x, v.bottom(), v.right(), v.bottom() + kGap),
-                      ImGuiAxis_Y, above, bottom, kMinViewerHeight, kMinBottom);
+    // A dragged split is kept as asked; the others stay the window's defaults until dragged.
+    bool moved = false;
+    if (splitter("##split_left", ImRect(left, 0, left + kGap, height), ImGuiAxis_X, left, centre,
+                 kMinLeft, l.viewer_min_width)) {
+        moved = true;
+        wanted_.left = left;
+    }
+    if (splitter("##split_right", ImRect(v.right(), 0, v.right() + kGap, height), ImGuiAxis_X,
+                 centre, right, l.viewer_min_width, kMinRight)) {
+        moved = true;
+        wanted_.right = right;
+    }
+    if (splitter("##split_bottom", ImRect(v.x, v.bottom(), v.right(), v.bottom() + kGap),
+                 ImGuiAxis_Y, above, bottom, kMinViewerHeight, kMinBottom)) {
+        moved = true;
+        wanted_.bottom = bottom;
+    }
     if (!moved) return;
-    wanted_ = {left, right, bottom};
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     layout_ = layout(wanted_, display.x, display.y);
     ImGui::MarkIniSettingsDirty();

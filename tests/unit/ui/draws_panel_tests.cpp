@@ -35,6 +35,7 @@ TEST_F(DrawsPanel, FiltersSortsAndHighlightsTheSelectedDraw) {
     ui->frame();  // lays the panels out
     ui::Inspector& in = ui->inspector();
     in.workspace().select("Draws");
+    in.workspace().set_splits({0, 0, 300});  // room for the summary, the filter and the table
     ui->frame();
     EXPECT_TRUE(passes::draws_of(in.frame()).draws.empty());
     in.queue(ui::SetSetting{"count_draws", "on"});

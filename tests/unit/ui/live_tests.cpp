@@ -113,6 +113,8 @@ TEST_F(LiveInspector, AFrameThatLandsIsDrawnBeforeTheUiSleeps) {
         ASSERT_GT(in.frames_rendered(), before) << "round " << round;
         EXPECT_FALSE(in.idle()) << "round " << round << ": collected after the panels drew";
         ui->frame();
+        EXPECT_FALSE(in.idle()) << "round " << round << ": tables fit at the second UI frame";
+        ui->frame();
         EXPECT_TRUE(in.idle()) << "round " << round;
     }
     EXPECT_EQ(ui->ui_validation_messages(), 0u);
