@@ -276,6 +276,9 @@ void save_session(const ConfigFiles& files, const ui::Inspector& inspector, bool
         std::fprintf(stderr, "depthscope: warning: %s\n", e.what());
     }
     ImGui::SaveIniSettingsToDisk(files.ini_file.c_str());
+    // Saved: DestroyContext would save again once the inspector, and with it the workspace's
+    // imgui.ini entry (split sizes, open tabs), is gone.
+    ImGui::GetIO().IniFilename = nullptr;
 }
 
 }  // namespace

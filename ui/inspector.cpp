@@ -124,10 +124,12 @@ void apply_style() {
     ImGuiStyle& s = ImGui::GetStyle();
     s.WindowRounding = 0.0f;
     s.FrameRounding = 2.0f;
-    // Opaque panels and popups: text behind them never shows through.
+    // Opaque panels and popups: text behind them never shows through. Child windows (the
+    // workspace's regions and tabs, scrolling tables) take the panels' colour.
     for (ImGuiCol c :
          {ImGuiCol_WindowBg, ImGuiCol_ChildBg, ImGuiCol_PopupBg, ImGuiCol_TitleBgCollapsed})
         s.Colors[c].w = 1.0f;
+    s.Colors[ImGuiCol_ChildBg] = s.Colors[ImGuiCol_WindowBg];
 }
 
 ImDrawData* Inspector::run_frame() {
@@ -149,23 +151,13 @@ void Inspector::key_pressed(int key) {
 }
 
 void Inspector::draw() {
-    frames_drawn_ = frames_rendered_;  // the panels below show the newest frame collected
-    const ImGuiIO& io = ImGui::GetIO();
-    const PanelLayout layout{io.DisplaySize.x, io.DisplaySize.y};
+    // The panels below show the newest frame collected. ImGui fits table columns to what the
+    // previous UI frame drew, so a new frame counts as drawn at its second UI frame: the UI
+    // does not sleep with its tables laid out for the frame before.
+    if (frames_seen_ == frames_rendered_) frames_drawn_ = frames_rendered_;
+    frames_seen_ = frames_rendered_;
     PanelIo panel{*this, viewer_, camera_input_, pending_};
-    settings_panel(panel, layout);
-    scene_panel(panel, layout);
-    shaders_panel(panel, layout);
-    passes_panel(panel, layout);
-    resources_panel(panel, layout);
-    depth_panel(panel, layout);
-    advisor_panel(panel, layout);
-    draws_panel(panel, layout);
-    overlays_panel(panel, layout);
-    pixel_panel(panel, layout);
-    compare_panel(panel, layout);
-    tiler_panel(panel, layout);
-    viewer_panel(panel, layout);  // last: it takes the camera input the others left
+    workspace_.draw(panel);  // every panel in its tab, the viewer last
 }
 
 void Inspector::apply(const Action& action) {

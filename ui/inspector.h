@@ -35,6 +35,7 @@
 #include "renderer/view/readout.h"
 #include "ui/camera_controller.h"
 #include "ui/compare.h"
+#include "ui/panels/workspace.h"
 #include "ui/render_worker.h"
 #include "ui/sample_view.h"
 #include "ui/shader_watch.h"
@@ -275,6 +276,10 @@ class Inspector {
         uint64_t pixel_picks_shown = 0;       // the Pixel panel opens on a new pick
     };
     PanelState& panel_state() const { return panel_state_; }
+    // The panels' layout: regions, tabs, splits (ui/panels/workspace.h); workspace().select(
+    // "Pixel") shows a panel's tab from the next frame on.
+    Workspace& workspace() { return workspace_; }
+    const Workspace& workspace() const { return workspace_; }
 
   private:
     static constexpr const char* kZfightImage = "zfight";         // a heat map over the frame
@@ -353,6 +358,7 @@ class Inspector {
     std::vector<std::filesystem::path> captures_;
     CaptureCompare compare_;
     mutable PanelState panel_state_;
+    Workspace workspace_;  // registers its imgui.ini entry with the current ImGui context
     // Scene frames (inspector_frames.cpp).
     std::optional<FrameJob> last_posted_;
     bool dirty_ = true;           // render again whatever the job says (scene, shaders, capture)
@@ -363,7 +369,8 @@ class Inspector {
     VkExtent2D shown_nominal_{};  // the full render size of the frame shown (motion: larger)
     std::chrono::steady_clock::time_point last_motion_{};
     uint64_t frames_posted_ = 0;
-    uint64_t frames_drawn_ = 0;             // frames_rendered_ when the panels last drew
+    uint64_t frames_drawn_ = 0;  // frames_rendered_ when the panels drew it a second time
+    uint64_t frames_seen_ = 0;   // frames_rendered_ when the panels last drew
     std::unique_ptr<RenderWorker> worker_;  // last: its thread stops before the rest goes
 };
 

@@ -54,6 +54,9 @@ grep -q '^depthscope: 40 frames (window 1000x600)' "$work/run1.txt" ||
 grep -qx 'scene=edges' "$work/config/settings.ini" || { echo "FAIL: scene not saved"; exit 1; }
 grep -qx 'exposure=2' "$work/config/settings.ini" || { echo "FAIL: exposure not saved"; exit 1; }
 [[ -s "$work/config/imgui.ini" ]] || { echo "FAIL: no imgui.ini"; exit 1; }
+# The workspace's entry (open tabs; split sizes once dragged), kept by the explicit save.
+grep -q '^tab_left=Settings$' "$work/config/imgui.ini" ||
+    { cat "$work/config/imgui.ini"; echo "FAIL: no workspace entry in imgui.ini"; exit 1; }
 
 "$exe" --frames 3 --validate >"$work/run2.txt" 2>&1 || { cat "$work/run2.txt"; exit 1; }
 cat "$work/run2.txt"

@@ -29,10 +29,16 @@ void row(const char* label, const char* format, double with, double without) {
 void sides_table(const capture::Advice& a) {
     const capture::AdviceSide& on = a.input.with_prepass;
     const capture::AdviceSide& off = a.input.without;
+    // As wide as its content: no wrapping inside (a wrapped label in a column fitted to its
+    // content printed one letter per line).
     const ImGuiTableFlags flags =
         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("sides", 3, flags)) return;
-    ImGui::TableSetupColumn("");
+    ImGui::PushTextWrapPos(-1.0f);
+    if (!ImGui::BeginTable("sides", 3, flags, ImVec2(table_fit_width("sides"), 0))) {
+        ImGui::PopTextWrapPos();
+        return;
+    }
+    ImGui::TableSetupColumn("measured");
     ImGui::TableSetupColumn("with prepass");
     ImGui::TableSetupColumn("without");
     ImGui::TableHeadersRow();
@@ -42,6 +48,7 @@ void sides_table(const capture::Advice& a) {
     row("frame ms", "%.3f", on.frame_ms, off.frame_ms);
     row("forward ns / fragment", "%.2f", a.ns_per_fragment_with, a.ns_per_fragment_without);
     ImGui::EndTable();
+    ImGui::PopTextWrapPos();
 }
 
 void advice_section(const Inspector& in) {
@@ -71,13 +78,7 @@ void advice_section(const Inspector& in) {
 
 }  // namespace
 
-void advisor_panel(PanelIo& io, const PanelLayout& layout) {
-    // Collapsed until wanted: measuring costs frames.
-    layout.next_stacked_window(PanelLayout::kAdvisor);
-    if (!ImGui::Begin("Advisor")) {
-        ImGui::End();
-        return;
-    }
+void advisor_panel(PanelIo& io) {
     const Inspector& in = io.inspector;
     if (ImGui::Button("measure")) io.actions.push_back(MeasureAdvice{});
     ImGui::SameLine();
@@ -90,7 +91,6 @@ void advisor_panel(PanelIo& io, const PanelLayout& layout) {
     else
         ImGui::TextDisabled("not measured yet: \"measure\" %s", kWhat);
     ImGui::PopTextWrapPos();
-    ImGui::End();
 }
 
 }  // namespace ds::ui

@@ -99,12 +99,7 @@ void compare_status(const Inspector& in, const CompareState& state) {
                 static_cast<unsigned long long>(c.differing().value_or(0)));
 }
 
-void compare_panel(PanelIo& io, const PanelLayout& layout) {
-    layout.next_stacked_window(PanelLayout::kCompare);
-    if (!ImGui::Begin("Compare")) {
-        ImGui::End();
-        return;
-    }
+void compare_panel(PanelIo& io) {
     if (ImGui::Button("Capture")) io.actions.push_back(CaptureFrame{});
     ImGui::SameLine();
     help_marker(
@@ -119,7 +114,6 @@ void compare_panel(PanelIo& io, const PanelLayout& layout) {
     compare_status(io.inspector, io.viewer.compare);
     ImGui::Separator();
     pin_other(io);
-    ImGui::End();
 }
 
 }  // namespace ds::ui

@@ -55,7 +55,8 @@ void zfight_section(PanelIo& io) {
     ImGui::SameLine();
     if (ImGui::SmallButton("view surface_id")) io.actions.push_back(SelectResource{"surface_id"});
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                  ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollY;
+                                  ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX |
+                                  ImGuiTableFlags_ScrollY;
     if (z.pairs.empty() || !ImGui::BeginTable("pairs", 4, flags, ImVec2(0, 110))) return;
     ImGui::TableSetupColumn("a");
     ImGui::TableSetupColumn("b");
@@ -218,18 +219,11 @@ void precision_section(PanelIo& io) {
 
 }  // namespace
 
-void depth_panel(PanelIo& io, const PanelLayout& layout) {
-    // Collapsed until wanted: the diagnostics cost frames.
-    layout.next_stacked_window(PanelLayout::kDepth);
-    if (!ImGui::Begin("Depth")) {
-        ImGui::End();
-        return;
-    }
+void depth_panel(PanelIo& io) {
     if (ImGui::CollapsingHeader("Z-fighting", ImGuiTreeNodeFlags_DefaultOpen)) zfight_section(io);
     if (ImGui::CollapsingHeader("EQUAL check", ImGuiTreeNodeFlags_DefaultOpen))
         equal_check_section(io);
     if (ImGui::CollapsingHeader("Precision", ImGuiTreeNodeFlags_DefaultOpen)) precision_section(io);
-    ImGui::End();
 }
 
 }  // namespace ds::ui

@@ -133,14 +133,57 @@ void row(PanelIo& io, const DrawReport& d, size_t passes) {
     }
 }
 
-void table(PanelIo& io, const std::vector<DrawReport>& draws) {
-    const std::vector<std::pair<std::string, uint64_t>>& passes = draws.front().shaded_fragments;
+// What a column's number means: its header's tooltip.
+std::string column_help(int column, const DrawsResult& f, const std::string& pass) {
+    switch (column) {
+        case kDrawGroup:
+            return "draw group: its index among the scene's draw groups (a mesh and a range of "
+                   "its instances, what forward draws in one call). 'occluded': the visibility "
+                   "pass drew it and none of it shows";
+        case kDrawMesh:
+            return "the group's mesh";
+        case kDrawMaterial:
+            return "the group's material";
+        case kDrawNode:
+            return "the scene node of the group's first instance";
+        case kDrawInstances:
+            return "instances in the group";
+        case kDrawVisible:
+            return "pixels where the prepass's nearest surface (surface_id) is one of the "
+                   "group's triangles; the column sums to the frame's covered pixels (msaa > 1: "
+                   "sample 0's). '-': no prepass, or a group it does not draw (blend, decals)";
+        case kDrawSamples:
+            return "samples that passed the depth test in " + f.samples_pass +
+                   " (precise occlusion queries, summed over the group's draws; msaa > 1 "
+                   "counts each sample). '-': that pass does not draw the group";
+        case kDrawWasted:
+            return "fragments: shaded minus visible pixels, summed over the passes drawn from "
+                   "the camera that shaded the group (the columns on the right; the shadow "
+                   "pass is not one): fragment shader runs that do not show";
+        case kDrawHiz:
+            return "hiz=on: the Hi-Z test's verdict on the group's instances, from their "
+                   "bounds against the depth pyramid. visible: may be seen (or crosses the "
+                   "near plane); occluded: every sample it could cover lies behind; outside: "
+                   "off screen or beyond the far plane. UNSAFE: occluded, yet samples passed";
+        default:
+            return "fragments that ran " + pass +
+                   "'s fragment shader for this group (counted on entry, exact; with early-Z "
+                   "only those that passed the depth test)";
+    }
+}
+
+// Columns as wide as their content, scrolled sideways when the strip is narrower.
+void table(PanelIo& io, const DrawsResult& result) {
+    const std::vector<DrawReport>& draws = result.draws;
+    std::vector<std::string> passes;
+    for (const auto& [pass, n] : draws.front().shaded_fragments) passes.push_back(pass);
     const int columns = kDrawShaded + int(passes.size());
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                  ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollY |
-                                  ImGuiTableFlags_Sortable | ImGuiTableFlags_Resizable;
-    if (!ImGui::BeginTable("draws", columns, flags)) return;
-    ImGui::TableSetupScrollFreeze(0, 1);
+                                  ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX |
+                                  ImGuiTableFlags_ScrollY | ImGuiTableFlags_Sortable |
+                                  ImGuiTableFlags_Resizable;
+    if (!ImGui::BeginTable("draws", columns, flags, scrolling_table_size())) return;
+    ImGui::TableSetupScrollFreeze(1, 1);  // the group's number and the header stay
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_DefaultSort, 0, kDrawGroup);
     ImGui::TableSetupColumn("mesh", 0, 0, kDrawMesh);
     ImGui::TableSetupColumn("material", 0, 0, kDrawMaterial);
@@ -151,8 +194,12 @@ void table(PanelIo& io, const std::vector<DrawReport>& draws) {
     ImGui::TableSetupColumn("wasted", 0, 0, kDrawWasted);
     ImGui::TableSetupColumn("Hi-Z", 0, 0, kDrawHiz);
     for (size_t k = 0; k < passes.size(); ++k)
-        ImGui::TableSetupColumn(passes[k].first.c_str(), 0, 0, ImGuiID(kDrawShaded + k));
-    ImGui::TableHeadersRow();
+        ImGui::TableSetupColumn(passes[k].c_str(), 0, 0, ImGuiID(kDrawShaded + k));
+    std::vector<std::string> help;
+    for (int c = 0; c < columns; ++c)
+        help.push_back(
+            column_help(c, result, c >= kDrawShaded ? passes[size_t(c - kDrawShaded)] : ""));
+    header_row_with_help(help);
     int column = kDrawGroup;
     bool ascending = true;
     if (const ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs(); specs && specs->SpecsCount) {
@@ -184,12 +231,7 @@ void summary(const DrawsResult& f, const HizResult* hiz) {
 
 }  // namespace
 
-void draws_panel(PanelIo& io, const PanelLayout& layout) {
-    layout.next_stacked_window(PanelLayout::kDraws);
-    if (!ImGui::Begin("Draws")) {
-        ImGui::End();
-        return;
-    }
+void draws_panel(PanelIo& io) {
     const FrameResult& frame = io.inspector.frame();
     const DrawsResult* draws = frame.find<DrawsResult>();
     if (!draws || draws->draws.empty()) {
@@ -201,7 +243,6 @@ void draws_panel(PanelIo& io, const PanelLayout& layout) {
         } else {
             ImGui::TextDisabled("no draws counted yet");
         }
-        ImGui::End();
         return;
     }
     summary(*draws, frame.find<HizResult>());
@@ -213,8 +254,7 @@ void draws_panel(PanelIo& io, const PanelLayout& layout) {
         ImGui::SameLine();
         if (ImGui::SmallButton("clear selection")) io.viewer.draw = -1;
     }
-    table(io, draws->draws);
-    ImGui::End();
+    table(io, *draws);
 }
 
 }  // namespace ds::ui

@@ -64,13 +64,7 @@ void overlay_row(PanelIo& io, size_t i, const std::string& status) {
 
 }  // namespace
 
-void overlays_panel(PanelIo& io, const PanelLayout& layout) {
-    // Collapsed until wanted.
-    layout.next_stacked_window(PanelLayout::kOverlays);
-    if (!ImGui::Begin("Overlays")) {
-        ImGui::End();
-        return;
-    }
+void overlays_panel(PanelIo& io) {
     add_picker(io);
     ImGui::SameLine();
     ImGui::Checkbox("one scale per pass", &io.viewer.shared_count_scale);
@@ -82,7 +76,6 @@ void overlays_panel(PanelIo& io, const PanelLayout& layout) {
     if (io.viewer.overlays.empty())
         ImGui::TextDisabled(
             "no overlays: add an image to draw it over the viewer's (0 = transparent)");
-    ImGui::End();
 }
 
 }  // namespace ds::ui

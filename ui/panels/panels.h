@@ -27,34 +27,35 @@ struct PanelIo {
     std::vector<Action>& actions;
 };
 
-// Window placement on first use (later runs take imgui.ini's).
-struct PanelLayout {
-    float width = 1600, height = 900;
-    // Side columns: 340 and 460 at 1600 wide, narrower in a small window.
-    float left() const { return std::min(340.0f, 0.22f * width); }
-    float right() const { return std::min(460.0f, 0.29f * width); }
-    // The panels that open over the lower viewer (Draws, Depth, Advisor, Overlays, Pixel,
-    // Compare)
-    // start collapsed, their title bars stacked from 55% of the height down, one per slot;
-    // opened, each spans the viewer's width down to the bottom.
-    enum Slot : int { kDraws, kDepth, kAdvisor, kOverlays, kPixel, kCompare, kTiler };
-    float stacked_y(Slot slot) const { return height * 0.55f + 24.0f * float(slot); }
-    void next_stacked_window(Slot slot) const;  // position, size and collapsed, first use
-};
+// The panels' content, each drawn inside its tab of the workspace (workspace.h): no window of
+// their own. The viewer is the workspace's centre.
+void passes_panel(PanelIo& io);
+void resources_panel(PanelIo& io);
+void viewer_panel(PanelIo& io);
+void settings_panel(PanelIo& io);
+void scene_panel(PanelIo& io);
+void shaders_panel(PanelIo& io);
+void depth_panel(PanelIo& io);
+void advisor_panel(PanelIo& io);
+void draws_panel(PanelIo& io);
+void overlays_panel(PanelIo& io);
+void pixel_panel(PanelIo& io);
+void compare_panel(PanelIo& io);
+void tiler_panel(PanelIo& io);
+// A new pick wants the Pixel panel shown (once per pick).
+bool pixel_panel_wants_tab(PanelIo& io);
 
-void passes_panel(PanelIo& io, const PanelLayout& layout);
-void resources_panel(PanelIo& io, const PanelLayout& layout);
-void viewer_panel(PanelIo& io, const PanelLayout& layout);
-void settings_panel(PanelIo& io, const PanelLayout& layout);
-void scene_panel(PanelIo& io, const PanelLayout& layout);
-void shaders_panel(PanelIo& io, const PanelLayout& layout);
-void depth_panel(PanelIo& io, const PanelLayout& layout);
-void advisor_panel(PanelIo& io, const PanelLayout& layout);
-void draws_panel(PanelIo& io, const PanelLayout& layout);
-void overlays_panel(PanelIo& io, const PanelLayout& layout);
-void pixel_panel(PanelIo& io, const PanelLayout& layout);
-void compare_panel(PanelIo& io, const PanelLayout& layout);
-void tiler_panel(PanelIo& io, const PanelLayout& layout);
+// One tab of the workspace: its name, the region it lives in, what draws its content and,
+// where it has one, when it asks to be shown (true: its tab is selected at the next frame).
+// Selecting a tab from code: Inspector::workspace().select(name).
+struct PanelEntry {
+    const char* name;
+    Region region;
+    void (*draw)(PanelIo& io);
+    bool (*wants_tab)(PanelIo& io) = nullptr;
+};
+// Every panel, in tab order within each region (panel_list.cpp: a panel is one line there).
+const std::vector<PanelEntry>& panel_list();
 
 // The Draws panel's table: column ids (kDrawShaded + k: shaded fragments of the k-th counting
 // pass of the draws' shaded_fragments), and the rows to show — indices into `draws` whose
@@ -77,6 +78,16 @@ std::vector<size_t> draw_rows(const std::vector<DrawReport>& draws, const std::s
 
 // Shared widgets.
 void help_marker(const char* text);  // "(?)" with a tooltip
+// A table's header row (after its TableSetupColumn calls), each header's tooltip what the
+// column's numbers mean: help[column] ("" or missing: none).
+void header_row_with_help(const std::vector<std::string>& help);
+// BeginTable's outer width for a fixed-fit table without ScrollX: the width its columns wanted
+// at the last frame, so that none is squeezed (a narrower tab scrolls sideways instead); 0,
+// the width available, before its first frame.
+float table_fit_width(const char* str_id);
+// A ScrollY table's outer size: the rest of the tab, at least `rows` rows high (a short tab
+// scrolls to it: the table is never squeezed away).
+ImVec2 scrolling_table_size(int rows = 8);
 // The sample view (viewer_samples.cpp): every visible pixel's samples over the image when
 // zoomed in (the hovered texel outlined), a pixel's sample list (hover tooltip, Pixel panel).
 void draw_samples(const PanelIo& io, ImVec2 scale, std::optional<std::array<uint32_t, 2>> hover);

@@ -117,7 +117,7 @@ struct Column {
 // The column headers, each with what its number means on this device as a tooltip.
 void header_row(const std::vector<Column>& columns) {
     for (const Column& c : columns) ImGui::TableSetupColumn(c.name);
-    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 40.0f);  // the bar
     ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
     for (size_t i = 0; i < columns.size(); ++i) {
         ImGui::TableSetColumnIndex(int(i));
@@ -223,9 +223,10 @@ void pass_table(PanelIo& io, const FrameResult& frame) {
     // count_fragments=on: the exact counts in a table of their own below.
     const bool counted = std::any_of(frame.passes.begin(), frame.passes.end(),
                                      [](const PassResult& p) { return p.shaded_fragments; });
+    // As wide as their content; the tab scrolls sideways when the column is narrower.
     const ImGuiTableFlags flags =
         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("passes", 6, flags)) return;
+    if (!ImGui::BeginTable("passes", 6, flags, ImVec2(table_fit_width("passes"), 0))) return;
     header_row(pass_columns(io.inspector.device()));
     double support_ms = 0.0;
     int support = 0;
@@ -242,7 +243,8 @@ void pass_table(PanelIo& io, const FrameResult& frame) {
         ImGui::TreePop();
     }
     ImGui::EndTable();
-    if (!counted || !ImGui::BeginTable("counts", 6, flags)) return;
+    if (!counted || !ImGui::BeginTable("counts", 6, flags, ImVec2(table_fit_width("counts"), 0)))
+        return;
     header_row(count_columns());
     for (const PassResult& p : frame.passes)
         if (p.shaded_fragments) count_row(p);
@@ -278,23 +280,17 @@ void frame_time_plot(const PassHistory& history) {
 
 }  // namespace
 
-void passes_panel(PanelIo& io, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(layout.width - layout.right(), 0), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(layout.right(), layout.height * 0.55f), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Passes")) {
-        ImGui::End();
-        return;
-    }
+void passes_panel(PanelIo& io) {
     const FrameResult& frame = io.inspector.frame();
     ImGui::Text("frame %.2f ms GPU, %.2f ms CPU record, %ux%u", frame.gpu_ms, frame.cpu_ms,
                 frame.width, frame.height);
     pass_table(io, frame);
-    if (!frame.skipped.empty()) {
-        for (const std::string& s : frame.skipped) ImGui::TextDisabled("%s", s.c_str());
-    }
+    // Why passes did not run, whole: wrapped at the column's edge.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    for (const std::string& s : frame.skipped) ImGui::TextWrapped("%s", s.c_str());
+    ImGui::PopStyleColor();
     selected_pass(io, frame);
     frame_time_plot(io.inspector.history());
-    ImGui::End();
 }
 
 }  // namespace ds::ui

@@ -18,9 +18,29 @@ namespace {
 constexpr ImGuiTableFlags kTableFlags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                         ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX |
                                         ImGuiTableFlags_ScrollY;
-constexpr const char* kColumns[] = {"#",     "pass",   "draw",   "surface", "prim",
-                                    "smp",   "depth",  "linear", "test",    "against",
-                                    "alpha", "shaded", "colour", "blended"};
+// The history's columns and what each means (the headers' tooltips).
+struct PixelColumn {
+    const char* name;
+    const char* help;
+};
+constexpr PixelColumn kColumns[] = {
+    {"#", "the fragment's place in submission order"},
+    {"pass", "the geometry pass that drew it (hover a row: its pipeline)"},
+    {"draw", "the draw's index within its pass"},
+    {"surface", "mesh / material (hover a row: node and instance)"},
+    {"prim", "the primitive (triangle) within the draw"},
+    {"smp", "the MSAA sample the fragment was tested at (0 without MSAA)"},
+    {"depth", "the fragment's depth as stored (0..1; reverse-Z: 1 is near)"},
+    {"linear", "its distance from the camera in scene units, from the frame's planes"},
+    {"test", "the depth test against 'against': pass or fail"},
+    {"against", "the depth buffer's value when the fragment was tested, as stored"},
+    {"alpha",
+     "masked materials: alpha / cutoff, and the alpha test's outcome (kept or "
+     "discarded); '-': no alpha test"},
+    {"shaded", "the fragment shader ran (early-Z pipelines: only if the depth test passed)"},
+    {"colour", "the colour the shader wrote (HDR, shown tone-mapped; hover: the numbers)"},
+    {"blended", "blended passes: the colour after blending with what was there"}};
+constexpr int kAlphaColumn = 10;
 
 // HDR colours as swatches: Reinhard per channel, so bright values still show their hue; the
 // tooltip has the numbers.
@@ -90,10 +110,17 @@ void history_table(const Inspector& in) {
         return;
     }
     const int columns = int(std::size(kColumns));
-    if (!ImGui::BeginTable("fragments", columns, kTableFlags)) return;
-    for (const char* c : kColumns) ImGui::TableSetupColumn(c);
+    if (!ImGui::BeginTable("fragments", columns, kTableFlags, scrolling_table_size())) return;
+    // The alpha column is as wide as its widest text: "discarded" and "kept" whole.
+    const float alpha_width = ImGui::CalcTextSize("0.000 / 0.000 discarded").x;
+    std::vector<std::string> help;
+    for (int c = 0; c < columns; ++c) {
+        const PixelColumn& column = kColumns[c];
+        ImGui::TableSetupColumn(column.name, 0, c == kAlphaColumn ? alpha_width : 0.0f);
+        help.push_back(column.help);
+    }
     ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableHeadersRow();
+    header_row_with_help(help);
     for (size_t i = 0; i < h.fragments.size(); ++i) fragment_row(in, i, h.fragments[i]);
     ImGui::EndTable();
 }
@@ -122,7 +149,7 @@ void samples_section(const Inspector& in) {
         "'kept' were cut by its alpha, unless a nearer surface won them (see depth).");
     constexpr ImGuiTableFlags flags =
         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("coverage", 5, flags)) return;
+    if (!ImGui::BeginTable("coverage", 5, flags, ImVec2(table_fit_width("coverage"), 0))) return;
     for (const char* c : {"surface", "prim", "alpha", "rasterized (before)", "kept (after)"})
         ImGui::TableSetupColumn(c);
     ImGui::TableHeadersRow();
@@ -148,19 +175,14 @@ void samples_section(const Inspector& in) {
 
 }  // namespace
 
-void pixel_panel(PanelIo& io, const PanelLayout& layout) {
-    // Over the lower part of the viewer, collapsed until a pick opens it.
-    layout.next_stacked_window(PanelLayout::kPixel);
+bool pixel_panel_wants_tab(PanelIo& io) {
     Inspector::PanelState& state = io.inspector.panel_state();
-    if (io.inspector.pixel_picks() != state.pixel_picks_shown) {  // a new pick: show it
-        state.pixel_picks_shown = io.inspector.pixel_picks();
-        ImGui::SetNextWindowCollapsed(false);
-        ImGui::SetNextWindowFocus();
-    }
-    if (!ImGui::Begin("Pixel")) {
-        ImGui::End();
-        return;
-    }
+    if (io.inspector.pixel_picks() == state.pixel_picks_shown) return false;
+    state.pixel_picks_shown = io.inspector.pixel_picks();  // a new pick: show it
+    return true;
+}
+
+void pixel_panel(PanelIo& io) {
     const Inspector& in = io.inspector;
     if (in.pixel_history()) {
         if (ImGui::Button("again")) {  // the same pixel with the settings as they are now
@@ -180,7 +202,6 @@ void pixel_panel(PanelIo& io, const PanelLayout& layout) {
         history_table(in);
     } else
         ImGui::TextDisabled("pick a pixel: the viewer's \"pick\" mouse mode (or Alt) and a click");
-    ImGui::End();
 }
 
 }  // namespace ds::ui

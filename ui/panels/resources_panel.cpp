@@ -8,18 +8,12 @@
 
 namespace ds::ui {
 
-void resources_panel(PanelIo& io, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(layout.width - layout.right(), layout.height * 0.55f),
-                            ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(layout.right(), layout.height * 0.45f), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Resources")) {
-        ImGui::End();
-        return;
-    }
+void resources_panel(PanelIo& io) {
     const FrameResult& frame = io.inspector.frame();
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                  ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollY;
-    if (ImGui::BeginTable("resources", 5, flags)) {
+                                  ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX |
+                                  ImGuiTableFlags_ScrollY;
+    if (ImGui::BeginTable("resources", 5, flags, scrolling_table_size())) {
         ImGui::TableSetupScrollFreeze(0, 1);
         ImGui::TableSetupColumn("name");
         ImGui::TableSetupColumn("format");
@@ -56,7 +50,6 @@ void resources_panel(PanelIo& io, const PanelLayout& layout) {
         }
         ImGui::EndTable();
     }
-    ImGui::End();
 }
 
 }  // namespace ds::ui

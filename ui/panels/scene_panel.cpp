@@ -62,13 +62,7 @@ void decal_list(const scene::Scene& s) {
 
 }  // namespace
 
-void scene_panel(PanelIo& io, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(0, layout.height * 0.55f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(layout.left(), layout.height * 0.27f), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Scene")) {
-        ImGui::End();
-        return;
-    }
+void scene_panel(PanelIo& io) {
     const SceneSummary& s = io.inspector.scene_summary();
     if (ImGui::BeginCombo("built-in", s.source.rfind("builtin:", 0) == 0 ? s.name.c_str() : "")) {
         for (const scene::builtin::Info& info : scene::builtin::list()) {
@@ -92,7 +86,6 @@ void scene_panel(PanelIo& io, const PanelLayout& layout) {
     ImGui::Text("materials: %zu opaque, %zu masked, %zu blend", s.opaque, s.masked, s.blend);
     decal_list(io.inspector.scene());
     masked_cutoffs(io, s);
-    ImGui::End();
 }
 
 }  // namespace ds::ui

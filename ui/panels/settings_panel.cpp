@@ -159,13 +159,7 @@ void knob(PanelIo& io, const SettingDef& def) {
 
 }  // namespace
 
-void settings_panel(PanelIo& io, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(layout.left(), layout.height * 0.55f), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Settings")) {
-        ImGui::End();
-        return;
-    }
+void settings_panel(PanelIo& io) {
     const auto& defs = SettingsRegistry::instance().all();
     std::vector<std::string> groups;
     for (const SettingDef& d : defs)
@@ -174,7 +168,9 @@ void settings_panel(PanelIo& io, const PanelLayout& layout) {
     if (ImGui::SmallButton("reset all")) io.actions.push_back(ResetSettings{});
     ImGui::SameLine();
     ImGui::TextDisabled("changed knobs are yellow");
-    ImGui::PushItemWidth(-150);
+    // Widgets take what the knob names leave (about 150 units), at least 45 % of a narrow tab.
+    const float avail = ImGui::GetContentRegionAvail().x;
+    ImGui::PushItemWidth(std::max(0.45f * avail, avail - 150.0f));
     for (const std::string& group : groups) {
         // IDs by group and knob: a group and a knob may share a name ("msaa").
         ImGui::PushID(group.c_str());
@@ -189,7 +185,6 @@ void settings_panel(PanelIo& io, const PanelLayout& layout) {
         ImGui::PopID();
     }
     ImGui::PopItemWidth();
-    ImGui::End();
 }
 
 }  // namespace ds::ui

@@ -17,20 +17,7 @@ void help_marker(const char* text) {
     }
 }
 
-void PanelLayout::next_stacked_window(Slot slot) const {
-    const float y = stacked_y(slot);
-    ImGui::SetNextWindowPos(ImVec2(left(), y), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(width - left() - right(), height - y), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-}
-
-void shaders_panel(PanelIo& io, const PanelLayout& layout) {
-    ImGui::SetNextWindowPos(ImVec2(0, layout.height * 0.82f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(layout.left(), layout.height * 0.18f), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Shaders")) {
-        ImGui::End();
-        return;
-    }
+void shaders_panel(PanelIo& io) {
     const Inspector& in = io.inspector;
     if (ImGui::Button("Reload")) io.actions.push_back(ReloadShaders{});
     ImGui::SameLine();
@@ -43,7 +30,6 @@ void shaders_panel(PanelIo& io, const PanelLayout& layout) {
     else
         ImGui::TextDisabled("%s", in.shader_status().c_str());
     ImGui::PopTextWrapPos();
-    ImGui::End();
 }
 
 }  // namespace ds::ui

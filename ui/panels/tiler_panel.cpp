@@ -36,7 +36,8 @@ void budget(const graph::TilerReport& t) {
 void attachments(const graph::TilerReport& t) {
     const ImGuiTableFlags flags =
         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("attachments", 7, flags)) return;
+    if (!ImGui::BeginTable("attachments", 7, flags, ImVec2(table_fit_width("attachments"), 0)))
+        return;
     for (const char* h : {"#", "attachment", "format", "role", "bits", "load / store", "memory"})
         ImGui::TableSetupColumn(h);
     ImGui::TableHeadersRow();
@@ -79,12 +80,7 @@ void conditions(const graph::TilerReport& t) {
 
 }  // namespace
 
-void tiler_panel(PanelIo& io, const PanelLayout& layout) {
-    layout.next_stacked_window(PanelLayout::kTiler);
-    if (!ImGui::Begin("Tiler")) {
-        ImGui::End();
-        return;
-    }
+void tiler_panel(PanelIo& io) {
     const FrameResult& frame = io.inspector.frame();
     if (!frame.tiler) {
         ImGui::PushTextWrapPos(0.0f);
@@ -105,7 +101,6 @@ void tiler_panel(PanelIo& io, const PanelLayout& layout) {
         attachments(t);
         conditions(t);
     }
-    ImGui::End();
 }
 
 }  // namespace ds::ui

@@ -23,10 +23,6 @@ using view::DepthView;
 using view::is_perspective_depth;
 using view::LegendStop;
 
-constexpr ImGuiWindowFlags kFlags = ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoScrollbar |
-                                    ImGuiWindowFlags_NoScrollWithMouse |
-                                    ImGuiWindowFlags_NoCollapse;
-
 // The resource picker (images and derived views such as forward_wasted), with the shown
 // image's size and semantic after it.
 void resource_picker(PanelIo& io, const InspectedImage* image) {
@@ -326,16 +322,10 @@ void rendering_mark(const Inspector& inspector, const ImVec2& origin) {
 
 }  // namespace
 
-void viewer_panel(PanelIo& io, const PanelLayout& layout) {
-    const float x = layout.left(), w = layout.width - layout.left() - layout.right();
-    ImGui::SetNextWindowPos(ImVec2(x, 0), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(std::max(w, 200.0f), layout.height), ImGuiCond_FirstUseEver);
+// Inside the workspace's centre region (workspace_draw.cpp), which has no background: the
+// presenter draws the image under ImGui at ViewerState x/y/w/h.
+void viewer_panel(PanelIo& io) {
     ViewerState& v = io.viewer;
-    if (!ImGui::Begin("Viewer", nullptr, kFlags)) {
-        v.w = v.h = 0;
-        ImGui::End();
-        return;
-    }
     const FrameResult& frame = io.inspector.frame();
     controls(io);
     int legend_id = 0;
@@ -378,7 +368,6 @@ void viewer_panel(PanelIo& io, const PanelLayout& layout) {
     }
     if (!io.inspector.message().empty())
         ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", io.inspector.message().c_str());
-    ImGui::End();
 }
 
 }  // namespace ds::ui

@@ -113,7 +113,7 @@ void sample_table(const PixelSampleList& list) {
                            "surfaces unknown: surface_id needs the prepass (prepass=off)");
     constexpr ImGuiTableFlags flags =
         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-    if (ImGui::BeginTable("samples", 6, flags)) {
+    if (ImGui::BeginTable("samples", 6, flags, ImVec2(table_fit_width("samples"), 0))) {
         for (const char* c : {"#", "position", "surface", "depth", "linear", "colour"})
             ImGui::TableSetupColumn(c);
         ImGui::TableHeadersRow();

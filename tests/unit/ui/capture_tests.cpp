@@ -55,8 +55,7 @@ class InspectorCapture : public InspectorUi {
     }
     // The UI with the Compare panel open, written where the test's files go (to look at).
     static void screenshot(HeadlessUi& ui, const fs::path& file) {
-        ImGui::SetWindowCollapsed("Compare", false);
-        ImGui::SetWindowFocus("Compare");  // over the viewer, as a click on its title puts it
+        ui.inspector().workspace().select("Compare");
         ui.frame();
         const std::vector<uint8_t> pixels = ui.frame();
         capture::write_png_rgba8(file, ui.size().width, ui.size().height, pixels);

@@ -34,7 +34,8 @@ TEST_F(DrawsPanel, FiltersSortsAndHighlightsTheSelectedDraw) {
     HeadlessUi* ui = &ui_owner;
     ui->frame();  // lays the panels out
     ui::Inspector& in = ui->inspector();
-    ImGui::SetWindowCollapsed("Draws", false);
+    in.workspace().select("Draws");
+    in.workspace().set_splits({0, 0, 300});  // room for the summary, the filter and the table
     ui->frame();
     EXPECT_TRUE(passes::draws_of(in.frame()).draws.empty());
     in.queue(ui::SetSetting{"count_draws", "on"});

@@ -258,10 +258,6 @@ TEST_F(Inspector, ZfightViewNamesFightsAndShowsTheSelectedPair) {
 
 TEST_F(Inspector, ZoomedInTheReadoutNamesTheTexelDrawnUnderTheCursor) {
     auto ui = open("atrium");
-    // The collapsed panels' title bars lie over the lower image (the Viewer window has no
-    // background): park them outside the framebuffer, so every probe sees the blit alone.
-    for (const char* panel : {"Draws", "Depth", "Advisor", "Overlays", "Pixel", "Tiler"})
-        ImGui::SetWindowPos(panel, ImVec2(0.0f, 10000.0f));
     ui::ViewerState& v = ui->inspector().viewer();
     v.zoom = 4.0f;
     v.centre = {0.37f, 0.61f};  // a fractional origin: the blit's rounding shows
@@ -331,8 +327,10 @@ TEST_F(Inspector, MeasureAdviceGivesTheOverdrawScenesLayers) {
     EXPECT_EQ(in.settings().get("count_fragments"), "off");
     EXPECT_TRUE(has_pass(in.frame(), "depth_prepass"));
     // The panel, opened, draws the result (an ImGui assertion would abort here).
-    ImGui::SetWindowCollapsed("Advisor", false);
+    in.workspace().select("Advisor");
+    ui->frame();
     const std::vector<uint8_t> pixels = ui->frame();
+    EXPECT_EQ(in.workspace().open_tab(ui::Region::Right), "Advisor");
     if (const char* png = std::getenv("DS_ADVISOR_PNG"))
         capture::write_png_rgba8(png, 640, 360, pixels);
 

@@ -150,8 +150,7 @@ TEST_F(Overlays, CountOverlaysBlendOverTheFinalImageInOrder) {
     EXPECT_NE(in.view().rgba8, before);
     // A look at it: the Overlays panel open, forward's wasted view over the frame as well.
     in.queue(ui::AddOverlay{"forward_wasted"});
-    ImGui::SetWindowCollapsed("Overlays", false);
-    ImGui::SetWindowFocus("Overlays");
+    in.workspace().select("Overlays");
     ui->frame();
     const std::vector<uint8_t> pixels = ui->frame();
     EXPECT_EQ(in.composer().overlay_status(), (std::vector<std::string>{"", "", ""}));
@@ -240,7 +239,10 @@ TEST_F(Overlays, APassesCountImagesShareOneScaleAndLegend) {
 
     in.viewer().shared_count_scale = false;
     ui->frame();
-    EXPECT_EQ(in.view().white, own);
+    // Its own range again (of this frame: the viewer's size, and with it the counts, follow
+    // the legend lines).
+    EXPECT_EQ(in.view().white, view::count_max(std::vector<const InspectedImage*>{in.shown()}));
+    EXPECT_LT(in.view().white, pass_max(in, "forward"));
     EXPECT_EQ(in.composer().legends().size(), 2u);
     // A manual range in the viewer is the pass's scale.
     in.viewer().shared_count_scale = true;
@@ -271,19 +273,17 @@ TEST_F(Overlays, ThePanelEditsTheList) {
     EXPECT_EQ(in.viewer().overlays[0].resource, "depth");
     EXPECT_EQ(in.viewer().overlays[1].resource, "forward_counts");
 
-    const ImVec2 pos(24, 40);
-    ImGui::SetWindowCollapsed("Overlays", false);
-    ImGui::SetWindowPos("Overlays", pos);
-    ImGui::SetWindowSize("Overlays", ImVec2(560, 200));
-    ImGui::SetWindowFocus("Overlays");
+    in.workspace().select("Overlays");
+    in.workspace().set_splits({0, 0, 300});  // a strip tall enough for the rows (clamped)
     ui->frame();
+    ui->frame();
+    ASSERT_TRUE(in.workspace().panel_rects().count("Overlays"));
+    const ui::Rect panel = in.workspace().panel_rects().at("Overlays");
     const ImGuiStyle& style = ImGui::GetStyle();
     const float frame_h = ImGui::GetFrameHeight();
-    const float title = ImGui::GetFontSize() + style.FramePadding.y * 2;
     // Row 0 holds the add picker; overlay i is row i + 1.
-    const glm::vec2 checkbox{pos.x + style.WindowPadding.x + frame_h * 0.5f,
-                             pos.y + title + style.WindowPadding.y +
-                                 2 * (frame_h + style.ItemSpacing.y) + frame_h * 0.5f};
+    const glm::vec2 checkbox{panel.x + frame_h * 0.5f,
+                             panel.y + 2 * (frame_h + style.ItemSpacing.y) + frame_h * 0.5f};
     HeadlessInput press;
     press.mouse = checkbox;
     press.left = true;
@@ -299,10 +299,7 @@ TEST_F(Overlays, ThePanelEditsTheList) {
     in.queue(ui::AddOverlay{"shadow_map"});
     ui->frame();
     EXPECT_EQ(in.composer().overlay_status()[2], "size differs");
-    // Hovering the image reads the drawn overlays there too (the panel folded away first, and
-    // above the Depth and Advisor title bars).
-    ImGui::SetWindowCollapsed("Overlays", true);
-    ui->frame();
+    // Hovering the image reads the drawn overlays there too.
     const ui::ViewerState& v = in.viewer();
     HeadlessInput hover;
     hover.mouse = glm::vec2(v.x + v.w * 0.5f, v.y + v.h * 0.4f);

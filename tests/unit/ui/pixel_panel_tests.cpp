@@ -11,7 +11,6 @@
 #include <vector>
 
 #include <imgui.h>
-#include <imgui_internal.h>  // ImGui::FindWindowByName: whether a panel is open
 
 #include "renderer/capture/image_writer.h"
 #include "renderer/passes/pixel_history.h"
@@ -65,6 +64,10 @@ TEST_F(PixelPanel, PickPixelListsTheOverdrawLayersAndAClickPicks) {
     EXPECT_EQ(in.pixel_history()->x, x);
 
     // A click in pick mode: the texel under the cursor (press, then release without moving).
+    in.workspace().select("Draws");  // another tab of the strip the Pixel panel is in
+    ui->frame();
+    ui->frame();
+    ASSERT_EQ(in.workspace().open_tab(ui::Region::Bottom), "Draws");
     in.viewer().mouse = ui::MouseTarget::Pick;
     const glm::vec3 camera = in.camera().position;
     HeadlessInput click;
@@ -78,12 +81,11 @@ TEST_F(PixelPanel, PickPixelListsTheOverdrawLayersAndAClickPicks) {
     EXPECT_EQ(in.pixel_history()->y, 23u);
     EXPECT_EQ(in.pixel_history()->fragments.size(), 16u);  // 8 prepass + 8 forward
     EXPECT_EQ(in.camera().position, camera);               // pick mode leaves the camera
-    // A pick opens the panel (collapsed until the first), which draws the table (an ImGui
-    // assertion would abort here).
-    const ImGuiWindow* panel = ImGui::FindWindowByName("Pixel");
-    ASSERT_TRUE(panel);
-    EXPECT_FALSE(panel->Collapsed) << "a pick shows its history";
-    ui->frame();  // the table sizes its columns to what the first frame drew
+    // A pick shows the Pixel panel's tab (selected at the next frame, drawn at the one after),
+    // which draws the table (an ImGui assertion would abort here).
+    ui->frame();
+    ui->frame();
+    EXPECT_EQ(in.workspace().open_tab(ui::Region::Bottom), "Pixel") << "a pick shows its history";
     const std::vector<uint8_t> pixels = ui->frame();
     if (const char* png = std::getenv("DS_PIXEL_PNG"))
         capture::write_png_rgba8(png, 1280, 720, pixels);

@@ -26,9 +26,7 @@ TEST_F(TilerPanel, SwitchingToTheSubpassPathShowsTheRenderPassAndItsVerdict) {
     ui.frame();  // lays the panels out
     ui::Inspector& in = ui.inspector();
     EXPECT_FALSE(in.frame().tiler);  // dynamic: nothing to merge
-    ImGui::SetWindowCollapsed("Tiler", false);
-    ImGui::SetWindowPos("Tiler", ImVec2(360.0f, 420.0f));
-    ImGui::SetWindowSize("Tiler", ImVec2(900.0f, 300.0f));
+    in.workspace().select("Tiler");
     in.queue(ui::SetSetting{"render_path", "subpass"});
     ui.frame();
     ui.frame();  // the panels draw the subpass frame; its tables fit their columns
