@@ -281,7 +281,7 @@ CLI::App* add_diagnose_command(CLI::App& app, Options& o, SizeTexts& texts) {
     CLI::Option* look_at =
         add_text_option(*diagnose, "--look-at", texts.look_at,
                         "the view: a camera at EX,EY,EZ looking at TX,TY,TZ (the scene camera's "
-                        "field of view and planes)")
+                        "field of view and near plane)")
             ->type_name("EX,EY,EZ:TX,TY,TZ");
     add_path_option(*diagnose, "--camera", o.camera_capture,
                     "the view: the camera of a capture folder (its report.json)")
