@@ -32,6 +32,11 @@ nlohmann::json read_report(const fs::path& path) {
 
 }  // namespace
 
+scene::Camera captured_camera(const fs::path& dir) {
+    const fs::path path = dir / "report.json";
+    return capture::parse_replay(read_report(path), path).camera;
+}
+
 std::string slurp(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream bytes;

@@ -31,6 +31,10 @@ CaptureSource read_capture_source(const std::filesystem::path& dir,
 scene::Scene load_captured_scene(const capture::ReplayInfo& info, const Settings& settings,
                                  bool force);
 
+// The camera a capture folder's report.json recorded (its "replay" object); throws ds::Error
+// "PATH: …" like read_capture_source. Its scene, version and settings are not checked.
+scene::Camera captured_camera(const std::filesystem::path& dir);
+
 // A file's bytes; throws ds::Error "PATH: cannot read".
 std::string slurp(const std::filesystem::path& path);
 

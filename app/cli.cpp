@@ -1,6 +1,8 @@
 #include "app/cli.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <limits>
 
 #include <CLI/CLI.hpp>
@@ -21,6 +23,7 @@ struct Subcommands {
     CLI::App* pixel = nullptr;
     CLI::App* replay = nullptr;
     CLI::App* diff = nullptr;
+    CLI::App* diagnose = nullptr;
 };
 
 // --size texts, parsed once the command is known: the window's (view) or the render's. Unset
@@ -29,7 +32,8 @@ struct Subcommands {
 struct SizeTexts {
     std::optional<std::string> render;
     std::optional<std::string> window;
-    std::optional<std::string> at;  // pixel --at
+    std::optional<std::string> at;       // pixel --at
+    std::optional<std::string> look_at;  // diagnose --look-at
 };
 
 // Digits only, read without wrapping: no sign, space, hex, octal or exponent (CLI11 alone
@@ -264,6 +268,41 @@ CLI::App* add_diff_command(CLI::App& app, Options& o) {
     return diff;
 }
 
+CLI::App* add_diagnose_command(CLI::App& app, Options& o, SizeTexts& texts) {
+    auto* diagnose = app.add_subcommand(
+        "diagnose",
+        "run every detector that applies on one view (measurement knobs only): ranked findings "
+        "(error: a visible artefact, warning: wasted work, info: advice), each with its "
+        "magnitude, surfaces and fix, and the detectors skipped with the reason");
+    add_render_options(*diagnose, o, /*with_scene=*/true);
+    add_text_option(*diagnose, "--size", texts.render,
+                    "render size WIDTHxHEIGHT (default 1280x720)")
+        ->type_name("WxH");
+    CLI::Option* look_at =
+        add_text_option(*diagnose, "--look-at", texts.look_at,
+                        "the view: a camera at EX,EY,EZ looking at TX,TY,TZ (the scene camera's "
+                        "field of view and near plane)")
+            ->type_name("EX,EY,EZ:TX,TY,TZ");
+    add_path_option(*diagnose, "--camera", o.camera_capture,
+                    "the view: the camera of a capture folder (its report.json)")
+        ->type_name("DIR")
+        ->excludes(look_at);
+    add_path_option(*diagnose, "--json", o.out,
+                    "also write the findings as JSON to FILE (a new file or a regular one)");
+    diagnose
+        ->add_option_function<std::string>(
+            "--fail-on",
+            [&o](const std::string& text) {
+                if (text != "error" && text != "warning")
+                    throw UsageError("--fail-on expects error or warning, got " + quote(text));
+                o.fail_on = text;
+            },
+            "exit 1 when a finding is at this level or more severe (default: exit 0 whatever "
+            "is found)")
+        ->type_name("error|warning");
+    return diagnose;
+}
+
 // Every subcommand in help order; the top level takes the inspector's options too.
 Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     Subcommands c;
@@ -282,6 +321,7 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     c.pixel = add_pixel_command(app, o, sizes);
     c.replay = add_replay_command(app, o);
     c.diff = add_diff_command(app, o);
+    c.diagnose = add_diagnose_command(app, o, sizes);
     return c;
 }
 
@@ -309,13 +349,15 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
     if (c.pixel->parsed()) o.command = Command::Pixel;
     if (c.replay->parsed()) o.command = Command::Replay;
     if (c.diff->parsed()) o.command = Command::Diff;
+    if (c.diagnose->parsed()) o.command = Command::Diagnose;
     if (sizes.at) parse_at(*sizes.at, o.at_x, o.at_y);
+    if (sizes.look_at) o.look_at = parse_look_at(*sizes.look_at);
     if (sizes.render) o.size = parse_size(*sizes.render);
     if (sizes.window) {
         o.window = parse_size(*sizes.window);
         if (o.command == Command::Default) o.size = o.window;  // the headless fallback
     }
-    for (CLI::App* cmd : {&app, c.view, c.capture, c.bench, c.pixel})
+    for (CLI::App* cmd : {&app, c.view, c.capture, c.bench, c.pixel, c.diagnose})
         if (cmd->count("--scene")) o.scene_given = true;
     const bool inspector = o.command == Command::View || o.command == Command::Default;
     if (inspector && !o.capture_in.empty() && o.scene_given)
@@ -355,13 +397,59 @@ void parse_at(const std::string& text, uint32_t& x, uint32_t& y) {
     y = *py;
 }
 
+namespace {
+
+// One decimal number of a --look-at text (minus, digits, point, exponent), finite; none else.
+std::optional<float> parse_coordinate(std::string_view text) {
+    float value = 0;
+    const bool plain =
+        !text.empty() && text.find_first_not_of("-0123456789.eE") == std::string_view::npos;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (!plain || ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(value))
+        return std::nullopt;
+    return value;
+}
+
+// "x,y,z" into out[3]; false when it is not three numbers.
+bool parse_point(std::string_view text, float out[3]) {
+    for (int i = 0; i < 3; ++i) {
+        const size_t end = i < 2 ? text.find(',') : text.size();
+        if (end == std::string_view::npos) return false;
+        const std::optional<float> v = parse_coordinate(text.substr(0, end));
+        if (!v) return false;
+        out[i] = *v;
+        if (i < 2) text.remove_prefix(end + 1);
+    }
+    return true;
+}
+
+}  // namespace
+
+LookAt parse_look_at(const std::string& text) {
+    LookAt l;
+    const size_t colon = text.find(':');
+    const bool ok = colon != std::string::npos && text.find(':', colon + 1) == std::string::npos &&
+                    parse_point(std::string_view(text).substr(0, colon), l.eye) &&
+                    parse_point(std::string_view(text).substr(colon + 1), l.target);
+    if (!ok)
+        throw UsageError(
+            "--look-at expects EX,EY,EZ:TX,TY,TZ (six numbers: the eye, then the "
+            "point it looks at), got " +
+            quote(text));
+    if (l.eye[0] == l.target[0] && l.eye[1] == l.target[1] && l.eye[2] == l.target[2])
+        throw UsageError("--look-at: the eye and the point it looks at are the same, got " +
+                         quote(text));
+    return l;
+}
+
 std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
     CLI::App app{
         "depthscope: see inside a depth-prepass Vulkan renderer.\n"
         "Without a command it opens the inspector (`view`) when there is a display, else it "
         "renders a headless capture of the default scene.\n"
         "Exit codes: 0 ok, 1 runtime or input error, 2 usage error, 3 validation messages seen "
-        "(diff: 0 same, 1 differs, 2 trouble)."};
+        "(diff: 0 same, 1 differs, 2 trouble; diagnose --fail-on LEVEL: 1 when a finding is at "
+        "LEVEL or above)."};
     app.require_subcommand(0, 1);
     SizeTexts sizes;
     const Subcommands commands = add_commands(app, o, sizes);

@@ -18,12 +18,19 @@ enum class Command {
     Bench,
     Pixel,
     Replay,
-    Diff
+    Diff,
+    Diagnose
 };
 
 struct Size {
     uint32_t width = 1280;
     uint32_t height = 720;
+};
+
+// --look-at EX,EY,EZ:TX,TY,TZ: a camera at E looking at T (scene units).
+struct LookAt {
+    float eye[3] = {0, 0, 0};
+    float target[3] = {0, 0, 0};
 };
 
 struct Options {
@@ -58,6 +65,11 @@ struct Options {
     std::string diff_a, diff_b;
     int diff_threshold = 8;         // of 255, 1..255
     double diff_max_percent = 0.1;  // 0..100
+    // The view a command renders (app/view_camera.h; diagnose): --look-at, or --camera DIR (a
+    // capture folder's camera); neither: the scene's camera.
+    std::optional<LookAt> look_at;
+    std::string camera_capture;
+    std::string fail_on;  // diagnose --fail-on: "", "error" or "warning"
 };
 
 // Parses argv. Returns the exit code to use right away (help printed: 0), or nullopt to run.
@@ -71,5 +83,8 @@ constexpr uint32_t kMaxSize = 16384;
 Size parse_size(const std::string& text);
 // "12,34" -> (12, 34) into x, y: digits only, each below kMaxSize; throws UsageError.
 void parse_at(const std::string& text, uint32_t& x, uint32_t& y);
+// "0,1.5,8:0,1,0" -> a LookAt: six finite decimal numbers, eye and target apart; throws
+// UsageError.
+LookAt parse_look_at(const std::string& text);
 
 }  // namespace ds::app

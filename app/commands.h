@@ -15,6 +15,8 @@ int run_pixel(const Options& options);
 int run_replay(const Options& options);
 int run_view(const Options& options);
 int run_diff(const Options& options);  // 0 same, 1 differs, 2 error (its own one line)
-bool display_available();              // $DISPLAY or $WAYLAND_DISPLAY set
+// 0, or with --fail-on 1 when a finding is at that level or above; 3 validation messages first
+int run_diagnose(const Options& options);
+bool display_available();  // $DISPLAY or $WAYLAND_DISPLAY set
 
 }  // namespace ds::app

@@ -174,7 +174,8 @@ SceneWalk walk_scene(const tinygltf::Model& model, int scene_index) {
         const glm::mat4 world = item.parent * locals[index];
         if (!finite(world)) fail(what + ": world transform is not finite");
         if (node.mesh >= 0)
-            walk.placements.push_back({node.mesh, world, node.name.empty() ? what : node.name});
+            walk.placements.push_back(
+                {node.mesh, world, node.name.empty() ? what : node.name, item.node});
         if (node.camera >= 0 && !walk.camera &&
             model.cameras[static_cast<size_t>(node.camera)].type == "perspective")
             walk.camera = place_camera(cameras[static_cast<size_t>(node.camera)], world);

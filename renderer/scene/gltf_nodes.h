@@ -14,7 +14,8 @@ namespace ds::scene::detail {
 struct MeshPlacement {
     int gltf_mesh = 0;
     glm::mat4 world{1.0f};
-    std::string node;  // the glTF node's name, or "node N" for an unnamed one
+    std::string node;   // the glTF node's name, or "node N" for an unnamed one
+    int gltf_node = 0;  // its index in the file's nodes
 };
 
 struct SceneWalk {

@@ -30,7 +30,7 @@ std::vector<Instance> place_instances(const std::vector<MeshPlacement>& placemen
     std::vector<Instance> placed;
     for (const MeshPlacement& placement : placements)
         for (uint32_t mesh : meshes.by_gltf_mesh[static_cast<size_t>(placement.gltf_mesh)])
-            placed.push_back({mesh, placement.world, placement.node});
+            placed.push_back({mesh, placement.world, placement.node, placement.gltf_node});
     return placed;
 }
 

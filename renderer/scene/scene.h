@@ -109,7 +109,8 @@ struct Material {
 struct Instance {
     uint32_t mesh = 0;
     glm::mat4 world{1.0f};
-    std::string node;  // the node that places it (glTF name, or "node N"), for reports
+    std::string node;    // the node that places it (glTF name, or "node N"), for reports
+    int gltf_node = -1;  // that node's index in the glTF (built-ins: in export-scene's file)
 };
 
 // Instances that share (mesh, alpha mode, double-sided, decal): drawn with one instanced draw

@@ -1,0 +1,102 @@
+// The API the inspector calls (renderer/diagnose_run.h), in-process on one validated renderer:
+// each finding carries the pixels it covers (as many as its magnitude in pixels says, from the
+// zfight pass's hits and equal_check's image), and the measurement knobs leave the image as
+// the user's settings draw it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "renderer/diagnose/finding.h"
+#include "renderer/diagnose_run.h"
+#include "renderer/renderer.h"
+#include "renderer/scene/loader.h"
+#include "renderer/vk/capabilities.h"
+#include "tests/unit/passes/shared_renderer.h"
+
+namespace {
+
+using namespace ds;
+
+constexpr uint32_t kWidth = 320, kHeight = 180;
+
+class DiagnoseApi : public test::SharedRenderer {
+  protected:
+    diagnose::Diagnosis run(const char* scene_name, const std::vector<std::string>& assignments) {
+        const Settings settings = test::settings_of(assignments);
+        scene_ = scene::load_scene(scene_name, settings);
+        renderer_->set_scene(scene_);
+        return diagnose::diagnose(*renderer_, scene_, scene_.camera, settings, {kWidth, kHeight});
+    }
+    scene::Scene scene_;
+};
+
+// Pixels ascending, each once, inside the frame; as many as a magnitude in px says.
+void expect_pixels_match(const diagnose::Finding& f) {
+    SCOPED_TRACE(f.code + ": " + f.message);
+    EXPECT_TRUE(std::is_sorted(f.pixels.begin(), f.pixels.end()));
+    EXPECT_EQ(std::adjacent_find(f.pixels.begin(), f.pixels.end()), f.pixels.end());
+    if (!f.pixels.empty()) {
+        EXPECT_LT(f.pixels.back(), kWidth * kHeight);
+    }
+    if (f.magnitude.unit == "px") {
+        EXPECT_EQ(double(f.pixels.size()), f.magnitude.value);
+    }
+}
+
+size_t count_code(const diagnose::Diagnosis& d, const std::string& code) {
+    return size_t(std::count_if(d.findings.begin(), d.findings.end(),
+                                [&](const diagnose::Finding& f) { return f.code == code; }));
+}
+
+TEST_F(DiagnoseApi, ZfightAndDecalFindingsCarryTheirPixels) {
+    for (const auto& [scene_name, settings] :
+         std::vector<std::pair<const char*, std::vector<std::string>>>{
+             {"zfight", {}}, {"decals", {"decal_pass=off"}}}) {
+        const diagnose::Diagnosis d = run(scene_name, settings);
+        EXPECT_GT(count_code(d, "ZFIGHT") + count_code(d, "DECAL_ZFIGHT"), 0u) << scene_name;
+        for (const diagnose::Finding& f : d.findings) {
+            expect_pixels_match(f);
+            if (f.code == "ZFIGHT" || f.code == "DECAL_ZFIGHT") {
+                EXPECT_FALSE(f.pixels.empty());
+            }
+        }
+        EXPECT_EQ(d.frames, 11u);
+    }
+}
+
+// EQUAL_HOLES' pixels come from the equal_check image, its magnitude from the pass's counter.
+TEST_F(DiagnoseApi, EqualHolesCarryTheImagesHolePixels) {
+    const diagnose::Diagnosis d = run("atrium", {"invariant=off"});
+    ASSERT_EQ(count_code(d, "EQUAL_HOLES"), 1u);
+    for (const diagnose::Finding& f : d.findings) {
+        expect_pixels_match(f);
+        // Every finding but the shadow map's (the light's view) and occluded draws covers pixels.
+        if (f.code == "EQUAL_HOLES" ||
+            (f.code == "EARLY_Z_LOST" && f.message.find("light's view") == std::string::npos)) {
+            EXPECT_FALSE(f.pixels.empty());
+        }
+    }
+    EXPECT_EQ(d.findings.front().severity, diagnose::Severity::Error) << "ranked";
+}
+
+// Only measurement knobs: the measuring frame's image is the user's frame, byte for byte.
+TEST_F(DiagnoseApi, TheMeasurementKnobsLeaveTheImageAsItWas) {
+    for (const char* scene_name : {"atrium", "decals"}) {
+        const Settings settings = test::settings_of({"decal_pass=off"});
+        scene_ = scene::load_scene(scene_name, settings);
+        renderer_->set_scene(scene_);
+        std::vector<diagnose::SkippedDetector> skipped;
+        const Settings measuring =
+            diagnose::with_measurement_knobs(settings, renderer_->device_report(), skipped);
+        EXPECT_TRUE(skipped.empty()) << skipped.front().reason;
+        const RenderRequest request{.width = kWidth, .height = kHeight};
+        renderer_->camera_cut();
+        const FrameResult plain = renderer_->render(scene_.camera, settings, request);
+        renderer_->camera_cut();
+        const FrameResult measured = renderer_->render(scene_.camera, measuring, request);
+        ASSERT_FALSE(plain.rgba8.empty());
+        EXPECT_TRUE(plain.rgba8 == measured.rgba8) << scene_name;
+    }
+}
+
+}  // namespace
