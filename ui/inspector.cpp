@@ -209,6 +209,8 @@ void Inspector::apply(const Action& action) {
                    },
                    [&](const MeasureAdvice&) { measure_advice(); },
                    [&](const SceneCamera&) { camera_.reset(scene_.camera); },
+                   [&](const Diagnose&) { start_diagnosis(); },
+                   [&](const SelectFinding& a) { select_finding(a.index); },
                    [&](const AddOverlay& a) { viewer_.overlays.push_back({a.resource}); },
                    [&](const RemoveOverlay& a) {
                        if (a.index < viewer_.overlays.size())
@@ -259,6 +261,7 @@ void Inspector::update() {
     camera_input_.viewport_height = std::max(viewer_.h, 1.0f);
     if (camera_.update(camera_input_)) last_motion_ = std::chrono::steady_clock::now();
     camera_input_ = CameraInput{};
+    collect_diagnosis();
     schedule();
     // A frame the device refused: settings went back to the last good ones; render those now
     // (synchronous mode: within this update, as the user expects).

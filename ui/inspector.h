@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <future>
 #include <map>
 #include <memory>
 #include <optional>
@@ -26,6 +27,7 @@
 
 #include "renderer/capture/advice.h"
 #include "renderer/device_info.h"
+#include "renderer/diagnose/finding.h"
 #include "renderer/passes/msaa_samples.h"
 #include "renderer/passes/pixel_history.h"
 #include "renderer/renderer.h"
@@ -71,6 +73,14 @@ struct ResetSettings {};
 struct MeasureAdvice {};
 // Back to the scene's own camera (the file's, or the framed view of a scene without one).
 struct SceneCamera {};
+// The Diagnose button: every detector that applies, on the current view, off the UI thread
+// (renderer/diagnose_run.h); its findings list in the Diagnose panel.
+struct Diagnose {};
+// A finding of the diagnosis selected (-1: none): its pixels are highlighted over the image
+// while the view is the one diagnosed, and the panel with its details opens.
+struct SelectFinding {
+    int index = -1;
+};
 // The Overlays panel's list edits (opacity and visibility it writes directly: view state).
 struct AddOverlay {
     std::string resource;  // an image of the frame or a derived view ("forward_wasted")
@@ -95,9 +105,10 @@ struct CaptureFrame {};
 struct PinCapture {
     std::filesystem::path dir;
 };
-using Action = std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders,
-                            SetAutoReload, ResetSettings, MeasureAdvice, SceneCamera, AddOverlay,
-                            RemoveOverlay, MoveOverlay, PickPixel, CaptureFrame, PinCapture>;
+using Action =
+    std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders, SetAutoReload,
+                 ResetSettings, MeasureAdvice, SceneCamera, Diagnose, SelectFinding, AddOverlay,
+                 RemoveOverlay, MoveOverlay, PickPixel, CaptureFrame, PinCapture>;
 
 enum class MouseTarget : uint8_t { Camera, Image, Pick };
 
@@ -119,6 +130,7 @@ struct ViewerState {
     MouseTarget mouse = MouseTarget::Camera;
     int zfight_pair = -1;  // the Depth panel's selected pair: the zfight view shows only it
     int draw = -1;         // the Draws panel's selected draw group: its pixels stay, the rest dims
+    int finding = -1;      // the Diagnose panel's selected finding: its pixels highlighted
     std::vector<Overlay> overlays;   // blended in order: the last on top
     bool shared_count_scale = true;  // a pass's count images share one heat scale and legend
     CompareState compare;            // the live frame against a pinned capture
@@ -163,6 +175,9 @@ class Inspector {
         bool threaded = false;
     };
     Inspector(Renderer& renderer, Settings settings, scene::Scene scene, Options options);
+    ~Inspector();  // waits for a diagnosis in flight (it holds the renderer)
+    Inspector(const Inspector&) = delete;
+    Inspector& operator=(const Inspector&) = delete;
 
     ImDrawData* run_frame();  // one UI frame, as above
     void draw();              // inside an ImGui frame
@@ -186,8 +201,9 @@ class Inspector {
     // The shader watch (auto reload on): true when the shaders changed, a reload then queued.
     // Cheap: the idle window asks it at every wake-up instead of drawing a UI frame.
     bool poll_shader_watch();
-    // A scene frame is rendering (or waiting): the viewer marks "rendering… N ms".
-    bool rendering() const { return worker_->busy(); }
+    // A scene frame is rendering (or waiting), or a diagnosis runs: the viewer marks
+    // "rendering… N ms" (or "diagnosing… N s"), the window draws the UI at 30 Hz meanwhile.
+    bool rendering() const { return worker_->busy() || diagnosing(); }
     double rendering_ms() const { return worker_->in_flight_ms(); }
     // Frames posted to the worker so far (each UI frame in synchronous mode).
     uint64_t frames_posted() const { return frames_posted_; }
@@ -221,6 +237,19 @@ class Inspector {
     const std::optional<capture::Advice>& advice() const { return advice_; }
     const std::string& advice_label() const { return advice_label_; }
     const std::string& advice_error() const { return advice_error_; }
+    // The last Diagnose's result (none until one finished), its error, and whether one runs
+    // now (seconds so far). A diagnosis is of one view: current() says whether the camera,
+    // settings and render size are still the ones it diagnosed (its pixels are shown only
+    // then); a new scene drops it.
+    const std::optional<diagnose::Diagnosis>& diagnosis() const { return diagnosis_; }
+    const std::string& diagnosis_error() const { return diagnosis_error_; }
+    bool diagnosing() const { return diagnosis_future_.valid(); }
+    uint64_t diagnoses_started() const { return diagnoses_started_; }
+    double diagnosing_seconds() const;
+    bool diagnosis_current() const;
+    // The selected finding's pixels as a keep mask at the frame's size; empty when none is
+    // selected, it covers none, or the view is not the one diagnosed.
+    std::vector<uint8_t> selected_finding_pixels() const;
     // The last PickPixel's history (none until picked), the frame's depth planes for its
     // linear depths, what it rendered ("atrium at 960x540") and its error, if it failed.
     const std::optional<PixelHistory>& pixel_history() const { return pixel_history_; }
@@ -274,6 +303,7 @@ class Inspector {
         std::array<char, 512> pin_path{};     // the Compare panel's capture folder field
         std::vector<size_t> draw_rows;        // the Draws panel's rows as last drawn
         uint64_t pixel_picks_shown = 0;       // the Pixel panel opens on a new pick
+        uint64_t diagnoses_shown = 0;         // the Diagnose panel opens on a new diagnosis
     };
     PanelState& panel_state() const { return panel_state_; }
     // The panels' layout: regions, tabs, splits (ui/panels/workspace.h); workspace().select(
@@ -296,6 +326,15 @@ class Inspector {
     bool collect();  // false: nothing finished, or it failed
     void refresh_view();
     void measure_advice();
+    // inspector_diagnose.cpp
+    struct DiagnosedView {
+        scene::Camera camera;
+        Settings settings;
+        VkExtent2D size{};
+    };
+    void start_diagnosis();
+    void collect_diagnosis();  // a finished diagnosis, if any (update())
+    void select_finding(int index);
     void pick_pixel(const PickPixel& pick);
     // inspector_state.cpp: what is derived from a scene or a frame follows it.
     struct Pick {
@@ -345,6 +384,13 @@ class Inspector {
     uint64_t frames_rendered_ = 0;
     std::optional<capture::Advice> advice_;
     std::string advice_label_, advice_error_;
+    std::optional<diagnose::Diagnosis> diagnosis_;
+    std::optional<DiagnosedView> diagnosed_view_;
+    std::string diagnosis_error_;
+    std::future<diagnose::Diagnosis> diagnosis_future_;  // a diagnosis in flight
+    DiagnosedView diagnosing_view_;                      // what it diagnoses
+    std::chrono::steady_clock::time_point diagnosis_started_{};
+    uint64_t diagnoses_started_ = 0;
     std::optional<PixelHistory> pixel_history_;
     std::optional<DepthResult> pixel_depth_;
     std::optional<MsaaSamples> pixel_samples_;

@@ -55,7 +55,8 @@ std::string view_key(const ViewerState& v, const CaptureCompare& compare) {
                       '|' + std::to_string(v.params.black) + '|' + std::to_string(v.params.white) +
                       '|' + std::to_string(v.params.channel) + '|' +
                       std::to_string(v.params.exposure) + '|' + std::to_string(v.zfight_pair) +
-                      '|' + std::to_string(v.draw) + '|' + std::to_string(v.shared_count_scale);
+                      '|' + std::to_string(v.draw) + '|' + std::to_string(v.finding) + '|' +
+                      std::to_string(v.shared_count_scale);
     for (const Overlay& o : v.overlays)
         key += '|' + o.resource + ':' + std::to_string(o.opacity) + std::to_string(o.visible);
     key += '|' + std::to_string(int(v.compare.mode)) + ':' + std::to_string(v.compare.divider) +
@@ -77,7 +78,7 @@ bool Inspector::idle() const {
     // full-size one that the next update() posts, once the camera has been still kMotionHold.
     return !worker_->busy() && !worker_->has_finished() && !moving() && !posted_moving_ &&
            !pending_capture_ && !dirty_ && !knob_value(settings_, kContinuous) &&
-           pending_.empty() && frames_drawn_ == frames_rendered_;
+           pending_.empty() && frames_drawn_ == frames_rendered_ && !diagnosing();
 }
 
 FrameJob Inspector::next_job() const {
@@ -165,7 +166,10 @@ void Inspector::refresh_view() {
     if (shown_ && shown_->name == kZfightImage)
         view::overlay_counts(view_, *shown_, frame_.rgba8, 0.3f, selected_pair_pixels());
     composer_.stack_overlays(frame_, viewer_, view_);
-    if (shown_) view::highlight(view_, selected_draw_pixels(), 0.25f);  // over every overlay
+    if (shown_) {  // over every overlay
+        view::highlight(view_, selected_draw_pixels(), 0.25f);
+        view::highlight(view_, selected_finding_pixels(), 0.25f);
+    }
     compare_.compose(frame_, viewer_.compare);
 }
 

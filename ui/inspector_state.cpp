@@ -57,6 +57,16 @@ void Inspector::forget_scene_state() {
     advice_.reset();
     advice_label_.clear();
     advice_error_.clear();
+    if (diagnosis_future_.valid()) {  // of the old scene: done by now (set_scene waited)
+        try {
+            diagnosis_future_.get();
+        } catch (const std::exception&) {
+        }
+    }
+    diagnosis_.reset();
+    diagnosed_view_.reset();
+    diagnosis_error_.clear();
+    viewer_.finding = -1;
     compare_.unpin();  // a capture of another scene compares nothing
 }
 

@@ -13,6 +13,7 @@ const std::vector<PanelEntry>& panel_list() {
         {"Resources", Region::Right, resources_panel},
         {"Depth", Region::Right, depth_panel},
         {"Advisor", Region::Right, advisor_panel},
+        {"Diagnose", Region::Bottom, diagnose_panel, diagnose_panel_wants_tab},
         {"Draws", Region::Bottom, draws_panel},
         {"Pixel", Region::Bottom, pixel_panel, pixel_panel_wants_tab},
         {"Overlays", Region::Bottom, overlays_panel},

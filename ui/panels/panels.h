@@ -42,8 +42,10 @@ void overlays_panel(PanelIo& io);
 void pixel_panel(PanelIo& io);
 void compare_panel(PanelIo& io);
 void tiler_panel(PanelIo& io);
-// A new pick wants the Pixel panel shown (once per pick).
+void diagnose_panel(PanelIo& io);
+// A new pick wants the Pixel panel shown (once per pick), a new diagnosis the Diagnose panel.
 bool pixel_panel_wants_tab(PanelIo& io);
+bool diagnose_panel_wants_tab(PanelIo& io);
 
 // One tab of the workspace: its name, the region it lives in, what draws its content and,
 // where it has one, when it asks to be shown (true: its tab is selected at the next frame).

@@ -156,6 +156,12 @@ void controls(PanelIo& io) {
     ImGui::SameLine();
     if (ImGui::SmallButton("capture")) io.actions.push_back(CaptureFrame{});  // F12 too
     ImGui::SameLine();
+    if (ImGui::SmallButton("diagnose")) io.actions.push_back(Diagnose{});
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "What is wrong with this view: every detector that applies, ranked "
+            "findings in the Diagnose panel.");
+    ImGui::SameLine();
     if (ImGui::SmallButton("frame")) io.camera.frame = true;  // F too
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
@@ -311,7 +317,10 @@ void readout_lines(const ViewerState& v) {
 void rendering_mark(const Inspector& inspector, const ImVec2& origin) {
     if (!inspector.rendering()) return;
     char text[48];
-    std::snprintf(text, sizeof text, "rendering... %.0f ms", inspector.rendering_ms());
+    if (inspector.diagnosing())
+        std::snprintf(text, sizeof text, "diagnosing... %.0f s", inspector.diagnosing_seconds());
+    else
+        std::snprintf(text, sizeof text, "rendering... %.0f ms", inspector.rendering_ms());
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 at(origin.x + 6, origin.y + 4);
     const ImVec2 size = ImGui::CalcTextSize(text);
