@@ -242,7 +242,10 @@ uint64_t run_frames(const Options& o, ui::Window& window, ui::Presenter& present
         }
         if (changed) presenter.forget_targets();
         for (int key : window.take_pressed_keys()) inspector.key_pressed(key);  // F12
+        const bool held_back = window.forward_mouse_buttons();
         ImGui_ImplGlfw_NewFrame();  // input, then the frame
+        if (held_back)  // the cursor jumped with a press: this frame only hovers (window.h)
+            for (bool& down : ImGui::GetIO().MouseDown) down = false;
         ImDrawData* draw = inspector.run_frame();
         presenter.present({target.image, target.view, target.extent}, inspector.viewer_blit(), draw,
                           target.acquired, target.rendered);
@@ -320,6 +323,7 @@ int run_view(const Options& o) {
     ImGui::GetIO().IniFilename = persist ? files.ini_file.c_str() : nullptr;
     ui::apply_style();
     ImGui_ImplGlfw_InitForVulkan(window->handle(), true);
+    window->route_mouse_buttons();
     {
         ui::Presenter presenter(*ui_device, window->format());
         ui::Inspector::Options options;

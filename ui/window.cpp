@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
 
 #include "renderer/common/error.h"
 #include "renderer/vk/check.h"
@@ -72,6 +73,34 @@ void Window::wait_events(double seconds) const {
 
 void Window::wake() {
     glfwPostEmptyEvent();
+}
+
+void Window::route_mouse_buttons() {
+    glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int mods) {
+        Window* self = static_cast<Window*>(glfwGetWindowUserPointer(w));
+        self->buttons_.push_back({button, action, mods});
+        ++self->events_;
+    });
+}
+
+bool Window::forward_mouse_buttons() {
+    double x = 0, y = 0;
+    glfwGetCursorPos(window_, &x, &y);
+    const bool jumped = x != forwarded_x_ || y != forwarded_y_;
+    forwarded_x_ = x;
+    forwarded_y_ = y;
+    const bool press = std::any_of(buttons_.begin(), buttons_.end(),
+                                   [](const ButtonEvent& e) { return e.action == GLFW_PRESS; });
+    if (jumped && press && !held_back_) {  // once: a press while dragging on goes through
+        held_back_ = true;
+        ++events_;  // this frame hovers at the new place; the next one gets the press
+        return true;
+    }
+    held_back_ = false;
+    for (const ButtonEvent& e : buttons_)
+        ImGui_ImplGlfw_MouseButtonCallback(window_, e.button, e.action, e.mods);
+    buttons_.clear();
+    return false;
 }
 
 std::vector<int> Window::take_pressed_keys() {

@@ -43,6 +43,16 @@ class Window {
     // only while it is down at a frame's start, so a press shorter than a slow frame (lavapipe)
     // would be lost there.
     std::vector<int> take_pressed_keys();
+    // Mouse buttons reach ImGui through forward_mouse_buttons() instead of its GLFW callback
+    // (call once, after ImGui_ImplGlfw_Init*). A press that arrives in the same poll as a jump
+    // of the cursor (a click right after moving: xdotool, a tablet, a fast hand on a slow
+    // frame) waits one UI frame: ImGui 1.86 hovers a tab or overlapping item only when the
+    // previous frame hovered it too, so the press would otherwise be lost.
+    void route_mouse_buttons();
+    // Before ImGui_ImplGlfw_NewFrame(): the button events ImGui may have now. True: a press
+    // is held back, and the backend, which also reads GLFW's button state, must be told
+    // after its NewFrame that no button is down this frame.
+    bool forward_mouse_buttons();
 
     // After the Renderer's context exists: the surface and a first swapchain.
     void attach(vk::Context& context);
@@ -69,6 +79,12 @@ class Window {
     static void input_event(GLFWwindow* w);
 
     std::vector<int> pressed_;  // by the key callback, during poll_events
+    struct ButtonEvent {
+        int button, action, mods;
+    };
+    std::vector<ButtonEvent> buttons_;            // routed, not yet forwarded
+    double forwarded_x_ = -1, forwarded_y_ = -1;  // the cursor at the last forward
+    bool held_back_ = false;                      // the last forward held a press back
     uint64_t events_ = 0, events_seen_ = 0;
     vk::Context* context_ = nullptr;
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;

@@ -48,7 +48,7 @@ wait_full_size() {
     return 1
 }
 
-"$exe" --scene edges --size 800x500 --validate >"$work/out.txt" 2>&1 &
+"$exe" --scene edges --size 1600x900 --validate >"$work/out.txt" 2>&1 &
 pid=$!
 id=""
 for _ in $(seq 1 300); do
@@ -70,6 +70,19 @@ xdotool click 4
 after=$(wait_full_size $((first + 1)) edges) || fail "the full-size frame after a dolly never reached the screen"
 echo "after the dolly: $(tail -n1 "$log")"
 
+# 3. The Scene tab, the path field, "overdraw", Open: real clicks and keys at the default
+# layout's places at 1600x900 (a fresh config; a changed layout fails here, never passes).
+xdotool mousemove --window "$id" 98 18 click 1
+sleep 0.5
+xdotool mousemove --window "$id" 104 64 click 1
+sleep 0.3
+xdotool type --delay 30 overdraw
+xdotool mousemove --window "$id" 229 64 click 1
+xdotool mousemove --window "$id" 1590 890  # over the right column's empty part, then still
+switched=$(wait_full_size "$after" overdraw) ||
+    fail "the new scene's full-size frame never reached the screen"
+echo "after the scene switch: $(tail -n1 "$log")"
+
 # 4. SIGTERM: a clean end.
 kill -TERM "$pid"
 status=0
@@ -77,5 +90,5 @@ wait "$pid" || status=$?
 cat "$work/out.txt"
 [[ $status -eq 0 ]] || fail "SIGTERM: exit $status"
 grep -q '^depthscope: [0-9]* frames (window' "$work/out.txt" || fail "SIGTERM: no session summary"
-grep -qx 'scene=edges' "$work/config/settings.ini" || fail "SIGTERM: state not saved"
+grep -qx 'scene=overdraw' "$work/config/settings.ini" || fail "SIGTERM: state not saved"
 echo "PASS"
