@@ -54,8 +54,8 @@ void sides_table(const capture::Advice& a) {
 void advice_section(const Inspector& in) {
     const capture::Advice& a = *in.advice();
     ImGui::TextDisabled("measured: %s", in.advice_label().c_str());
-    ImGui::Text("overdraw %.3f (%llu pixels covered)", a.overdraw,
-                static_cast<unsigned long long>(a.input.without.covered_pixels));
+    ImGui::Text("overdraw %.3f (%s covered)", a.overdraw,
+                counted(a.input.without.covered_pixels, "pixel", "pixels").c_str());
     sides_table(a);
     ImGui::Text("keeping the prepass: predicted %+.3f ms, measured %+.3f ms", a.predicted_change_ms,
                 a.measured_change_ms);

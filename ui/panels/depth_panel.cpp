@@ -91,14 +91,13 @@ void equal_check_section(PanelIo& io) {
     const EqualCheckResult* equal = frame.find<EqualCheckResult>();
     if (!diagnostic_state(io, "equal_check", equal != nullptr)) return;
     const EqualCheckResult& e = *equal;
-    ImGui::Text("%llu holes, %llu pixels shaded more than once",
-                static_cast<unsigned long long>(e.holes),
-                static_cast<unsigned long long>(e.multiple));
+    ImGui::Text("%s, %s shaded more than once", counted(e.holes, "hole", "holes").c_str(),
+                counted(e.multiple, "pixel", "pixels").c_str());
     if (ImGui::SmallButton("view equal_check")) io.actions.push_back(SelectResource{"equal_check"});
     for (const EqualCheckSurface& s : e.surfaces)
-        ImGui::BulletText("%s: %llu holes, %llu ties", surface_text(s.name).c_str(),
-                          static_cast<unsigned long long>(s.holes),
-                          static_cast<unsigned long long>(s.multiple));
+        ImGui::BulletText("%s: %s, %s", surface_text(s.name).c_str(),
+                          counted(s.holes, "hole", "holes").c_str(),
+                          counted(s.multiple, "tie", "ties").c_str());
 }
 
 // The scene's bounds as view depths from the camera, within the planes.

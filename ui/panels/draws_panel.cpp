@@ -215,8 +215,8 @@ void table(PanelIo& io, const DrawsResult& result) {
 void summary(const DrawsResult& f, const HizResult* hiz) {
     size_t occluded = 0;
     for (const DrawReport& d : f.draws) occluded += d.occluded;
-    ImGui::Text("%zu draws, %zu fully occluded; samples passed: %s", f.draws.size(), occluded,
-                f.samples_pass.c_str());
+    ImGui::Text("%s, %zu fully occluded; samples passed: %s",
+                counted(f.draws.size(), "draw", "draws").c_str(), occluded, f.samples_pass.c_str());
     if (!f.visible_note.empty()) ImGui::TextDisabled("%s", f.visible_note.c_str());
     if (hiz && hiz->unsafe) {
         const uint64_t unsafe = *hiz->unsafe;

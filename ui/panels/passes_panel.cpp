@@ -44,7 +44,7 @@ bool lost(const PipelineReport& r) {
 // fragment stage, which is early-Z by construction).
 void pipelines(const PassResult& pass) {
     for (const PipelineReport& r : pass.pipelines) {
-        ImGui::Text("%s, %u draws:", r.name.c_str(), r.draws);
+        ImGui::Text("%s, %s:", r.name.c_str(), counted(r.draws, "draw", "draws").c_str());
         ImGui::SameLine();
         if (!r.fragment_stage)
             ImGui::TextDisabled("no fragment stage (depth only)");

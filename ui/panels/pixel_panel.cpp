@@ -100,11 +100,11 @@ void fragment_row(const Inspector& in, size_t i, const PixelFragment& f) {
 
 void history_table(const Inspector& in) {
     const PixelHistory& h = *in.pixel_history();
-    ImGui::Text("pixel (%u, %u) of %s: %zu fragments", h.x, h.y, in.pixel_label().c_str(),
-                h.fragments.size());
+    ImGui::Text("pixel (%u, %u) of %s: %s", h.x, h.y, in.pixel_label().c_str(),
+                counted(h.fragments.size(), "fragment", "fragments").c_str());
     if (h.dropped)
-        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "%llu records dropped: the list is short",
-                           static_cast<unsigned long long>(h.dropped));
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "%s dropped: the list is short",
+                           counted(h.dropped, "record", "records").c_str());
     if (h.fragments.empty()) {
         ImGui::TextDisabled("no surface covered this pixel (the sky's)");
         return;

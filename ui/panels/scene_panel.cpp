@@ -81,8 +81,10 @@ void scene_panel(PanelIo& io) {
     if ((ImGui::Button("Open") || enter) && path[0]) io.actions.push_back(LoadScene{path});
     ImGui::Separator();
     ImGui::Text("%s", s.source.c_str());
-    ImGui::Text("%zu draw groups, %zu instances, %zu meshes", s.draw_groups, s.instances, s.meshes);
-    ImGui::Text("%llu triangles", static_cast<unsigned long long>(s.triangles));
+    ImGui::Text("%s, %s, %s", counted(s.draw_groups, "draw group", "draw groups").c_str(),
+                counted(s.instances, "instance", "instances").c_str(),
+                counted(s.meshes, "mesh", "meshes").c_str());
+    ImGui::TextUnformatted(counted(s.triangles, "triangle", "triangles").c_str());
     ImGui::Text("materials: %zu opaque, %zu masked, %zu blend", s.opaque, s.masked, s.blend);
     decal_list(io.inspector.scene());
     masked_cutoffs(io, s);

@@ -308,7 +308,8 @@ void readout_lines(const ViewerState& v) {
         if (v.hover && !v.hover_overlays.empty())
             ImGui::Text("over it: %s", v.hover_overlays.c_str());
         else
-            ImGui::TextDisabled("over it: %zu overlays", v.overlays.size());
+            ImGui::TextDisabled("over it: %s",
+                                counted(v.overlays.size(), "overlay", "overlays").c_str());
     }
 }
 
