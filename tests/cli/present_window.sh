@@ -27,6 +27,7 @@ fail() {
     echo "FAIL: $*"
     echo "--- present log:"; cat "$log" 2>/dev/null || true
     echo "--- output:"; cat "$work/out.txt" 2>/dev/null || true
+    xwd -root -silent >"$work/screen.xwd" 2>/dev/null && echo "--- the screen: $work/screen.xwd"
     kill "$pid" 2>/dev/null || true
     exit 1
 }
@@ -72,12 +73,21 @@ echo "after the dolly: $(tail -n1 "$log")"
 
 # 3. The Scene tab, the path field, "overdraw", Open: real clicks and keys at the default
 # layout's places at 1600x900 (a fresh config; a changed layout fails here, never passes).
-xdotool mousemove --window "$id" 98 18 click 1
-sleep 0.5
-xdotool mousemove --window "$id" 104 64 click 1
-sleep 0.3
-xdotool type --delay 30 overdraw
-xdotool mousemove --window "$id" 229 64 click 1
+# As a hand does it, also on a loaded CI machine where a UI frame takes a few hundred
+# milliseconds: move, rest, press, hold, release; the field active before the keys come.
+click_at() {
+    xdotool mousemove --window "$id" "$1" "$2"
+    sleep 1
+    xdotool mousedown 1
+    sleep 0.5
+    xdotool mouseup 1
+    sleep 1
+}
+click_at 98 18
+click_at 104 64
+xdotool type --delay 50 overdraw
+sleep 1
+click_at 229 64
 xdotool mousemove --window "$id" 1590 890  # over the right column's empty part, then still
 switched=$(wait_full_size "$after" overdraw) ||
     fail "the new scene's full-size frame never reached the screen"

@@ -183,7 +183,7 @@ TEST_F(PanelLayout, ADraggedSplitAndTheOpenTabsSurviveTheIni) {
     EXPECT_FLOAT_EQ(ws.last_layout().splits.bottom, bottom);
     EXPECT_EQ(ws.open_tab(Region::Right), "Depth");
     EXPECT_EQ(ws.open_tab(Region::Left), "Scene");
-    EXPECT_EQ(ws.open_tab(Region::Bottom), "Draws") << "the strip's first tab, as saved";
+    EXPECT_EQ(ws.open_tab(Region::Bottom), "Diagnose") << "the strip's first tab, as saved";
 
     // Sizes from a larger screen are clamped to this window: the image keeps its share.
     const std::string wide = "[Workspace][layout]\nleft=1500\nright=1400\nbottom=2000\n";
