@@ -1,8 +1,10 @@
 // ZFIGHT (error): two surfaces within zfight_steps depth steps of each other where one of them
 // won the prepass: the image flickers between them. From the zfight pass's pairs (passes/
-// zfight.h); a classified overlay and its base are check_decals' (DECAL_ZFIGHT).
+// zfight.h); a classified overlay and its base are check_decals' (DECAL_ZFIGHT). The pairs of
+// one pair of meshes beyond the first kPairsPerMeshes fold into one finding.
 #include <algorithm>
 #include <cstdio>
+#include <map>
 
 #include "renderer/diagnose/checks.h"
 #include "renderer/diagnose/finding_json.h"
@@ -59,6 +61,25 @@ Finding zfight_finding(const CheckInput& in, const ZfightResult& z, uint32_t ind
     return f;
 }
 
+// The pairs of one pair of meshes beyond the first kPairsPerMeshes (a fan of rods meeting at a
+// hub fights at every neighbour): one finding for the rest, their pixels together.
+constexpr size_t kPairsPerMeshes = 8;
+
+Finding folded_finding(const CheckInput& in, const ZfightResult& z, uint32_t first, size_t count,
+                       uint64_t px, std::vector<uint32_t> pixels) {
+    Finding f = zfight_finding(in, z, first, {});
+    const FindingSurface& a = f.surfaces.front();
+    const FindingSurface& b = f.surfaces.back();
+    f.magnitude = {double(px), "px"};
+    f.message = "Z-fight: " + std::to_string(count) + " more pairs of mesh " + a.mesh + " × mesh " +
+                b.mesh + ", " + grouped(double(px)) + " px (" + depth_label(in.settings) + ")";
+    for (FindingSurface& s : f.surfaces) s.node = s.pointer = "";  // many nodes
+    f.pointer.clear();
+    normalise_pixels(pixels);
+    f.pixels = std::move(pixels);
+    return f;
+}
+
 }  // namespace
 
 void check_zfight(const CheckInput& in, CheckOutput& out) {
@@ -69,9 +90,33 @@ void check_zfight(const CheckInput& in, CheckOutput& out) {
     }
     out.ran.push_back("zfight");
     std::vector<std::vector<uint32_t>> pixels = pair_pixels(*z);
+    struct Fold {
+        size_t pairs = 0, folded = 0;
+        uint32_t first = 0;
+        uint64_t px = 0;
+        std::vector<uint32_t> pixels;
+    };
+    std::map<std::pair<std::string, std::string>, Fold> meshes;  // pairs sorted by pixels
+    std::vector<std::pair<std::string, std::string>> order;
     for (uint32_t i = 0; i < z->pairs.size(); ++i) {
-        if (is_decal_pair(in.scene, z->pairs[i].a, z->pairs[i].b)) continue;
-        out.findings.push_back(zfight_finding(in, *z, i, std::move(pixels[i])));
+        const ZfightPair& pair = z->pairs[i];
+        if (is_decal_pair(in.scene, pair.a, pair.b)) continue;
+        Fold& fold = meshes[{pair.a.mesh, pair.b.mesh}];
+        if (++fold.pairs <= kPairsPerMeshes) {
+            out.findings.push_back(zfight_finding(in, *z, i, std::move(pixels[i])));
+            continue;
+        }
+        if (fold.folded++ == 0) {
+            fold.first = i;
+            order.push_back({pair.a.mesh, pair.b.mesh});
+        }
+        fold.px += pair.pixels;
+        fold.pixels.insert(fold.pixels.end(), pixels[i].begin(), pixels[i].end());
+    }
+    for (const auto& key : order) {
+        Fold& fold = meshes[key];
+        out.findings.push_back(
+            folded_finding(in, *z, fold.first, fold.folded, fold.px, std::move(fold.pixels)));
     }
 }
 

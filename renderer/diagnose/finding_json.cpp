@@ -89,10 +89,14 @@ std::string diagnosis_text(const Diagnosis& d) {
     if (d.findings.empty()) out += "no findings\n";
     for (const SkippedDetector& s : d.skipped)
         out += "skipped: " + s.detector + " (" + s.reason + ")\n";
-    out += std::to_string(d.count(Severity::Error)) + " error(s), " +
-           std::to_string(d.count(Severity::Warning)) + " warning(s), " +
-           std::to_string(d.count(Severity::Info)) + " info, " +
-           std::to_string(d.count(Severity::Hint)) + " hint(s)\n";
+    const auto counted = [&](Severity s, const char* one, const char* many) {
+        const size_t n = d.count(s);
+        return std::to_string(n) + " " + (n == 1 ? one : many);
+    };
+    out += counted(Severity::Error, "error", "errors") + ", " +
+           counted(Severity::Warning, "warning", "warnings") + ", " +
+           counted(Severity::Info, "info", "infos") + ", " +
+           counted(Severity::Hint, "hint", "hints") + "\n";
     return out;
 }
 
