@@ -183,7 +183,7 @@ Camera frame_bounds(const Bounds& bounds, float yfov = 0.8f);
 // a backdrop, a sky dome. Sorted by size, the k largest instances are left out for the
 // smallest k (at most max(2, n/10), never all) that leaves a box whose diagonal is at most
 // 1/kContentDwarf of the whole; without such a k, the whole bounds.
-inline constexpr float kContentDwarf = 4.0f;
+inline constexpr float kContentDwarf = 2.5f;
 Bounds content_bounds(const Scene& scene);
 
 }  // namespace ds::scene

@@ -5,6 +5,7 @@
 // its details (Depth, Draws, Passes or Advisor); its surfaces and fix are listed below.
 #include <imgui.h>
 
+#include "renderer/diagnose/finding_json.h"
 #include "ui/panels/panels.h"
 
 namespace ds::ui {
@@ -28,10 +29,11 @@ ImVec4 severity_colour(Severity s) {
     return ImVec4(0.7f, 0.7f, 0.7f, 1.0f);
 }
 
+// "357,836 fragments", "1.14 x": as diagnose's own text writes it.
 std::string magnitude_text(const diagnose::Magnitude& m) {
+    if (m.value == double(int64_t(m.value))) return diagnose::grouped(m.value) + " " + m.unit;
     char text[64];
-    std::snprintf(text, sizeof text, m.value == double(int64_t(m.value)) ? "%.0f %s" : "%.3g %s",
-                  m.value, m.unit.c_str());
+    std::snprintf(text, sizeof text, "%.3g %s", m.value, m.unit.c_str());
     return text;
 }
 

@@ -127,6 +127,16 @@ TEST(ContentBounds, AGroundAndABackdropBothGo) {
     expect_box(content_bounds(s), {-1, 0, -1}, {1, 2, 3});
 }
 
+// The foliage scene's shape: a 40 x 40 ground and a 40 x 12 backdrop around plants that fill
+// a third of the whole box's diagonal.
+TEST(ContentBounds, PlantsOnAGroundBeforeABackdrop) {
+    const Scene s = boxes({{{-20, -0.1f, -20}, {20, 0, 20}},
+                           {{-20, 0, -16.1f}, {20, 12, -16}},
+                           {{-8, 0, -7}, {8, 2, 0}},
+                           {{-2, 0, -3}, {2, 1.5f, -1}}});
+    expect_box(content_bounds(s), {-8, 0, -7}, {8, 2, 0});
+}
+
 TEST(ContentBounds, ARoomIsItsWholeBox) {
     // Floor, four walls and furniture: the largest parts are the room itself.
     const Scene s = boxes({{{-10, -0.1f, -6}, {10, 0, 6}},
