@@ -36,6 +36,16 @@ void expect_consistent(ui::Inspector& in, const std::string& step) {
     if (in.viewer().draw >= 0) {
         EXPECT_LT(size_t(in.viewer().draw), scene.draw_groups.size());
     }
+    if (in.viewer().finding >= 0) {  // a finding of this scene's diagnosis
+        ASSERT_TRUE(in.diagnosis());
+        EXPECT_LT(size_t(in.viewer().finding), in.diagnosis()->findings.size());
+        EXPECT_EQ(in.diagnosis()->scene, scene.name);
+    }
+    if (in.diagnosis()) {
+        EXPECT_EQ(in.diagnosis()->scene, scene.name);
+    }
+    const std::vector<uint8_t> mask = in.selected_finding_pixels();
+    EXPECT_TRUE(mask.empty() || mask.size() == size_t(in.frame().width) * in.frame().height);
 }
 
 // A pick follows the settings (the same pixel, rendered again: alpha_cutoff changes what the
@@ -101,7 +111,7 @@ TEST_F(InspectorState, TheSelectedPairIsFoundAgainByItsSurfaces) {
 }
 
 // Random actions in random order across scene switches (a fixed seed, so a failure repeats):
-// nothing throws, and no pick or selection outlives what it indexes.
+// nothing throws, and no pick, selection or diagnosis outlives what it indexes.
 TEST_F(InspectorState, RandomActionsAcrossSceneSwitchesKeepStateConsistent) {
     auto ui = open("atrium", {}, {480, 270});
     ui::Inspector& in = ui->inspector();
@@ -112,9 +122,10 @@ TEST_F(InspectorState, RandomActionsAcrossSceneSwitchesKeepStateConsistent) {
         {"msaa", "4"},         {"msaa", "1"},           {"alpha_cutoff", "0.2"},
         {"render_scale", "1"}, {"render_scale", "0.5"}, {"overdraw_layers", "3"}};
     auto pick = [&](size_t n) { return size_t(rng() % n); };
+    int selected = 0;  // steps that ended with a finding selected
     for (int step = 0; step < 40; ++step) {
         std::string what;
-        switch (pick(6)) {
+        switch (pick(8)) {
             case 0:
                 what = "scene " + scenes[pick(scenes.size())];
                 in.queue(ui::LoadScene{what.substr(6)});
@@ -144,6 +155,18 @@ TEST_F(InspectorState, RandomActionsAcrossSceneSwitchesKeepStateConsistent) {
                 what = "draw " + std::to_string(in.viewer().draw);
                 break;
             }
+            case 5:  // rarely: a diagnosis takes a few frames' time
+                if (pick(3) == 0) {
+                    what = "diagnose";
+                    in.queue(ui::Diagnose{});
+                }
+                break;
+            case 6: {  // any index, valid or not
+                const int index = int(pick(12)) - 1;
+                what = "finding " + std::to_string(index);
+                in.queue(ui::SelectFinding{index});
+                break;
+            }
             default: {
                 const std::vector<std::string> names = in.viewable();
                 what = "view " + names[pick(names.size())];
@@ -152,7 +175,9 @@ TEST_F(InspectorState, RandomActionsAcrossSceneSwitchesKeepStateConsistent) {
         }
         ASSERT_NO_THROW(ui->frame()) << "step " << step << ": " << what;
         expect_consistent(in, "step " + std::to_string(step) + ": " + what);
+        selected += in.viewer().finding >= 0;
     }
+    EXPECT_GT(selected, 0) << "the seed's actions never selected a finding: no test of it";
     EXPECT_EQ(renderer_->validation_message_count(), 0u);
 }
 
