@@ -335,6 +335,8 @@ class Inspector {
     void start_diagnosis();
     void collect_diagnosis();  // a finished diagnosis, if any (update())
     void select_finding(int index);
+    // A selected Z-fight finding's pair, selected in the Depth panel once a frame has it.
+    void select_finding_pair();
     void pick_pixel(const PickPixel& pick);
     // inspector_state.cpp: what is derived from a scene or a frame follows it.
     struct Pick {
@@ -391,6 +393,7 @@ class Inspector {
     DiagnosedView diagnosing_view_;                      // what it diagnoses
     std::chrono::steady_clock::time_point diagnosis_started_{};
     uint64_t diagnoses_started_ = 0;
+    std::vector<diagnose::FindingSurface> finding_pair_;  // to select in the Depth panel
     std::optional<PixelHistory> pixel_history_;
     std::optional<DepthResult> pixel_depth_;
     std::optional<MsaaSamples> pixel_samples_;

@@ -119,7 +119,12 @@ void Inspector::select_finding(int index) {
         return;
     }
     viewer_.finding = index;
-    const DetailsPanel panel = details_of(diagnosis_->findings[size_t(index)].detector);
+    const diagnose::Finding& finding = diagnosis_->findings[size_t(index)];
+    const DetailsPanel panel = details_of(finding.detector);
+    finding_pair_.clear();
+    if (finding.surfaces.size() == 2 &&
+        (finding.detector == "zfight" || finding.detector == "decals"))
+        finding_pair_ = finding.surfaces;
     if (*panel.knob && settings_.get(panel.knob) != "on") {
         Settings changed = settings_;
         changed.set(panel.knob, "on");
@@ -130,6 +135,24 @@ void Inspector::select_finding(int index) {
         }
     }
     if (*panel.tab) workspace_.select(panel.tab);
+    select_finding_pair();
+}
+
+void Inspector::select_finding_pair() {
+    const ZfightResult* z = frame_.find<ZfightResult>();
+    if (finding_pair_.size() != 2 || !z) return;
+    const auto same = [](const SurfaceName& s, const diagnose::FindingSurface& f) {
+        return s.mesh == f.mesh && s.material == f.material && s.node == f.node;
+    };
+    const diagnose::FindingSurface &a = finding_pair_[0], &b = finding_pair_[1];
+    for (size_t i = 0; i < z->pairs.size(); ++i) {
+        const ZfightPair& p = z->pairs[i];
+        if ((same(p.a, a) && same(p.b, b)) || (same(p.a, b) && same(p.b, a))) {
+            viewer_.zfight_pair = int(i);
+            finding_pair_.clear();
+            return;
+        }
+    }
 }
 
 }  // namespace ds::ui

@@ -147,6 +147,7 @@ bool Inspector::collect() {
     }
     const FrameResult previous = std::exchange(frame_, std::move(*done->frame));
     follow_selected_pair(previous);
+    select_finding_pair();
     last_good_ = done->job.settings;
     shown_nominal_ = done->job.nominal;
     ++frames_rendered_;

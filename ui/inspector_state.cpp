@@ -67,6 +67,7 @@ void Inspector::forget_scene_state() {
     diagnosed_view_.reset();
     diagnosis_error_.clear();
     viewer_.finding = -1;
+    finding_pair_.clear();
     compare_.unpin();  // a capture of another scene compares nothing
 }
 

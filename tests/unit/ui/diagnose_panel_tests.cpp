@@ -7,8 +7,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <set>
+#include <string>
 
 #include "renderer/capture/image_writer.h"
+#include "renderer/passes/zfight.h"
 
 #include "tests/unit/ui/inspector_ui.h"
 
@@ -51,6 +54,14 @@ TEST_F(DiagnosePanel, AFindingShowsItsPixelsAndOpensItsPanelUntilTheViewChanges)
     EXPECT_EQ(in.settings().get("zfight"), "on") << "the Depth panel's pairs need it";
     EXPECT_EQ(in.workspace().open_tab(ui::Region::Right), "Depth");
     EXPECT_TRUE(in.diagnosis_current()) << "a measurement knob changes no pixel";
+    // The Depth panel's list has the finding's pair selected.
+    const ZfightResult* z = in.frame().find<ZfightResult>();
+    ASSERT_TRUE(z);
+    ASSERT_GE(in.viewer().zfight_pair, 0);
+    const ZfightPair& pair = z->pairs[size_t(in.viewer().zfight_pair)];
+    ASSERT_EQ(fight->surfaces.size(), 2u);
+    EXPECT_EQ((std::set<std::string>{pair.a.node, pair.b.node}),
+              (std::set<std::string>{fight->surfaces[0].node, fight->surfaces[1].node}));
     if (const char* dir = std::getenv("DS_TEST_SHOTS"))  // to look at
         capture::write_png_rgba8(std::string(dir) + "/diagnose_selected.png", ui->size().width,
                                  ui->size().height, ui->frame());
