@@ -25,7 +25,7 @@ constexpr Check kChecks[] = {check_zfight, check_decals, check_equal,     check_
 const std::vector<InspectRequest> kInspected = {
     {"equal_check", 0}, {"depth_precision", 0}, {"forward_rasterized", 0}};
 
-// The advisor's result and the plain frame of the user's prepass setting it rendered.
+// The advisor's result and a plain frame of the user's prepass setting it rendered.
 struct AdvisorRun {
     std::optional<capture::Advice> advice;
     std::optional<FrameResult> plain;
@@ -50,9 +50,9 @@ AdvisorRun run_advisor(Renderer& renderer, const scene::Camera& camera, const Se
         ++run.frames;
         FrameResult f = renderer.render(
             camera, s, {.width = size.width, .height = size.height, .read_back = ReadBack::No});
-        if (!knob_value(s, passes::ClearCountsPass::kKnob) &&
+        if (!run.plain && !knob_value(s, passes::ClearCountsPass::kKnob) &&
             knob_value(s, knobs::kPrepass) == prepass)
-            run.plain = f;
+            run.plain = f;  // its first plain frame: the pipelines are the same in all
         return f;
     };
     run.advice = capture::advise(capture::measure_advice(settings, render, kAdviceRun));

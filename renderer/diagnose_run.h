@@ -8,8 +8,8 @@
 // images the checks read inspected in the same frame), then the prepass advisor's own
 // measurement (capture::measure_advice with kAdviceRun: one counting frame with the prepass
 // and one without, kAdviceRun.warmup warm-up and kAdviceRun.frames timed frames of each,
-// alternating): 1 + 2 + 2 × (1 + 3) = 11 frames. The advisor's timed frame of the user's own
-// prepass setting is the plain frame whose pipelines give the early-Z verdicts.
+// alternating): 1 + 2 + 2 × (1 + 3) = 11 frames. The advisor's first uncounted frame of the user's
+// own prepass setting is the plain frame whose pipelines give the early-Z verdicts.
 #include <string>
 #include <vector>
 

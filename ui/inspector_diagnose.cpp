@@ -32,11 +32,6 @@ DetailsPanel details_of(const std::string& detector) {
     return {"", ""};
 }
 
-bool same_view_camera(const scene::Camera& a, const scene::Camera& b) {
-    return a.position == b.position && a.forward == b.forward && a.up == b.up && a.yfov == b.yfov &&
-           a.znear == b.znear && a.zfar == b.zfar;
-}
-
 }  // namespace
 
 Inspector::~Inspector() {
@@ -86,7 +81,7 @@ bool Inspector::diagnosis_current() const {
     if (!diagnosis_ || !diagnosed_view_) return false;
     const VkExtent2D size = render_size();
     if (size.width != diagnosed_view_->size.width || size.height != diagnosed_view_->size.height ||
-        !same_view_camera(camera_.camera(), diagnosed_view_->camera))
+        camera_.camera() != diagnosed_view_->camera)
         return false;
     // The measurement knobs ("zfight=on") a finding's panel turns on change no pixel.
     const std::vector<std::string>& measuring = diagnosis_->measurement_knobs;

@@ -22,11 +22,6 @@
 namespace ds::ui {
 namespace {
 
-bool same_camera(const scene::Camera& a, const scene::Camera& b) {
-    return a.position == b.position && a.forward == b.forward && a.up == b.up && a.yfov == b.yfov &&
-           a.znear == b.znear && a.zfar == b.zfar;
-}
-
 bool same_requests(const std::vector<InspectRequest>& a, const std::vector<InspectRequest>& b) {
     return std::equal(a.begin(), a.end(), b.begin(), b.end(),
                       [](const InspectRequest& x, const InspectRequest& y) {
@@ -41,7 +36,7 @@ bool same_rect(const std::optional<SampleQuery>& a, const std::optional<SampleQu
 
 // Whether two jobs render the same frame (ids and cuts aside).
 bool same_frame(const FrameJob& a, const FrameJob& b) {
-    return same_camera(a.camera, b.camera) && a.settings.diff(b.settings).empty() &&
+    return a.camera == b.camera && a.settings.diff(b.settings).empty() &&
            a.size.width == b.size.width && a.size.height == b.size.height &&
            a.read_back == b.read_back && same_requests(a.inspect, b.inspect) &&
            same_rect(a.samples, b.samples);

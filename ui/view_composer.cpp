@@ -90,9 +90,7 @@ std::vector<InspectRequest> ViewComposer::request(const ViewerState& viewer,
 }
 
 const InspectedImage* ViewComposer::find(const FrameResult& frame, std::string_view name) const {
-    if (frame.inspected && frame.inspected->name == name) return &*frame.inspected;
-    for (const InspectedImage& image : frame.overlays)
-        if (image.name == name) return &image;
+    if (const InspectedImage* image = frame.image(name)) return image;
     for (const InspectedImage& image : derived_)
         if (image.name == name) return &image;
     return nullptr;

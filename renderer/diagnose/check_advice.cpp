@@ -21,7 +21,7 @@ std::string ms_text(double ms) {
 
 std::vector<uint32_t> layered_pixels(const FrameResult& frame) {
     std::vector<uint32_t> out;
-    const InspectedImage* image = image_named(frame, "forward_rasterized");
+    const InspectedImage* image = frame.image("forward_rasterized");
     if (!image) return out;
     const size_t n = size_t(image->width) * image->height;
     for (size_t i = 0; i < n && i * 4 < image->texels.size(); ++i)

@@ -20,7 +20,7 @@ Finding equal_finding(const CheckInput& in, const EqualCheckResult& r, bool hole
         if ((holes ? s.holes : s.multiple) > 0)
             f.surfaces.push_back(surface_named(in.scene, s.name));
     if (!f.surfaces.empty()) f.pointer = f.surfaces.front().pointer;
-    if (const InspectedImage* image = image_named(in.measured, "equal_check"))
+    if (const InspectedImage* image = in.measured.image("equal_check"))
         f.pixels = pixels_where(*image, holes ? kHoleMark : kTieMark);
     return f;
 }

@@ -75,7 +75,7 @@ Finding precision_finding(const CheckInput& in, PrecisionScan s) {
 }  // namespace
 
 void check_precision(const CheckInput& in, CheckOutput& out) {
-    const InspectedImage* image = image_named(in.measured, "depth_precision");
+    const InspectedImage* image = in.measured.image("depth_precision");
     if (!image) {
         out.skip("depth_precision",
                  frame_skip_reason(in.measured, "depth_precision", "depth_precision")

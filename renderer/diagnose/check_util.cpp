@@ -50,13 +50,6 @@ std::optional<std::string> frame_skip_reason(const FrameResult& frame, std::stri
     return std::nullopt;
 }
 
-const InspectedImage* image_named(const FrameResult& frame, std::string_view name) {
-    if (frame.inspected && frame.inspected->name == name) return &*frame.inspected;
-    for (const InspectedImage& image : frame.overlays)
-        if (image.name == name) return &image;
-    return nullptr;
-}
-
 const PassResult* pass_named(const FrameResult& frame, std::string_view name) {
     for (const PassResult& p : frame.passes)
         if (p.name == name && p.role == graph::PassRole::Frame) return &p;

@@ -24,7 +24,7 @@ struct CheckInput {
     const scene::Scene& scene;
     const Settings& settings;     // the user's, without the measurement knobs
     const FrameResult& measured;  // the measuring frame: the user's settings + measurement knobs
-    // A frame of the user's settings alone (the advisor's timed frame of that configuration),
+    // A frame of the user's settings alone (the advisor's first uncounted frame of it),
     // whose pipelines carry the early-Z verdicts without the counting variants; null when
     // none was rendered (then the measuring frame's are used: it counts nothing either).
     const FrameResult* plain = nullptr;
@@ -68,8 +68,6 @@ std::string group_label(const scene::Scene& scene, uint32_t first, uint32_t coun
 // turned `knob` off; none when neither says.
 std::optional<std::string> frame_skip_reason(const FrameResult& frame, std::string_view pass,
                                              std::string_view knob);
-// A graph image the frame read back (FrameResult::inspected or overlays), by name.
-const InspectedImage* image_named(const FrameResult& frame, std::string_view name);
 const PassResult* pass_named(const FrameResult& frame, std::string_view name);
 // Per Z-fight pair (ZfightResult::pairs order), the pixels it fights in.
 std::vector<std::vector<uint32_t>> pair_pixels(const ZfightResult& z);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -81,6 +82,13 @@ struct FrameResult {
     // (names it lacks are left out, so find them by name): what the viewer stacks over the
     // first and derives views from.
     std::vector<InspectedImage> overlays;
+    // An image the frame read back (`inspected` or one of `overlays`), by name; null if none.
+    const InspectedImage* image(std::string_view name) const {
+        if (inspected && inspected->name == name) return &*inspected;
+        for (const InspectedImage& i : overlays)
+            if (i.name == name) return &i;
+        return nullptr;
+    }
     // Each pass's own result, by type (only the passes that ran put one).
     ResultSlots slots;
     template <typename T>

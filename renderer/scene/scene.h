@@ -143,6 +143,7 @@ struct Camera {
     float znear = 0.1f;
     float zfar = 1000.0f;
     glm::mat4 view() const;
+    bool operator==(const Camera&) const = default;  // the same view, bit for bit
 };
 
 struct DirectionalLight {

@@ -140,6 +140,14 @@ void mouse_mode(ViewerState& v) {
         "every fragment of that pixel in the Pixel panel.");
 }
 
+// A small button on the toolbar's line, its tooltip when hovered; true when clicked.
+bool tool_button(const char* label, const char* tip) {
+    ImGui::SameLine();
+    const bool clicked = ImGui::SmallButton(label);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+    return clicked;
+}
+
 // The decode controls above the image, a row each: the resource, its range and channel, the
 // zoom and mouse mode.
 void controls(PanelIo& io) {
@@ -155,24 +163,18 @@ void controls(PanelIo& io) {
     mouse_mode(v);
     ImGui::SameLine();
     if (ImGui::SmallButton("capture")) io.actions.push_back(CaptureFrame{});  // F12 too
-    ImGui::SameLine();
-    if (ImGui::SmallButton("diagnose")) io.actions.push_back(Diagnose{});
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "What is wrong with this view: every detector that applies, ranked "
-            "findings in the Diagnose panel.");
-    ImGui::SameLine();
-    if (ImGui::SmallButton("frame")) io.camera.frame = true;  // F too
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "The camera frames the scene's content (F): what a ground plane, "
-            "backdrop or sky dome many times larger than the rest leaves.");
-    ImGui::SameLine();
-    if (ImGui::SmallButton("scene camera")) io.actions.push_back(SceneCamera{});
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "Back to the scene's own camera (the file's first camera, or the "
-            "view depthscope framed when it has none).");
+    if (tool_button("diagnose",
+                    "What is wrong with this view: every detector that applies, "
+                    "ranked findings in the Diagnose panel."))
+        io.actions.push_back(Diagnose{});
+    if (tool_button("frame",
+                    "The camera frames the scene's content (F): what a ground plane, "
+                    "backdrop or sky dome many times larger than the rest leaves."))
+        io.camera.frame = true;
+    if (tool_button("scene camera",
+                    "Back to the scene's own camera (the file's first camera, "
+                    "or the view depthscope framed when it has none)."))
+        io.actions.push_back(SceneCamera{});
 }
 
 // A Scalar image's legend: its title over a colour bar (decode's colours from black to
