@@ -17,11 +17,8 @@ export DEPTHSCOPE_CONFIG_DIR="$work/config"
 log="$work/present.log"
 export DEPTHSCOPE_PRESENT_LOG="$log"
 
-for _ in $(seq 1 300); do
-    xdotool getdisplaygeometry >/dev/null 2>&1 && break
-    sleep 0.1
-done
-xdotool getdisplaygeometry >/dev/null 2>&1 || { echo "FAIL: display $DISPLAY never came up"; exit 1; }
+source "$(dirname "$0")/window_helpers.sh"
+wait_for_display || exit 1
 
 fail() {
     echo "FAIL: $*"
@@ -51,13 +48,7 @@ wait_full_size() {
 
 "$exe" --scene edges --size 1600x900 --validate >"$work/out.txt" 2>&1 &
 pid=$!
-id=""
-for _ in $(seq 1 300); do
-    id=$(xdotool search --onlyvisible --pid "$pid" --name '^depthscope' 2>/dev/null | head -n1) &&
-        [[ -n "$id" ]] && break
-    sleep 0.1
-done
-[[ -n "$id" ]] || fail "no window"
+id=$(window_of "$pid") || fail "no window"
 
 # 1. No input: the first frame at the viewer's size reaches the screen.
 first=$(wait_full_size 0 edges) || fail "the first frame never reached the screen"
