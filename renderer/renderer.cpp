@@ -248,11 +248,13 @@ passes::FrameResources Renderer::Impl::build_graph(const passes::FrameInputs& in
     targets->import(*graph, in.options, res);
     added.clear();
     resources.clear();
+    // render_path=subpass: the graph plans prepass, forward, sky, decals and transparent (the
+    // run that shares the scene depth) as the subpasses of one render pass.
+    if (in.options.subpass) graph->plan_subpasses(passes::kSubpassGroup);
     for (const std::unique_ptr<passes::FramePass>& pass : passes) {
         // The frame's resources, as the inspector lists them: read-back's own are plumbing.
         if (pass->role() == graph::PassRole::ReadBack && resources.empty())
             resources = summarize(*graph);
-        graph->set_role(pass->role());
         const size_t first = graph->passes().size();
         pass->add(*graph, in, res);
         added.push_back({pass.get(), first, graph->passes().size()});

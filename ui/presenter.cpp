@@ -23,8 +23,8 @@ void check_result(VkResult result) {
 }
 
 vk::RenderPass create_render_pass(vk::Context& context, VkFormat format) {
-    // LOAD over what ui_viewer wrote; the graph's barriers do every layout transition, so the
-    // render pass keeps COLOR_ATTACHMENT_OPTIMAL throughout.
+    // Only for the backend's pipeline: the graph begins a compatible render pass of its own (one
+    // subpass, one colour attachment of this format) around ui_imgui.
     VkAttachmentDescription colour{};
     colour.format = format;
     colour.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -93,24 +93,7 @@ void Presenter::wait_idle() {
 }
 
 void Presenter::forget_targets() {
-    context_.wait_idle();
-    framebuffers_.clear();
-}
-
-VkFramebuffer Presenter::framebuffer(const Target& target) {
-    auto it = framebuffers_.find(target.view);
-    if (it != framebuffers_.end()) return it->second.handle();
-    auto info = vk::make<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
-    info.renderPass = render_pass_.handle();
-    info.attachmentCount = 1;
-    info.pAttachments = &target.view;
-    info.width = target.extent.width;
-    info.height = target.extent.height;
-    info.layers = 1;
-    VkFramebuffer fb = VK_NULL_HANDLE;
-    vk::check(vkCreateFramebuffer(context_.device(), &info, nullptr, &fb), "vkCreateFramebuffer");
-    framebuffers_.emplace(target.view, vk::Framebuffer(context_.device(), fb));
-    return fb;
+    context_.wait_idle();  // the graph's framebuffers of their views have died with their frames
 }
 
 void Presenter::ensure_display(uint32_t width, uint32_t height, vk::DestroyList& retired) {
@@ -157,17 +140,20 @@ graph::ImageHandle Presenter::add_upload(const ViewerBlit& viewer, vk::DestroyLi
     s.initial = {VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_HOST_BIT,
                  VK_ACCESS_2_HOST_WRITE_BIT};
     const graph::BufferHandle staging = g.import_buffer("viewer_staging", s);
-    g.add_pass("ui_upload", [&](graph::PassBuilder& b) {
-        b.read(staging, Access::TransferSrc);
-        b.write(display, Access::TransferDst);
-        return [=, w = viewer.width, h = viewer.height](graph::PassContext& ctx) {
+    struct Data {};
+    g.add_pass<Data>(
+        {"ui_upload", graph::PassKind::Transfer},
+        [&](graph::PassBuilder& b, Data&) {
+            b.read(staging, Access::TransferSrc);
+            b.write(display, Access::TransferDst);
+        },
+        [=, w = viewer.width, h = viewer.height](graph::PassContext& ctx, const Data&) {
             VkBufferImageCopy copy{};
             copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             copy.imageExtent = {w, h, 1};
             vkCmdCopyBufferToImage(ctx.cmd(), ctx.buffer(staging), ctx.image(display),
                                    ctx.layout(display), 1, &copy);
-        };
-    });
+        });
     return display;
 }
 
@@ -175,10 +161,14 @@ graph::ImageHandle Presenter::add_upload(const ViewerBlit& viewer, vk::DestroyLi
 // viewer's rectangle.
 void Presenter::add_viewer(graph::ImageHandle ui, graph::ImageHandle display,
                            const BlitRegion& region, bool nearest) {
-    graph_->add_pass("ui_viewer", [&](graph::PassBuilder& b) {
-        if (display.valid()) b.read(display, Access::TransferSrc);
-        b.write(ui, Access::TransferDst);
-        return [=](graph::PassContext& ctx) {
+    struct Data {};
+    graph_->add_pass<Data>(
+        {"ui_viewer", graph::PassKind::Transfer},
+        [&](graph::PassBuilder& b, Data&) {
+            if (display.valid()) b.read(display, Access::TransferSrc);
+            b.write(ui, Access::TransferDst);
+        },
+        [=](graph::PassContext& ctx, const Data&) {
             const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
             vkCmdClearColorImage(ctx.cmd(), ctx.image(ui), ctx.layout(ui), &kBackground, 1, &range);
             if (!display.valid()) return;
@@ -192,30 +182,27 @@ void Presenter::add_viewer(graph::ImageHandle ui, graph::ImageHandle display,
             b.dstOffsets[1] = {region.dx1, region.dy1, 1};
             vkCmdBlitImage(ctx.cmd(), ctx.image(display), ctx.layout(display), ctx.image(ui),
                            ctx.layout(ui), 1, &b, nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
-        };
-    });
+        });
 }
 
 // ui_imgui: ImGui's draw data over the target, through the backend's render pass.
-void Presenter::add_imgui(graph::ImageHandle ui, const Target& target, ImDrawData* draw) {
-    graph_->add_pass("ui_imgui", [&](graph::PassBuilder& b) {
-        b.write(ui, Access::ColorAttachment);
-        return [this, draw, fb = framebuffer(target),
-                extent = target.extent](graph::PassContext& ctx) {
-            auto begin = vk::make<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
-            begin.renderPass = render_pass_.handle();
-            begin.framebuffer = fb;
-            begin.renderArea = {{0, 0}, extent};
-            vkCmdBeginRenderPass(ctx.cmd(), &begin, VK_SUBPASS_CONTENTS_INLINE);
+void Presenter::add_imgui(graph::ImageHandle ui, ImDrawData* draw) {
+    struct Data {};
+    graph_->add_pass<Data>(
+        "ui_imgui",
+        [&](graph::PassBuilder& b, Data&) {
+            // The backend's pipeline is made for render_pass_, which the graph's one-subpass
+            // render pass over the same attachment is compatible with.
+            b.render_pass();
+            b.color(ui);
+        },
+        [draw](graph::PassContext& ctx, const Data&) {
             if (draw) ImGui_ImplVulkan_RenderDrawData(draw, ctx.cmd());
-            vkCmdEndRenderPass(ctx.cmd());
-        };
-    });
+        });
 }
 
 // ui_readback (read-back role): the target into a host buffer (render_offscreen).
 void Presenter::add_readback(graph::ImageHandle ui) {
-    graph_->set_role(graph::PassRole::ReadBack);
     readback_->add_copy_pass(*graph_, "ui_readback", {ui});
 }
 
@@ -241,7 +228,7 @@ void Presenter::record(VkCommandBuffer cmd, const Target& target, const graph::E
 
     const graph::ImageHandle display = blit ? add_upload(viewer, retired) : graph::ImageHandle{};
     add_viewer(ui, display, region, viewer.nearest);
-    add_imgui(ui, target, draw);
+    add_imgui(ui, draw);
     if (read_back) add_readback(ui);
     g.compile();
     last_graph_frame_ = g.execute(cmd);
@@ -271,10 +258,7 @@ std::vector<uint8_t> Presenter::render_offscreen(VkExtent2D extent, const Viewer
                                                  ImDrawData* draw, UiFrameStats* stats) {
     vk::Frame& frame = frames_->begin();
     if (!offscreen_ || offscreen_.width() != extent.width || offscreen_.height() != extent.height) {
-        if (offscreen_) {
-            framebuffers_.erase(offscreen_.view());
-            frame.retired.defer(std::move(offscreen_));
-        }
+        if (offscreen_) frame.retired.defer(std::move(offscreen_));
         offscreen_ = vk::Image(
             context_, {extent.width, extent.height, 1, kOffscreenFormat,
                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |

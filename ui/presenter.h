@@ -66,7 +66,7 @@ class Presenter {
     std::vector<uint8_t> render_offscreen(VkExtent2D extent, const ViewerBlit& viewer,
                                           ImDrawData* draw, UiFrameStats* stats = nullptr);
 
-    // Swapchain images are about to be destroyed: drop framebuffers of their views.
+    // Swapchain images are about to be destroyed: waits until no frame uses their views.
     void forget_targets();
     void wait_idle();
 
@@ -75,21 +75,19 @@ class Presenter {
     graph::ImageHandle add_upload(const ViewerBlit& viewer, vk::DestroyList& retired);
     void add_viewer(graph::ImageHandle ui, graph::ImageHandle display, const BlitRegion& region,
                     bool nearest);
-    void add_imgui(graph::ImageHandle ui, const Target& target, ImDrawData* draw);
+    void add_imgui(graph::ImageHandle ui, ImDrawData* draw);
     void add_readback(graph::ImageHandle ui);
     // `read_back`: a ui_readback pass copies the target to a host buffer (render_offscreen).
     void record(VkCommandBuffer cmd, const Target& target, const graph::ExternalState& final,
                 const ViewerBlit& viewer, ImDrawData* draw, vk::DestroyList& retired,
                 bool read_back = false);
     void ensure_display(uint32_t width, uint32_t height, vk::DestroyList& retired);
-    VkFramebuffer framebuffer(const Target& target);
     UiFrameStats collect(uint64_t id) const;
 
     vk::Context& context_;
     VkFormat format_;
     vk::DescriptorPool imgui_pool_;
     vk::RenderPass render_pass_;
-    std::map<VkImageView, vk::Framebuffer> framebuffers_;
     std::unique_ptr<vk::FrameRing> frames_;
     std::unique_ptr<graph::RenderGraph> graph_;
     vk::Image display_;  // the viewer's pixels, RGBA8

@@ -43,6 +43,29 @@ void dump_resource(std::ostream& out, const ResourceInfo& r) {
     out << "\n";
 }
 
+// "renders 64x48: colour hdr (clear, store), depth depth (load, none, read-only)".
+void dump_rendering(std::ostream& out, const RenderingPlan& r,
+                    std::span<const ResourceInfo> resources) {
+    out << "     renders " << r.extent.width << "x" << r.extent.height;
+    const char* separator = ":";
+    auto attachment = [&](const char* what, const RenderingAttachment& a, bool read_only) {
+        out << separator << " " << what << " ";
+        separator = ",";
+        if (a.resource == kNoResource) {
+            out << "unused";
+            return;
+        }
+        out << resources[a.resource].name << " (" << load_op_name(a.load) << ", "
+            << (a.store == VK_ATTACHMENT_STORE_OP_NONE ? "none" : store_op_name(a.store))
+            << (read_only ? ", read-only" : "") << ")";
+        if (a.resolve != kNoResource) out << " -> " << resources[a.resolve].name;
+    };
+    for (const RenderingAttachment& c : r.colors) attachment("colour", c, false);
+    if (r.depth) attachment("depth", *r.depth, r.depth->store == VK_ATTACHMENT_STORE_OP_NONE);
+    if (r.colors.empty() && !r.depth) out << ": no attachments";
+    out << "\n";
+}
+
 void dump_pass(std::ostream& out, size_t index, const PassInfo& pass, const PassPlan& plan,
                std::span<const ResourceInfo> resources) {
     out << "  " << index + 1 << ". " << pass.name << " (" << pass_kind_name(pass.kind);
@@ -83,7 +106,8 @@ std::string describe_barrier(const Barrier& b, std::span<const ResourceInfo> res
 
 std::string dump_graph(VkExtent2D output, std::span<const ResourceInfo> resources,
                        std::span<const PassInfo> passes, const BarrierPlan& plan,
-                       std::span<const GroupPlan> groups) {
+                       std::span<const GroupPlan> groups,
+                       std::span<const RenderingPlan> renderings) {
     std::ostringstream out;
     out << "render graph: output " << output.width << "x" << output.height << ", " << passes.size()
         << " passes, " << resources.size() << " resources\n";
@@ -91,9 +115,12 @@ std::string dump_graph(VkExtent2D output, std::span<const ResourceInfo> resource
     for (const ResourceInfo& r : resources) dump_resource(out, r);
     out << "passes:\n";
     const PassPlan not_compiled;  // before compile(): declarations without barriers
-    for (size_t i = 0; i < passes.size(); ++i)
+    for (size_t i = 0; i < passes.size(); ++i) {
         dump_pass(out, i, passes[i], i < plan.passes.size() ? plan.passes[i] : not_compiled,
                   resources);
+        if (i < renderings.size() && passes[i].renders() && passes[i].group.empty())
+            dump_rendering(out, renderings[i], resources);
+    }
     if (!plan.final_barriers.empty()) {
         out << "end of frame:\n";
         for (const Barrier& b : plan.final_barriers)

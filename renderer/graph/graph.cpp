@@ -49,7 +49,9 @@ void RenderGraph::begin_frame(VkExtent2D output, vk::DestroyList& retired) {
     plan_ = BarrierPlan{};
     groups_.clear();
     group_passes_.clear();
-    role_ = PassRole::Frame;
+    prologues_.clear();
+    renderings_.clear();
+    subpass_group_.clear();
     phase_ = Phase::Declaring;
 }
 
@@ -118,29 +120,28 @@ BufferHandle RenderGraph::import_buffer(const std::string& name, const ExternalB
     return {index};
 }
 
-void RenderGraph::add_pass(const std::string& name, const Setup& setup, Record record,
-                           PassKind kind) {
-    require_declaring("add_pass");
-    PassInfo info;
-    info.name = name;
-    info.kind = kind;
-    info.role = role_;
-    passes_.push_back(std::move(info));
-    records_.push_back(std::move(record));
-    PassBuilder builder(*this, uint32_t(passes_.size() - 1));
-    if (setup) setup(builder);
+void RenderGraph::plan_subpasses(std::string group) {
+    require_declaring("plan_subpasses");
+    subpass_group_ = std::move(group);
 }
 
-void RenderGraph::add_pass(const std::string& name, const SetupRecord& setup, PassKind kind) {
-    add_pass(name, nullptr, nullptr, kind);
-    PassBuilder builder(*this, uint32_t(passes_.size() - 1));
-    if (setup) records_.back() = setup(builder);
+PassBuilder RenderGraph::begin_pass(const PassDecl& decl) {
+    require_declaring("add_pass");
+    PassInfo info;
+    info.name = decl.name;
+    info.kind = decl.kind;
+    info.role = decl.role;
+    passes_.push_back(std::move(info));
+    records_.emplace_back();
+    prologues_.emplace_back();
+    return PassBuilder(*this, uint32_t(passes_.size() - 1));
 }
 
 void RenderGraph::compile() {
     require_declaring("compile");
     const std::vector<VkFlags> usage = derive_usage(resources_, passes_);
     for (size_t i = 0; i < resources_.size(); ++i) resources_[i].usage = usage[i];
+    assign_subpasses(passes_, resources_, subpass_group_);
     groups_ = find_subpass_groups(resources_, passes_);
     // Tile memory only: attachment usages and TRANSIENT (no TRANSFER_SRC, no sampling).
     constexpr VkFlags kAttachmentUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
@@ -155,6 +156,10 @@ void RenderGraph::compile() {
     plan_ = plan_barriers(resources_, passes_, store_writes(groups_, passes_));
     plan_subpass_groups(groups_, resources_, passes_, plan_);
     for (const GroupPlan& g : groups_) group_passes_.push_back(render_passes_.get(g, resources_));
+    renderings_.resize(passes_.size());
+    for (uint32_t i = 0; i < passes_.size(); ++i)
+        if (passes_[i].renders() && passes_[i].group.empty())
+            renderings_[i] = plan_rendering(i, resources_, passes_, plan_);
     phase_ = Phase::Compiled;
 }
 
@@ -266,11 +271,67 @@ uint64_t RenderGraph::execute(VkCommandBuffer cmd) {
     return id;
 }
 
+// A pass outside a subpass group: its prologue, then its rendering (if it renders) around
+// its record lambda, inside its timestamps and statistics.
 void RenderGraph::record_pass(VkCommandBuffer cmd, uint32_t pass) {
+    const bool alone = passes_[pass].group.empty();
+    const bool own_rendering = alone && passes_[pass].renders();
+    if (alone)
+        for (const auto& prologue : prologues_[pass]) prologue(cmd);
     profiler_.begin_pass(cmd, pass);
+    if (own_rendering) begin_rendering(cmd, pass);
     PassContext ctx(*this, pass, cmd);
     if (records_[pass]) records_[pass](ctx);
+    if (own_rendering) vk::fn().cmd_end_rendering(cmd);
     profiler_.end_pass(cmd, pass);
+}
+
+namespace {
+
+VkRenderingAttachmentInfo rendering_attachment(const RenderingAttachment& a, VkImageView view,
+                                               VkImageView resolve) {
+    auto info = vk::make<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
+    if (a.resource == kNoResource) return info;  // an unused slot
+    info.imageView = view;
+    info.imageLayout = a.layout;
+    info.loadOp = a.load;
+    info.storeOp = a.store;
+    info.clearValue = a.clear;
+    if (a.resolve != kNoResource) {
+        info.resolveMode = a.mode;
+        info.resolveImageView = resolve;
+        info.resolveImageLayout = a.resolve_layout;
+    }
+    return info;
+}
+
+}  // namespace
+
+// vkCmdBeginRendering over the planned attachments; viewport and scissor cover the render
+// area (dynamic state in every pipeline).
+void RenderGraph::begin_rendering(VkCommandBuffer cmd, uint32_t pass) const {
+    const RenderingPlan& r = renderings_[pass];
+    auto attachment = [&](const RenderingAttachment& a) {
+        const bool unused = a.resource == kNoResource;
+        return rendering_attachment(
+            a, unused ? VK_NULL_HANDLE : bindings_[a.resource].view,
+            a.resolve == kNoResource ? VK_NULL_HANDLE : bindings_[a.resolve].view);
+    };
+    std::vector<VkRenderingAttachmentInfo> colors;
+    for (const RenderingAttachment& a : r.colors) colors.push_back(attachment(a));
+    VkRenderingAttachmentInfo depth{};
+    if (r.depth) depth = attachment(*r.depth);
+    auto info = vk::make<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
+    info.renderArea = {{0, 0}, r.extent};
+    info.layerCount = 1;
+    info.colorAttachmentCount = uint32_t(colors.size());
+    info.pColorAttachments = colors.data();
+    info.pDepthAttachment = r.depth ? &depth : nullptr;
+    vk::fn().cmd_begin_rendering(cmd, &info);
+    const VkViewport viewport{0.0f, 0.0f, float(r.extent.width), float(r.extent.height),
+                              0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &info.renderArea);
 }
 
 // One render pass: its barriers first, then each subpass's passes in their own labels (and
@@ -279,6 +340,8 @@ void RenderGraph::execute_group(VkCommandBuffer cmd, uint32_t index) {
     const GroupPlan& g = groups_[index];
     vk::ScopedLabel label(context_.debug(), cmd, g.name.c_str());
     record_barriers(cmd, g.barriers);
+    for (uint32_t p = g.first_pass; p <= g.last_pass; ++p)
+        for (const auto& prologue : prologues_[p]) prologue(cmd);
     std::vector<VkImageView> views;
     for (const GroupAttachment& a : g.attachments) views.push_back(bindings_[a.resource].view);
     render_passes_.begin(cmd, group_passes_[index], g, views, *retired_);
@@ -334,7 +397,7 @@ void RenderGraph::invalidate_history() {
 }
 
 std::string RenderGraph::dump() const {
-    return dump_graph(output_, resources_, passes_, plan_, groups_);
+    return dump_graph(output_, resources_, passes_, plan_, groups_, renderings_);
 }
 
 nlohmann::json RenderGraph::dump_json() const {

@@ -1,10 +1,13 @@
 #pragma once
 // The render graph (DESIGN decisions 5-7), Filament-shaped: every frame, each pass is declared
-// with a setup lambda (what it reads, writes and creates) and a record lambda (its commands).
-// compile() keeps the declaration order (no reordering, no culling), gives graph-owned
-// resources their images and buffers from a cache that persists across frames, and works out
-// layouts and barriers (plan.h). execute() records each pass inside a debug label, a timestamp
-// pair and a pipeline-statistics query, with all its barriers in one vkCmdPipelineBarrier2.
+// with a setup lambda (what it reads, writes, creates and renders to) and a record lambda (its
+// commands). compile() keeps the declaration order (no reordering, no culling), gives
+// graph-owned resources their images and buffers from a cache that persists across frames,
+// and works out layouts, barriers and each graphics pass's rendering (plan.h, rendering.h,
+// subpass.h). execute() records each pass inside a debug label, a timestamp pair and a
+// pipeline-statistics query, with all its barriers in one vkCmdPipelineBarrier2; for a pass
+// that renders it begins the dynamic rendering (or the render pass and subpass) and ends it,
+// so a record lambda records draws only.
 //
 //   graph.begin_frame({width, height}, frame.retired);
 //   const ImageHandle out = graph.import_image("result", {...});
@@ -14,14 +17,16 @@
 //           d.colour = b.create_image("colour", {.format = VK_FORMAT_R8G8B8A8_UNORM,
 //                                                .size = ImageSize::relative(1.0f),
 //                                                .semantic = Semantic::LdrColor});
-//           b.write(d.colour, Access::ColorAttachment);
+//           b.color(d.colour, {.load = Load::Clear, .clear = {{0, 0, 0, 1}}});
 //       },
-//       [](PassContext& ctx, const Clear& d) { /* begin rendering on ctx.view(d.colour) */ });
-//   graph.add_pass("blit", [&](PassBuilder& b) {
-//       b.read(clear.colour, Access::Sampled);
-//       b.write(out, Access::ColorAttachment);
-//       return [source = clear.colour, out](PassContext& ctx) { ... ctx.layout(source) ... };
-//   });
+//       [](PassContext& ctx, const Clear& d) { /* draws, with pipelines for ctx.target() */ });
+//   struct Blit { ImageHandle source; };
+//   graph.add_pass<Blit>({"blit", PassKind::Transfer},
+//       [&](PassBuilder& b, Blit& d) {
+//           d.source = b.read(clear.colour, Access::TransferSrc);
+//           b.write(out, Access::TransferDst);
+//       },
+//       [out](PassContext& ctx, const Blit& d) { ... ctx.layout(d.source) ... });
 //   graph.compile();
 //   const uint64_t id = graph.execute(frame.cmd);
 //   ... submit, wait for the fence ...
@@ -43,6 +48,7 @@
 #include "renderer/graph/plan.h"
 #include "renderer/graph/profiler.h"
 #include "renderer/graph/render_pass.h"
+#include "renderer/graph/rendering.h"
 #include "renderer/graph/subpass.h"
 #include "renderer/graph/types.h"
 
@@ -53,15 +59,6 @@ class Context;
 namespace ds::graph {
 
 class RenderGraph;
-
-// The render pass and subpass a pass records in (render_path=subpass); empty: its own
-// rendering. Pipeline variants keep both: a pipeline is made for one subpass.
-struct SubpassTarget {
-    VkRenderPass pass = VK_NULL_HANDLE;
-    uint32_t index = 0;
-    explicit operator bool() const { return pass != VK_NULL_HANDLE; }
-    bool operator==(const SubpassTarget&) const = default;
-};
 
 // "Read previous, write current": a temporal pass samples `previous` (last frame's `current`)
 // and writes `current`; at the end of the frame the two swap. PassContext::history_valid()
@@ -78,19 +75,35 @@ class PassBuilder {
     BufferHandle create_buffer(const std::string& name, const BufferDesc& desc);
 
     // Throw ds::Error when the access kind does not fit: read() takes only reading kinds,
-    // write() only writing ones; buffer-only kinds never apply to images and vice versa.
+    // write() only writing ones; buffer-only kinds never apply to images and vice versa; an
+    // attachment is declared with color() / depth() / resolve() / input() instead.
     ImageHandle read(ImageHandle image, Access access, Shader shader = Shader::Default);
     ImageHandle write(ImageHandle image, Access access, Shader shader = Shader::Default);
     BufferHandle read(BufferHandle buffer, Access access, Shader shader = Shader::Default);
     BufferHandle write(BufferHandle buffer, Access access, Shader shader = Shader::Default);
 
-    // This pass is subpass `index` of render pass `group` (graph/subpass.h): the graph begins
-    // the render pass before the group's first pass, steps subpasses and ends it after the
-    // last; the pass records draws only, with pipelines made for PassContext::subpass_target().
-    // Call first, before declaring accesses.
-    void subpass(const std::string& group, uint32_t index);
-    // In a subpass: the attachment's LOAD_OP_CLEAR value (a render pass clears on load).
-    void clear(ImageHandle image, const VkClearValue& value);
+    // A graphics pass's attachments (rendering.h): the graph begins the rendering with them,
+    // colour attachments in the order declared, and ends it after the record lambda.
+    ImageHandle color(ImageHandle image, const ColorUse& use = {});
+    // A colour slot without an image: what the fragment shader writes there is dropped (its
+    // alpha still makes alpha-to-coverage's mask). Pipelines see `format` in that slot.
+    void unused_color(VkFormat format);
+    ImageHandle depth(ImageHandle image, const DepthUse& use = {});
+    // `into` receives the resolve of attachment `from` (colour or depth) when the rendering
+    // ends. Inside a subpass group a colour resolve becomes the subpass's resolve attachment.
+    ImageHandle resolve(ImageHandle from, ImageHandle into,
+                        VkResolveModeFlagBits mode = VK_RESOLVE_MODE_AVERAGE_BIT);
+    // Read at the fragment's own pixel (subpassLoad): only inside a subpass group, which the
+    // graph plans where the frame asked for one (RenderGraph::plan_subpasses).
+    ImageHandle input(ImageHandle image);
+    // Rendering without attachments, over `extent` (the fragments only write storage).
+    void render_area(VkExtent2D extent);
+    // A VkRenderPass of its own (one subpass) rather than dynamic rendering: for pipelines
+    // made for render passes (Dear ImGui 1.86's).
+    void render_pass();
+    // Commands recorded before the rendering begins (inside a subpass group: before the render
+    // pass), for what Vulkan forbids inside one (query pool resets).
+    void outside_rendering(std::function<void(VkCommandBuffer)> record);
 
     VkExtent2D output_extent() const;
     VkExtent2D extent(ImageHandle image) const;
@@ -99,6 +112,7 @@ class PassBuilder {
     friend class RenderGraph;
     PassBuilder(RenderGraph& graph, uint32_t pass) : graph_(graph), pass_(pass) {}
     void declare(uint32_t resource, bool image, Access access, Shader shader, bool write);
+    PassInfo& attaching(const char* what);
 
     RenderGraph& graph_;
     uint32_t pass_;
@@ -120,9 +134,9 @@ class PassContext {
     VkFormat format(ImageHandle image) const;
     VkDeviceSize size(BufferHandle buffer) const;
     bool history_valid(const HistoryImage& history) const;
-    // Inside a subpass group: its VkRenderPass (pipelines are made for it) and this pass's
-    // subpass index; an empty target for a pass on its own (dynamic rendering).
-    SubpassTarget subpass_target() const;
+    // What this pass renders into, for its pipelines (rendering.h): the declared formats, or
+    // inside a subpass group the render pass and subpass.
+    RenderTarget target() const;
 
     // A dependency between two steps inside this pass (two dispatches, where the second reads
     // what the first wrote), in the graph's terms: `before` and `after` must both be declared
@@ -142,7 +156,6 @@ class PassContext {
 
 class RenderGraph {
   public:
-    using Setup = std::function<void(PassBuilder&)>;
     using Record = std::function<void(PassContext&)>;
 
     explicit RenderGraph(vk::Context& context);
@@ -158,28 +171,17 @@ class RenderGraph {
     // An image imported before it existed (null handles: the frame's targets, made once the
     // frame's memory estimate passed) gets its handles here, before compile().
     void bind_import(ImageHandle image, VkImage handle, VkImageView view);
-    // The role of the passes added from now on (begin_frame() resets it to Frame).
-    void set_role(PassRole role) { role_ = role; }
+    // render_path=subpass: runs of graphics passes that share a depth attachment are planned
+    // as the subpasses of one render pass named `group` (subpass.h); empty (begin_frame()'s
+    // default): every pass renders on its own.
+    void plan_subpasses(std::string group);
 
-    // `setup` runs now; `record` runs in execute(). Beware: `record` is built before `setup`
-    // runs, so a handle it captures by value is the one from before setup assigned it
-    // (invalid). Capture by reference, or use one of the two forms below.
-    void add_pass(const std::string& name, const Setup& setup, Record record,
-                  PassKind kind = PassKind::Graphics);
-    // `setup` declares and returns the record lambda, which captures the handles by value:
-    //   graph.add_pass("gtao", [&](PassBuilder& b) {
-    //       const ImageHandle ao = b.create_image(...);
-    //       b.write(ao, Access::StorageWrite);
-    //       return [=](PassContext& ctx) { ... ctx.view(ao) ... };
-    //   }, PassKind::Compute);
-    using SetupRecord = std::function<Record(PassBuilder&)>;
-    void add_pass(const std::string& name, const SetupRecord& setup,
-                  PassKind kind = PassKind::Graphics);
-    // Filament's form: setup fills a Data, record gets it back; the Data lives until the next
-    // begin_frame(), so later passes may read its handles.
+    // The one form (Filament's): `setup` runs now and fills a Data with what it declared;
+    // `record` runs in execute() and gets the Data back. The Data lives until the next
+    // begin_frame(), so later passes may read its handles. `decl` names the pass and gives its
+    // kind and role (a string alone: a graphics pass of the frame's own work).
     template <typename Data, typename SetupFn, typename RecordFn>
-    const Data& add_pass(const std::string& name, SetupFn&& setup, RecordFn&& record,
-                         PassKind kind = PassKind::Graphics);
+    const Data& add_pass(const PassDecl& decl, SetupFn&& setup, RecordFn&& record);
 
     void compile();
     uint64_t execute(VkCommandBuffer cmd);  // returns the id collect() takes
@@ -232,7 +234,9 @@ class RenderGraph {
     void realize_resources();
     void realize_history(HistoryRequest& request);
     void record_barriers(VkCommandBuffer cmd, std::span<const Barrier> barriers) const;
+    PassBuilder begin_pass(const PassDecl& decl);
     void record_pass(VkCommandBuffer cmd, uint32_t pass);
+    void begin_rendering(VkCommandBuffer cmd, uint32_t pass) const;
     void execute_group(VkCommandBuffer cmd, uint32_t group);
     VkRenderPass render_pass_of(uint32_t pass) const;
     void commit_states();
@@ -245,13 +249,15 @@ class RenderGraph {
     VkExtent2D output_{0, 0};
     uint64_t frames_ = 0;
     enum class Phase : uint8_t { Idle, Declaring, Compiled, Executed } phase_ = Phase::Idle;
-    PassRole role_ = PassRole::Frame;
+    std::string subpass_group_;  // plan_subpasses()
 
     // The frame being declared / compiled.
     std::vector<ResourceInfo> resources_;
     std::vector<Binding> bindings_;
     std::vector<PassInfo> passes_;
     std::vector<Record> records_;
+    std::vector<std::vector<std::function<void(VkCommandBuffer)>>> prologues_;  // per pass
+    std::vector<RenderingPlan> renderings_;  // per pass, after compile(): passes outside groups
     std::vector<HistoryRequest> histories_;
     std::vector<std::shared_ptr<void>> pass_data_;  // add_pass<Data>'s, until begin_frame()
     BarrierPlan plan_;
@@ -262,14 +268,14 @@ class RenderGraph {
 std::ostream& operator<<(std::ostream& out, const RenderGraph& graph);
 
 template <typename Data, typename SetupFn, typename RecordFn>
-const Data& RenderGraph::add_pass(const std::string& name, SetupFn&& setup, RecordFn&& record,
-                                  PassKind kind) {
+const Data& RenderGraph::add_pass(const PassDecl& decl, SetupFn&& setup, RecordFn&& record) {
     auto data = std::make_shared<Data>();
     pass_data_.push_back(data);
-    add_pass(
-        name, [&](PassBuilder& builder) { setup(builder, *data); },
-        [data, record = std::forward<RecordFn>(record)](PassContext& ctx) { record(ctx, *data); },
-        kind);
+    PassBuilder builder = begin_pass(decl);
+    setup(builder, *data);
+    records_.back() = [data, record = std::forward<RecordFn>(record)](PassContext& ctx) {
+        record(ctx, *data);
+    };
     return *data;
 }
 

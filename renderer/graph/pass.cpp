@@ -19,6 +19,21 @@ bool is_depth_kind(Access access) {
     return access == Access::DepthAttachment || access == Access::DepthReadOnly;
 }
 
+bool is_attachment_kind(Access access) {
+    return access == Access::ColorAttachment || is_depth_kind(access) ||
+           access == Access::ResolveDst || access == Access::InputAttachment;
+}
+
+[[noreturn]] void throw_attachment_kind(const RenderGraph& graph, uint32_t pass, ImageHandle image,
+                                        Access access) {
+    const auto& resources = graph.resources();
+    const std::string name =
+        image.index < resources.size() ? resources[image.index].name : std::string("?");
+    throw Error("render graph: pass '" + graph.passes()[pass].name + "', '" + name +
+                "': " + access_name(access) +
+                " is an attachment: declare it with color(), depth(), resolve() or input()");
+}
+
 }  // namespace
 
 ImageHandle PassBuilder::create_image(const std::string& name, const ImageDesc& desc) {
@@ -81,11 +96,13 @@ void PassBuilder::declare(uint32_t resource, bool image, Access access, Shader s
 }
 
 ImageHandle PassBuilder::read(ImageHandle image, Access access, Shader shader) {
+    if (is_attachment_kind(access)) throw_attachment_kind(graph_, pass_, image, access);
     declare(image.index, true, access, shader, false);
     return image;
 }
 
 ImageHandle PassBuilder::write(ImageHandle image, Access access, Shader shader) {
+    if (is_attachment_kind(access)) throw_attachment_kind(graph_, pass_, image, access);
     declare(image.index, true, access, shader, true);
     return image;
 }
@@ -100,22 +117,72 @@ BufferHandle PassBuilder::write(BufferHandle buffer, Access access, Shader shade
     return buffer;
 }
 
-void PassBuilder::subpass(const std::string& group, uint32_t index) {
+PassInfo& PassBuilder::attaching(const char* what) {
     PassInfo& pass = graph_.passes_[pass_];
-    if (pass.kind != PassKind::Graphics || group.empty())
-        throw Error("render graph: pass '" + pass.name + "': only a graphics pass is a subpass" +
-                    (group.empty() ? " (of a named group)" : ""));
-    pass.group = group;
-    pass.subpass = index;
+    if (pass.kind != PassKind::Graphics)
+        throw Error("render graph: pass '" + pass.name + "': " + what + ": a " +
+                    pass_kind_name(pass.kind) + " pass renders nothing");
+    return pass;
 }
 
-void PassBuilder::clear(ImageHandle image, const VkClearValue& value) {
-    PassInfo& pass = graph_.passes_[pass_];
-    graph_.resource(image.index, true, "clear()");
-    if (pass.group.empty())
-        throw Error("render graph: pass '" + pass.name +
-                    "': clear() is for subpasses (a pass on its own clears when it begins)");
-    pass.clears.push_back({image.index, value});
+ImageHandle PassBuilder::color(ImageHandle image, const ColorUse& use) {
+    declare(image.index, true, Access::ColorAttachment, Shader::Default, true);
+    AttachmentDecl d{
+        .kind = AttachmentDecl::Kind::Color, .resource = image.index, .load = use.load};
+    d.clear.color = use.clear;
+    attaching("color()").attachments.push_back(d);
+    return image;
+}
+
+void PassBuilder::unused_color(VkFormat format) {
+    attaching("unused_color()")
+        .attachments.push_back({.kind = AttachmentDecl::Kind::UnusedColor, .format = format});
+}
+
+ImageHandle PassBuilder::depth(ImageHandle image, const DepthUse& use) {
+    declare(image.index, true, use.read_only ? Access::DepthReadOnly : Access::DepthAttachment,
+            Shader::Default, !use.read_only);
+    AttachmentDecl d{.kind = AttachmentDecl::Kind::Depth,
+                     .resource = image.index,
+                     .load = use.load,
+                     .read_only = use.read_only};
+    d.clear.depthStencil = {use.clear, 0};
+    PassInfo& pass = attaching("depth()");
+    for (const AttachmentDecl& x : pass.attachments)
+        if (x.kind == AttachmentDecl::Kind::Depth)
+            throw Error("render graph: pass '" + pass.name +
+                        "' declares a second depth attachment");
+    pass.attachments.push_back(d);
+    return image;
+}
+
+ImageHandle PassBuilder::resolve(ImageHandle from, ImageHandle into, VkResolveModeFlagBits mode) {
+    declare(into.index, true, Access::ResolveDst, Shader::Default, true);
+    attaching("resolve()")
+        .attachments.push_back({.kind = AttachmentDecl::Kind::Resolve,
+                                .resource = into.index,
+                                .resolves = from.index,
+                                .mode = mode});
+    return into;
+}
+
+ImageHandle PassBuilder::input(ImageHandle image) {
+    declare(image.index, true, Access::InputAttachment, Shader::Default, false);
+    attaching("input()").attachments.push_back(
+        {.kind = AttachmentDecl::Kind::Input, .resource = image.index});
+    return image;
+}
+
+void PassBuilder::render_area(VkExtent2D extent) {
+    attaching("render_area()").render_area = extent;
+}
+
+void PassBuilder::render_pass() {
+    attaching("render_pass()").render_pass = true;
+}
+
+void PassBuilder::outside_rendering(std::function<void(VkCommandBuffer)> record) {
+    graph_.prologues_[pass_].push_back(std::move(record));
 }
 
 VkExtent2D PassBuilder::output_extent() const {
@@ -183,9 +250,9 @@ void PassContext::dependency(ImageHandle h, Access before, Access after) const {
             return i.resource == h.index && i.access == a;
         });
     };
-    if (!pass.group.empty())
+    if (pass.renders())
         throw Error("render graph: pass '" + pass.name +
-                    "' is a subpass: a barrier inside it would be a subpass self-dependency");
+                    "' renders: a barrier inside its rendering would be a self-dependency");
     if (!declared(before) || !declared(after))
         throw Error("render graph: pass '" + pass.name + "', '" + r.name +
                     "': dependency() between accesses it did not declare");
@@ -208,8 +275,12 @@ void PassContext::dependency(ImageHandle h, Access before, Access after) const {
     graph_.record_barriers(cmd_, {&b, 1});
 }
 
-SubpassTarget PassContext::subpass_target() const {
-    return {graph_.render_pass_of(pass_), graph_.passes_[pass_].subpass};
+RenderTarget PassContext::target() const {
+    const PassInfo& pass = graph_.passes_[pass_];
+    RenderTarget t = render_target(pass, graph_.resources_);
+    t.render_pass = graph_.render_pass_of(pass_);
+    t.subpass = pass.subpass;
+    return t;
 }
 
 bool PassContext::history_valid(const HistoryImage& history) const {

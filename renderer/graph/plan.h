@@ -60,10 +60,19 @@ struct AccessInfo {
     Shader shader = Shader::Default;
 };
 
-// An attachment's LOAD_OP_CLEAR value, where a pass of a subpass group asked for it.
-struct AttachmentClear {
-    uint32_t resource = kNoResource;
-    VkClearValue value{};
+// One attachment of a graphics pass, in declaration order (PassBuilder::color, unused_color,
+// depth, resolve, input): what the graph begins the rendering or the subpass with.
+struct AttachmentDecl {
+    enum class Kind : uint8_t { Color, UnusedColor, Depth, Resolve, Input };
+    Kind kind = Kind::Color;
+    uint32_t resource = kNoResource;        // UnusedColor: none
+    VkFormat format = VK_FORMAT_UNDEFINED;  // UnusedColor: the slot's (pipelines see it)
+    Load load = Load::Keep;
+    VkClearValue clear{};
+    bool read_only = false;  // Depth
+    // Resolve: the attachment (resource) this one resolves, and how.
+    uint32_t resolves = kNoResource;
+    VkResolveModeFlagBits mode = VK_RESOLVE_MODE_NONE;
 };
 
 struct PassInfo {
@@ -71,11 +80,17 @@ struct PassInfo {
     PassKind kind = PassKind::Graphics;
     std::vector<AccessInfo> accesses;  // in declaration order
     PassRole role = PassRole::Frame;
-    // A subpass of a render pass (graph/subpass.h): consecutive passes with the same group
-    // form one VkRenderPass; passes with the same index share a subpass. Empty: on its own.
+    std::vector<AttachmentDecl> attachments;  // graphics passes that render
+    VkExtent2D render_area{0, 0};  // rendering without attachments (PassBuilder::render_area)
+    bool render_pass = false;      // a render pass of its own (PassBuilder::render_pass)
+    // A subpass of a render pass (graph/subpass.h), as compile() planned it: consecutive passes
+    // with the same group form one VkRenderPass; passes with the same index share a subpass.
+    // Empty: on its own.
     std::string group;
     uint32_t subpass = 0;
-    std::vector<AttachmentClear> clears;
+
+    // Whether the graph begins a rendering (or a subpass) for it.
+    bool renders() const { return !attachments.empty() || render_area.width != 0; }
 };
 
 struct Barrier {

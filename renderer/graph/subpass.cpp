@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "renderer/common/error.h"
+#include "renderer/graph/rendering.h"
 
 namespace ds::graph {
 namespace {
@@ -95,54 +96,68 @@ void add_ref(std::vector<AttachmentRef>& refs, AttachmentRef ref) {
     if (std::none_of(refs.begin(), refs.end(), same)) refs.push_back(ref);
 }
 
-// One subpass's references, from its passes' accesses in declaration order.
+// One subpass's references, from its passes' attachment declarations: the colour slots are
+// the first pass's (the others of the subpass have the same, assign_subpasses() saw to it),
+// inputs and resolves are the union.
 void fill_refs(const GroupPlan& g, SubpassPlan& sp, std::span<const ResourceInfo> resources,
                std::span<const PassInfo> passes, const BarrierPlan& plan) {
-    std::vector<AttachmentRef> resolves;
+    using Kind = AttachmentDecl::Kind;
     bool writes_depth = false;
+    std::vector<std::pair<uint32_t, AttachmentRef>> resolves;  // colour resource, resolve
     for (uint32_t p : sp.passes) {
-        for (const AccessInfo& a : passes[p].accesses) {
-            if (!attaches(a.access)) continue;
-            const ResourceInfo& r = resources[a.resource];
-            const AttachmentRef ref{attachment_index(g, a.resource),
-                                    use_in(plan, p, a.resource).layout};
-            if (a.access == Access::ColorAttachment) add_ref(sp.colors, ref);
-            if (a.access == Access::InputAttachment) add_ref(sp.inputs, ref);
-            if (a.access == Access::ResolveDst) {
+        const bool first = p == sp.passes.front();
+        for (const AttachmentDecl& d : passes[p].attachments) {
+            if (d.kind == Kind::UnusedColor) {
+                if (first) sp.colors.push_back({UINT32_MAX, VK_IMAGE_LAYOUT_UNDEFINED});
+                continue;
+            }
+            const ResourceInfo& r = resources[d.resource];
+            const AttachmentRef ref{attachment_index(g, d.resource),
+                                    use_in(plan, p, d.resource).layout};
+            if (d.kind == Kind::Color && first) sp.colors.push_back(ref);
+            if (d.kind == Kind::Input) add_ref(sp.inputs, ref);
+            if (d.kind == Kind::Resolve) {
                 if (r.depth())
                     throw Error("render graph: subpass group '" + g.name + "': '" + r.name +
                                 "': depth resolves are not planned inside a render pass");
-                add_ref(resolves, ref);
+                resolves.emplace_back(d.resolves, ref);
             }
-            if (a.access == Access::DepthAttachment || a.access == Access::DepthReadOnly) {
+            if (d.kind == Kind::Depth) {
                 if (sp.depth && sp.depth->attachment != ref.attachment)
                     throw Error("render graph: subpass group '" + g.name + "': pass '" +
                                 passes[p].name + "' attaches a second depth image '" + r.name +
                                 "' in one subpass");
                 sp.depth = ref;
-                writes_depth |= a.access == Access::DepthAttachment;
+                writes_depth |= !d.read_only;
             }
         }
     }
     sp.depth_read_only = sp.depth && !writes_depth;
     if (resolves.empty()) return;
-    // The i-th resolve destination takes the i-th multisampled colour attachment.
-    size_t next = 0;
+    // One per colour slot: the resolve declared for that colour, or none.
     for (const AttachmentRef& c : sp.colors) {
-        const bool ms = resources[g.attachments[c.attachment].resource].multisampled();
-        sp.resolves.push_back(ms && next < resolves.size() ? resolves[next++]
-                                                           : AttachmentRef{UINT32_MAX, {}});
+        AttachmentRef ref{UINT32_MAX, {}};
+        for (const auto& [colour, resolve] : resolves)
+            if (c.attachment != UINT32_MAX && g.attachments[c.attachment].resource == colour)
+                ref = resolve;
+        sp.resolves.push_back(ref);
     }
-    if (next != resolves.size())
-        throw Error("render graph: subpass group '" + g.name +
-                    "': more resolve destinations than multisampled colour attachments");
 }
 
-// Load and store ops and the layouts the render pass starts and ends each attachment in.
+// Where `pass` attaches `resource` as a colour or depth attachment.
+const AttachmentDecl* attached(const PassInfo& pass, uint32_t resource) {
+    for (const AttachmentDecl& d : pass.attachments)
+        if (d.resource == resource &&
+            (d.kind == AttachmentDecl::Kind::Color || d.kind == AttachmentDecl::Kind::Depth))
+            return &d;
+    return nullptr;
+}
+
+// Load and store ops and the layouts the render pass starts and ends each attachment in. A
+// clear is the first use's (the render pass clears on load); a later pass cannot clear.
 void fill_ops(GroupPlan& g, std::span<const ResourceInfo> resources,
               std::span<const PassInfo> passes, const BarrierPlan& plan) {
     for (GroupAttachment& a : g.attachments) {
-        const ResourceInfo& r = resources[a.resource];
         bool first = true;
         for (uint32_t p = g.first_pass; p <= g.last_pass; ++p) {
             const auto& uses = plan.passes[p].uses;
@@ -150,33 +165,98 @@ void fill_ops(GroupPlan& g, std::span<const ResourceInfo> resources,
                              [&](const PassUse& u) { return u.resource == a.resource; }))
                 continue;
             const VkImageLayout layout = use_in(plan, p, a.resource).layout;
-            if (first) a.initial = layout;
+            const AttachmentDecl* d = attached(passes[p], a.resource);
+            const bool clear = d && d->load == Load::Clear;
+            if (clear && !first)
+                throw Error("render graph: subpass group '" + g.name + "': pass '" +
+                            passes[p].name + "' clears '" + resources[a.resource].name +
+                            "', which an earlier subpass of the group used");
+            if (first) {
+                a.initial = layout;
+                a.load = attachment_load(clear ? Load::Clear : Load::Keep, a.resource, p, resources,
+                                         passes);
+                if (clear) a.clear = d->clear;
+            }
             a.final = layout;
-            if (first)
-                for (const AttachmentClear& c : passes[p].clears)
-                    if (c.resource == a.resource) {
-                        a.load = VK_ATTACHMENT_LOAD_OP_CLEAR;
-                        a.clear = c.value;
-                    }
             first = false;
         }
-        bool written_before = false, used_after = false;
-        for (uint32_t p = 0; p < passes.size(); ++p)
-            for (const AccessInfo& x : passes[p].accesses) {
-                if (x.resource != a.resource) continue;
-                written_before |= p < g.first_pass && is_write(x.access);
-                used_after |= p > g.last_pass;
-            }
-        const bool arrives_full =
-            (r.lifetime == Lifetime::External && r.initial.layout != VK_IMAGE_LAYOUT_UNDEFINED) ||
-            (r.history == HistoryRole::Previous && r.history_valid);
-        if (a.load != VK_ATTACHMENT_LOAD_OP_CLEAR && (written_before || arrives_full))
-            a.load = VK_ATTACHMENT_LOAD_OP_LOAD;
-        const bool kept = used_after || r.lifetime != Lifetime::Transient;
-        a.store = kept ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        a.store = attachment_store(a.resource, g.last_pass, resources, passes);
     }
 }
 }  // namespace
+
+namespace {
+
+using Kind = AttachmentDecl::Kind;
+
+uint32_t depth_of(const PassInfo& pass, bool& read_only) {
+    for (const AttachmentDecl& d : pass.attachments)
+        if (d.kind == Kind::Depth) {
+            read_only = d.read_only;
+            return d.resource;
+        }
+    return kNoResource;
+}
+
+// The colour slots: resources in order (kNoResource for an unused slot).
+std::vector<uint32_t> colour_slots(const PassInfo& pass) {
+    std::vector<uint32_t> out;
+    for (const AttachmentDecl& d : pass.attachments)
+        if (d.kind == Kind::Color || d.kind == Kind::UnusedColor) out.push_back(d.resource);
+    return out;
+}
+
+bool starts_subpass(const PassInfo& pass, const PassInfo& current,
+                    std::span<const PassInfo> subpass) {
+    bool ro = false, current_ro = false;
+    depth_of(pass, ro);
+    depth_of(current, current_ro);
+    if (ro != current_ro || colour_slots(pass) != colour_slots(current)) return true;
+    for (const AttachmentDecl& d : pass.attachments) {
+        if (d.kind != Kind::Input) continue;
+        for (const PassInfo& q : subpass)
+            for (const AccessInfo& a : q.accesses)
+                if (a.resource == d.resource && is_write(a.access)) return true;
+    }
+    return false;
+}
+
+void assign_run(std::span<PassInfo> run, const std::string& name) {
+    uint32_t subpass = 0;
+    size_t first = 0;  // of the current subpass
+    for (size_t i = 0; i < run.size(); ++i) {
+        if (i > 0 && starts_subpass(run[i], run[first], run.subspan(first, i - first))) {
+            ++subpass;
+            first = i;
+        }
+        run[i].group = name;
+        run[i].subpass = subpass;
+    }
+}
+
+}  // namespace
+
+void assign_subpasses(std::span<PassInfo> passes, std::span<const ResourceInfo>,
+                      const std::string& group) {
+    for (PassInfo& p : passes) {
+        p.group = p.render_pass ? p.name : std::string();
+        p.subpass = 0;
+    }
+    if (group.empty()) return;
+    uint32_t runs = 0;
+    for (size_t i = 0; i < passes.size();) {
+        bool ro = false;
+        const uint32_t depth = passes[i].render_pass ? kNoResource : depth_of(passes[i], ro);
+        size_t end = i + 1;
+        while (depth != kNoResource && end < passes.size() && !passes[end].render_pass &&
+               depth_of(passes[end], ro) == depth)
+            ++end;
+        if (end - i >= 2)
+            assign_run(passes.subspan(i, end - i),
+                       runs++ == 0 ? group : group + "#" + std::to_string(runs));
+        i = end;
+    }
+}
 
 std::vector<GroupPlan> find_subpass_groups(std::span<const ResourceInfo> resources,
                                            std::span<const PassInfo> passes) {

@@ -1,6 +1,6 @@
 #pragma once
-// Subpass groups (seed 002): consecutive graphics passes declared with the same group name
-// (PassBuilder::subpass) are planned as one VkRenderPass. The pure half, like plan.h: no
+// Subpass groups (seed 002): consecutive graphics passes that assign_subpasses() put in one
+// group are planned as one VkRenderPass. The pure half, like plan.h: no
 // Vulkan calls, so unit tests check it without a device and dump() prints what execute()
 // records.
 //
@@ -9,10 +9,10 @@
 //   002's "light first"). Each one's layout in a subpass is the plan's layout for that pass;
 //   the render pass goes from the first to the last of them itself (initialLayout is the
 //   first, finalLayout the last), so the graph's own barriers stop at the group's edges.
-// - Load op: CLEAR where the first pass using it asked (PassBuilder::clear), LOAD where it
-//   holds something (written earlier this frame, or an import / history that arrives with
-//   contents), else DONT_CARE. Store op: STORE where anything after the group uses it (a later
-//   pass, an import's final state, a history image), else DONT_CARE.
+// - Load op: CLEAR where the first pass using it declared Load::Clear, LOAD where it holds
+//   something (written earlier this frame, or an import / history that arrives with
+//   contents), else DONT_CARE (rendering.h's rule). Store op: STORE where anything after the group
+//   uses it (a later pass, an import's final state, a history image), else DONT_CARE.
 // - Transient: an image the graph owns that nothing outside the group touches lives in tile
 //   memory only: TRANSIENT_ATTACHMENT usage (no TRANSFER_SRC: nothing can read it back) and
 //   LAZILY_ALLOCATED memory where the device has it.
@@ -73,6 +73,17 @@ struct GroupPlan {
     std::vector<SubpassDependency> dependencies;
     std::vector<Barrier> barriers;  // before the render pass begins
 };
+
+// compile()'s first step: sets each pass's PassInfo::group and ::subpass. A pass that asked
+// for a render pass of its own (PassBuilder::render_pass) is a group of one, named after it.
+// With a `group` name (RenderGraph::plan_subpasses), each run of two or more consecutive
+// graphics passes rendering to the same depth image becomes one group (`group`, then
+// `group#2`, ...); in it a pass starts the next subpass where it reads an input attachment
+// that the current subpass writes, where its depth use (written or read-only) differs, or
+// where its colour slots do. Passes plan nothing themselves: the same declarations render
+// alone or as subpasses.
+void assign_subpasses(std::span<PassInfo> passes, std::span<const ResourceInfo> resources,
+                      const std::string& group);
 
 // The groups of `passes` (in pass order), without layouts yet: which resources are
 // transient. Throws ds::Error for a malformed group (a group name that comes back after

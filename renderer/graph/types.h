@@ -3,6 +3,8 @@
 // carries (DESIGN decision 7). No Vulkan calls: only Vulkan's enums and flag types.
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include <vulkan/vulkan.h>
 
@@ -103,6 +105,36 @@ enum class PassKind : uint8_t { Graphics, Compute, Transfer };
 // diagnostic adds beside a frame pass (Measure: count_fragments' rasterized counts), or a pixel
 // history replay (History: a geometry pass's draws again, instrumented, before the pass itself).
 enum class PassRole : uint8_t { Frame, Clear, ReadBack, Measure, History };
+
+// What a graphics pass declares about an attachment it renders to (PassBuilder::color /
+// depth). Keep: the contents where there are any (written earlier this frame, or an import or
+// history that arrives with them), else nothing to load; Clear: the declared value; DontCare:
+// the pass covers every pixel. Store ops are the graph's: STORE where a later pass or the
+// frame's end still needs the contents, DONT_CARE where nothing does, NONE for a read-only
+// depth (a test that writes nothing).
+enum class Load : uint8_t { Keep, Clear, DontCare };
+
+struct ColorUse {
+    Load load = Load::Keep;
+    VkClearColorValue clear{};  // Load::Clear
+};
+
+struct DepthUse {
+    Load load = Load::Keep;
+    float clear = 0.0f;      // Load::Clear
+    bool read_only = false;  // tested, never written (a read-only layout)
+};
+
+// A pass's identity in the graph: its name, what it runs, and what it is for.
+struct PassDecl {
+    std::string name;
+    PassKind kind = PassKind::Graphics;
+    PassRole role = PassRole::Frame;
+    PassDecl(std::string n, PassKind k = PassKind::Graphics, PassRole r = PassRole::Frame)
+        : name(std::move(n)), kind(k), role(r) {}
+    PassDecl(const char* n, PassKind k = PassKind::Graphics, PassRole r = PassRole::Frame)
+        : name(n), kind(k), role(r) {}
+};
 
 const char* pass_kind_name(PassKind kind);  // "graphics" | "compute" | "transfer"
 // "frame" | "clear" | "readback" | "measure" | "history"

@@ -41,7 +41,7 @@ void AoSpatialPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameR
         graph::ImageHandle raw, mid, out;
     };
     const Data& data = graph.add_pass<Data>(
-        "ao_spatial",
+        {"ao_spatial", graph::PassKind::Compute},
         [&](graph::PassBuilder& b, Data& d) {
             const VkExtent2D raw = b.extent(res.ao_raw);
             const graph::ImageSize size = graph::ImageSize::fixed(raw.width, raw.height);
@@ -66,8 +66,7 @@ void AoSpatialPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameR
             ctx.dependency(d.mid, Access::StorageWrite, Access::Sampled);
             const BoundImage second[] = {mid, {ctx.view(d.out), ctx.layout(d.out)}};
             vertical_.dispatch(ctx.cmd(), frame_set, frame, second, &params_, ctx.extent(d.out));
-        },
-        graph::PassKind::Compute);
+        });
     res.ao_filtered = data.out;
 }
 

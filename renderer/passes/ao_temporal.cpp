@@ -38,7 +38,7 @@ void AoTemporalPass::add(graph::RenderGraph& graph, const FrameInputs& in, Frame
         graph::HistoryImage history;
     };
     const Data& data = graph.add_pass<Data>(
-        "ao_temporal",
+        {"ao_temporal", graph::PassKind::Compute},
         [&](graph::PassBuilder& b, Data& d) {
             const VkExtent2D ao = b.extent(res.ao_filtered);
             d.out = b.create_image("ao", {.format = kFormat,
@@ -77,8 +77,7 @@ void AoTemporalPass::add(graph::RenderGraph& graph, const FrameInputs& in, Frame
                                          history,
                                          {ctx.view(d.out), ctx.layout(d.out)}};
             upsample_.dispatch(ctx.cmd(), frame_set, frame, second, &push, ctx.extent(d.out));
-        },
-        graph::PassKind::Compute);
+        });
     res.ao = data.out;
 }
 

@@ -77,9 +77,12 @@ void ClearCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
     const FrameOptions& o = in.options;
     if (!o.count_fragments && !o.zfight) return;
     const VkExtent2D frame = graph.output_extent();
-    graph.add_pass(
-        name(),
-        [&](graph::PassBuilder& b) {
+    struct Data {
+        std::vector<graph::ImageHandle> counts;
+    };
+    graph.add_pass<Data>(
+        {name(), graph::PassKind::Transfer, role()},
+        [&](graph::PassBuilder& b, Data& d) {
             if (o.count_fragments) {  // the passes that run this frame
                 const VkExtent2D shadow{kShadowMapSize, kShadowMapSize};
                 if (o.shadows) {
@@ -99,14 +102,14 @@ void ClearCountsPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
                 counts.push_back(res.zfight);
             }
             for (graph::ImageHandle h : counts) b.write(h, graph::Access::TransferDst);
-            return [counts](graph::PassContext& ctx) {
-                const VkClearColorValue zero{};
-                const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-                for (graph::ImageHandle h : counts)
-                    vkCmdClearColorImage(ctx.cmd(), ctx.image(h), ctx.layout(h), &zero, 1, &range);
-            };
+            d.counts = std::move(counts);
         },
-        graph::PassKind::Transfer);
+        [](graph::PassContext& ctx, const Data& d) {
+            const VkClearColorValue zero{};
+            const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+            for (graph::ImageHandle h : d.counts)
+                vkCmdClearColorImage(ctx.cmd(), ctx.image(h), ctx.layout(h), &zero, 1, &range);
+        });
     // After the images exist: each counting pass gets its per-draw buffer.
     if (o.count_draws) add_draw_counters(graph, in, res);
 }

@@ -120,7 +120,7 @@ graph::ImageHandle add_depth_normals_pass(graph::RenderGraph& graph, const char*
         graph::ImageHandle depth, normals, out;
     };
     const Data& data = graph.add_pass<Data>(
-        pass_name,
+        {pass_name, graph::PassKind::Compute},
         [&](graph::PassBuilder& b, Data& d) {
             d.out = b.create_image(image_name, desc);
             b.read(res.frame_uniforms, Access::UniformRead);
@@ -134,8 +134,7 @@ graph::ImageHandle add_depth_normals_pass(graph::RenderGraph& graph, const char*
                                          {ctx.view(d.normals), ctx.layout(d.normals)},
                                          {ctx.view(d.out), ctx.layout(d.out)}};
             kernel.dispatch(ctx.cmd(), frame_set, frame, images, push_constants, ctx.extent(d.out));
-        },
-        graph::PassKind::Compute);
+        });
     return data.out;
 }
 

@@ -45,7 +45,7 @@ void DepthPrecisionPass::add(graph::RenderGraph& graph, const FrameInputs& in,
         graph::ImageHandle depth, out;
     };
     const Data& data = graph.add_pass<Data>(
-        name(),
+        {name(), graph::PassKind::Compute},
         [&](graph::PassBuilder& b, Data& d) {
             d.out = b.create_image("depth_precision", {.format = kFormat,
                                                        .size = graph::ImageSize::relative(1.0f),
@@ -59,8 +59,7 @@ void DepthPrecisionPass::add(graph::RenderGraph& graph, const FrameInputs& in,
             const BoundImage images[] = {{ctx.view(d.depth), ctx.layout(d.depth)},
                                          {ctx.view(d.out), ctx.layout(d.out)}};
             kernel_.dispatch(ctx.cmd(), frame_set, frame, images, &depth_bits, ctx.extent(d.out));
-        },
-        graph::PassKind::Compute);
+        });
     res.depth_precision = data.out;
 }
 

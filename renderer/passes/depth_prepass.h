@@ -34,6 +34,8 @@
 // small host storage buffer (set 2, HostReadback), read after the frame's fence.
 // Pixel history (FrameInputs::pixel): depth_prepass_history replays draw_scene() first with
 // the instrumented variants (pixel_history.h); its fragments start from the cleared depth.
+// Counts, the measurement draw, the replay, the queries and the pipeline records are the
+// GeometryInstrument's (geometry_instrument.h).
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -44,13 +46,10 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "renderer/graph/graph.h"
-#include "renderer/passes/draw_queries.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
+#include "renderer/passes/geometry_instrument.h"
 #include "renderer/passes/pass_util.h"
-#include "renderer/passes/pipeline_use.h"
-#include "renderer/passes/pixel_history.h"
-#include "renderer/passes/rasterized_count.h"
 #include "renderer/settings/knob.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptors.h"
@@ -112,36 +111,32 @@ class DepthPrepass final : public FramePass {
         bool counting = false;           // COUNT_FRAGMENTS=1
         bool alpha_to_coverage = false;  // alpha-tested pipeline only
         bool count_discards = false;     // alpha-tested pipeline only
-        bool surface_id = false;         // SURFACE_ID=1: a third, u32 attachment
+        bool surface_id = false;         // SURFACE_ID=1: a u32 attachment after the others
         bool history = false;            // PIXEL_HISTORY=1: the replay's, no attachments
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-        VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
-        bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
-        bool gbuffer = true;                   // prepass_mode=gbuffer: normals, roughness
+        bool count_draws = false;    // COUNT_DRAWS=1 (with counting)
+        bool gbuffer = true;         // prepass_mode=gbuffer: normals, roughness
         bool coverage_slot = false;  // depth mode, alpha_to_coverage: colour slot 0, no image
-        // render_path=subpass: the render pass and subpass it draws in (null: its own);
-        // LIGHT_SLOT=1 (the light is colour attachment 0: the surface's emission, none, and
-        // alpha-to-coverage's alpha).
-        VkRenderPass render_pass = VK_NULL_HANDLE;
-        uint32_t subpass = 0;
+        // render_path=subpass: LIGHT_SLOT=1, the light is colour attachment 0 (the surface's
+        // emission, none, and alpha-to-coverage's alpha).
+        bool light_slot = false;
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(int(alpha), counting, alpha_to_coverage, count_discards, surface_id,
-                               history, int(samples), int(depth), count_draws, gbuffer,
-                               coverage_slot, render_pass, subpass);
+                               history, int(samples), count_draws, gbuffer, coverage_slot,
+                               light_slot);
         }
     };
     // Whether the variant has a fragment stage: prepass_mode=depth's plain opaque one has none.
     static bool has_fragment_stage(const Variant& v);
-    // The colour attachment formats of the variant's rendering, in order.
-    static std::vector<VkFormat> color_formats(const Variant& v);
     static constexpr uint32_t kDiscardSet = 2;
 
+    // The pipelines one recording draws with: the opaque and alpha-tested variants (unsplit:
+    // `opaque` is the one with the alpha test and `mask` is unused), made for the target.
     struct Draw {
-        VkPipeline opaque = VK_NULL_HANDLE;  // unsplit: the one pipeline
-        VkPipeline mask = VK_NULL_HANDLE;    // unsplit: null
+        Variant opaque, mask;
+        bool split = true;
         PipelineInfo opaque_info, mask_info;
-        VkDescriptorSet counts = VK_NULL_HANDLE;
         VkDescriptorSet discards = VK_NULL_HANDLE;
         // What the sets are bound with (null: the pass's; the replay binds with its own, which
         // has set 4 too, or binding set 0 would disturb set 4).
@@ -149,55 +144,38 @@ class DepthPrepass final : public FramePass {
     };
 
     ShaderStages compile(const Variant& variant) const;
-    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages,
+                        const graph::RenderTarget& target) const;
     static std::string pipeline_name(const Variant& variant);
-    // msaa > 1: the multisampled normals and roughness (transients) of this frame.
-    struct Msaa {
-        graph::ImageHandle normals, roughness, surface_id;
-    };
 
-    Msaa declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res) const;
-    // render_path=subpass (depth_prepass_subpass.cpp): subpass 0 of kSubpassGroup. Attachment
-    // 0 is the light (res.hdr, or res.msaa_hdr), cleared; normals and roughness are
-    // multisampled at msaa > 1 and never resolved (forward reads every sample as an input
-    // attachment); the depth resolves after the render pass (depth_resolve).
-    Msaa declare_subpass(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res) const;
+    // The pass's attachments and reads (depth_prepass_attachments.cpp). Dynamic path: depth,
+    // normals and roughness (resolved inline at msaa > 1), surface_id. render_path=subpass
+    // (seed 002's subpass 0): the light first (res.hdr, or res.msaa_hdr), cleared; normals and
+    // roughness multisampled at msaa > 1 and never resolved (forward reads every sample as an
+    // input attachment); the depth resolves after the render pass (depth_resolve).
+    void declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res);
+    void declare_tiled(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res);
     // The frame's pipelines: the opaque and alpha-tested variants (or the one unsplit one).
     Draw make_draw(const Variant& opaque, const Variant& tested, bool split);
     VkDescriptorSet discard_set(graph::PassContext& ctx, const FrameInputs& in,
                                 graph::BufferHandle buffer);
-    void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
-                const Msaa& msaa, Draw draw, graph::BufferHandle discards);
-    void begin(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
-               const Msaa& msaa) const;
-    // The colour attachments begin() renders into (none in prepass_mode=depth without a
-    // diagnostic), in color_formats() order.
-    std::vector<VkRenderingAttachmentInfo> color_attachments(graph::PassContext& ctx,
-                                                             const FrameInputs& in,
-                                                             const FrameResources& res,
-                                                             const Msaa& msaa) const;
+    void record(graph::PassContext& ctx, const FrameInputs& in, Draw draw,
+                graph::BufferHandle discards);
     // The pass's draws with `draw`'s pipelines (the frame's or the replay's), logged to `log`.
-    void draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw,
-                    PipelineUses& uses, DrawLog* log);
+    void draw_scene(graph::PassContext& ctx, const FrameInputs& in, const Draw& draw, DrawLog* log);
     // Pixel history: the replay of draw_scene() with the instrumented twins of `draw`'s.
     void add_history(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res,
-                     const Variant& opaque, const Variant& tested);
+                     const Draw& draw);
 
     PassServices services_;
     // This frame's options (configure).
     bool masked_split_ = true, prepass_sort_ = true, count_discards_ = false;
     vk::DescriptorSetLayout discard_layout_;
-    vk::DescriptorSetLayout count_layout_;
+    GeometryInstrument instrument_;
     vk::PipelineLayout layout_;
-    FrameDescriptorPool count_sets_;
     FrameDescriptorPool discard_sets_;
-    RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
     graph::BufferHandle discards_;  // this frame's discard counters (count_discards=on)
-    PipelineUses uses_;             // this frame's
-    DrawQueries queries_;           // count_draws: samples passed per draw
-    PixelHistoryReplay history_;
-    std::vector<HistoryPipeline> history_pipelines_;  // this frame's real ones, by log tag
 };
 
 }  // namespace ds::passes

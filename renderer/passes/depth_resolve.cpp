@@ -18,7 +18,9 @@ DepthResolvePass::DepthResolvePass(const PassServices& services, After after)
       nearest_(vk::nearest_clamp_sampler(services.context, "depth resolve nearest")),
       sets_(services.context, 1, kDepthResolvePoolSizes, "depth resolve sets"),
       pipelines_([this](const Variant& v) { return compile(v); },
-                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
+                 [this](const Variant& v, const ShaderStages& s, const graph::RenderTarget& t) {
+                     return create(v, s, t);
+                 }) {
     const VkDescriptorSetLayoutBinding binding = vk::layout_binding(
         0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT);
     set_layout_ = vk::DescriptorSetLayout(services.context, {&binding, 1}, "depth resolve set");
@@ -31,13 +33,12 @@ ShaderStages DepthResolvePass::compile(const Variant&) const {
     return compile_fullscreen(services_.compiler, "depth_resolve.frag");
 }
 
-vk::Pipeline DepthResolvePass::create(const Variant& v, const ShaderStages& s) const {
-    return create_fullscreen(services_.context,
-                             {.fragment = "depth_resolve.frag",
-                              .depth = v.depth,
-                              .layout = layout_.handle(),
-                              .name = "depth resolve"},
-                             s);
+vk::Pipeline DepthResolvePass::create(const Variant&, const ShaderStages& s,
+                                      const graph::RenderTarget& target) const {
+    return create_fullscreen(
+        services_.context,
+        {.fragment = "depth_resolve.frag", .layout = layout_.handle(), .name = "depth resolve"}, s,
+        target);
 }
 
 void DepthResolvePass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
@@ -46,28 +47,31 @@ void DepthResolvePass::add(graph::RenderGraph& graph, const FrameInputs& in, Fra
     // plans no depth resolve.
     if (!o.msaa() || native_depth_resolve(services_.context.report(), o)) return;
     if ((o.prepass && !o.subpass) != (after_ == After::Prepass)) return;
-    const graph::ImageHandle msaa_depth = res.msaa_depth, depth = res.depth;
-    graph.add_pass(name(), [&](graph::PassBuilder& b) {
-        b.read(res.frame_uniforms, graph::Access::UniformRead,
-               graph::Shader::Vertex | graph::Shader::Fragment);
-        b.read(msaa_depth, graph::Access::Sampled);
-        b.write(depth, graph::Access::DepthAttachment);
-        return [this, in, msaa_depth, depth](graph::PassContext& ctx) {
-            record(ctx, in, msaa_depth, depth);
-        };
-    });
+    struct Data {
+        FrameInputs in;
+        graph::ImageHandle msaa_depth;
+    };
+    graph.add_pass<Data>(
+        name(),
+        [&](graph::PassBuilder& b, Data& d) {
+            b.read(res.frame_uniforms, graph::Access::UniformRead,
+                   graph::Shader::Vertex | graph::Shader::Fragment);
+            d = {in, b.read(res.msaa_depth, graph::Access::Sampled)};
+            declare_fullscreen_depth(b, res.depth);
+        },
+        [this](graph::PassContext& ctx, const Data& d) { record(ctx, d.in, d.msaa_depth); });
 }
 
 void DepthResolvePass::record(graph::PassContext& ctx, const FrameInputs& in,
-                              graph::ImageHandle msaa_depth, graph::ImageHandle depth) {
-    const VkPipeline pipeline = pipelines_.get({.depth = in.options.depth_format});
+                              graph::ImageHandle msaa_depth) {
+    const VkPipeline pipeline = pipelines_.get({}, ctx.target());
     const VkDescriptorSet set = sets_.allocate(in.frame_number, set_layout_.handle());
     vk::DescriptorWriter writer;
     writer.image(0, ctx.view(msaa_depth), nearest_.handle(), ctx.layout(msaa_depth));
     writer.update(services_.context.device(), set);
     const VkDescriptorSet sets[] = {in.frame_set, set};
     const int32_t samples = int32_t(in.options.samples);
-    draw_fullscreen_depth(ctx, depth, pipeline, layout_.handle(), sets,
+    draw_fullscreen_depth(ctx.cmd(), pipeline, layout_.handle(), sets,
                           std::as_bytes(std::span(&samples, 1)));
 }
 

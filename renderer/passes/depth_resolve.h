@@ -38,12 +38,12 @@ class DepthResolvePass final : public FramePass {
 
   private:
     // The single-sample depth it writes: the frame's depth_format.
-    using Variant = DepthFormatVariant;
+    using Variant = NoVariant;
 
     ShaderStages compile(const Variant& variant) const;
-    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
-    void record(graph::PassContext& ctx, const FrameInputs& in, graph::ImageHandle msaa_depth,
-                graph::ImageHandle depth);
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages,
+                        const graph::RenderTarget& target) const;
+    void record(graph::PassContext& ctx, const FrameInputs& in, graph::ImageHandle msaa_depth);
 
     PassServices services_;
     After after_;

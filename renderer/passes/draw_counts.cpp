@@ -6,9 +6,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/common/error.h"
 #include "renderer/common/surface_json.h"
 #include "renderer/gpu_scene/gpu_scene.h"
 #include "renderer/readback/host_readback.h"
+#include "renderer/vk/capabilities.h"
 
 namespace ds::passes {
 namespace {

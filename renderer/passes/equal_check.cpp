@@ -93,9 +93,12 @@ void EqualCheckPass::add(graph::RenderGraph& graph, const FrameInputs& in, Frame
                                                 kResultHeaderBytes);
     Bound bound{res.forward_counts.shaded, res.depth, res.surface_id, {}, result_};
     const float far_depth = in.options.far_depth();
-    graph.add_pass(
-        name(),
-        [&](graph::PassBuilder& b) {
+    struct Data {
+        Bound bound;
+    };
+    graph.add_pass<Data>(
+        {name(), graph::PassKind::Compute},
+        [&](graph::PassBuilder& b, Data& d) {
             bound.marks = b.create_image("equal_check", {.format = VK_FORMAT_R32_UINT,
                                                          .size = graph::ImageSize::relative(1.0f),
                                                          .semantic = graph::Semantic::Count});
@@ -105,11 +108,11 @@ void EqualCheckPass::add(graph::RenderGraph& graph, const FrameInputs& in, Frame
             b.read(bound.surfaces, graph::Access::Sampled);
             b.write(bound.marks, graph::Access::StorageWrite);
             b.write(bound.result, graph::Access::StorageReadWrite);
-            return [this, bound, far_depth](graph::PassContext& ctx) {
-                record(ctx, bound, far_depth);
-            };
+            d = {bound};
         },
-        graph::PassKind::Compute);
+        [this, far_depth](graph::PassContext& ctx, const Data& d) {
+            record(ctx, d.bound, far_depth);
+        });
 }
 
 void EqualCheckPass::record(graph::PassContext& ctx, const Bound& bound, float far_depth) {

@@ -32,14 +32,11 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/graph/graph.h"
-#include "renderer/passes/draw_queries.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
+#include "renderer/passes/geometry_instrument.h"
 #include "renderer/passes/lighting_set.h"
 #include "renderer/passes/pass_util.h"
-#include "renderer/passes/pipeline_use.h"
-#include "renderer/passes/pixel_history.h"
-#include "renderer/passes/rasterized_count.h"
 #include "renderer/settings/knob.h"
 #include "renderer/vk/descriptors.h"
 #include "renderer/vk/destroy_list.h"
@@ -76,28 +73,26 @@ class ForwardPass final : public FramePass {
         bool alpha_to_coverage = false;  // MASK pipelines, alpha_to_coverage=on
         bool history = false;            // PIXEL_HISTORY=1: the replay's, no attachments
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-        VkFormat depth = VK_FORMAT_UNDEFINED;  // the frame's depth_format
-        bool count_draws = false;              // COUNT_DRAWS=1 (with counting)
+        bool count_draws = false;  // COUNT_DRAWS=1 (with counting)
         // history only: the replay reads the depth the prepass left (PIXEL_HISTORY_DEPTH), in
         // either prepass_mode (prepass_inputs is gbuffer's only).
         bool after_prepass = false;
-        // render_path=subpass: the render pass and subpass it draws in (null: its own); with
-        // gbuffer_inputs, normals and roughness come from input attachments
-        // (SUBPASS_INPUTS=samples), set 4.
-        VkRenderPass render_pass = VK_NULL_HANDLE;
-        uint32_t subpass = 0;
+        // render_path=subpass with the G-buffer: normals and roughness come from input
+        // attachments (SUBPASS_INPUTS=samples), set 4.
         bool gbuffer_inputs = false;
         bool operator==(const Variant&) const = default;
         size_t hash() const {
             return hash_fields(prepass_inputs, alpha_mask, non_invariant, counting, sample_shading,
-                               alpha_to_coverage, history, int(samples), int(depth), count_draws,
-                               after_prepass, render_pass, subpass, gbuffer_inputs);
+                               alpha_to_coverage, history, int(samples), count_draws, after_prepass,
+                               gbuffer_inputs);
         }
     };
 
+    // The pipelines one recording draws with (made for its target): opaque, then MASK (with
+    // the prepass and EQUAL the opaque one draws MASK too).
     struct Draw {
-        VkPipeline opaque = VK_NULL_HANDLE;  // with the prepass and EQUAL: opaque and MASK
-        VkPipeline mask = VK_NULL_HANDLE;    // otherwise: MASK, with its discard
+        Variant opaque, mask;
+        bool with_mask = true;
         PipelineInfo opaque_info, mask_info;
         LightingInputs lighting;
         // What the sets are bound with (null: the pass's; the replay binds with its own, which
@@ -106,27 +101,22 @@ class ForwardPass final : public FramePass {
     };
 
     ShaderStages compile(const Variant& variant) const;
-    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages,
+                        const graph::RenderTarget& target) const;
     static std::string pipeline_name(const Variant& variant);
+    // Its attachments and reads. render_path=subpass (seed 002's subpass 1): the light the
+    // prepass cleared, the depth read-only, normals and roughness as input attachments.
     void declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res,
-                 const LightingInputs& lighting) const;
+                 const LightingInputs& lighting);
     void record(graph::PassContext& ctx, const FrameInputs& in, const FrameResources& res,
                 const Draw& draw);
-    void begin(graph::PassContext& ctx, const FrameOptions& o, const FrameResources& res) const;
     // Binds the sets and draws opaque, then MASK, with `draw`'s pipelines, logged to `log`.
-    void draw_scene(VkCommandBuffer cmd, const FrameInputs& in, const Draw& draw,
-                    VkDescriptorSet lighting, VkDescriptorSet counts, PipelineUses& uses,
-                    DrawLog* log);
+    void draw_scene(graph::PassContext& ctx, const FrameInputs& in, const Draw& draw,
+                    VkDescriptorSet lighting, DrawLog* log);
     // Pixel history: the replay of draw_scene() with the instrumented twins of `draw`'s.
     void add_history(graph::RenderGraph& graph, const FrameInputs& in, const FrameResources& res,
-                     const Variant& opaque, const Variant& mask, const Draw& draw);
+                     const Draw& draw);
     bool native_resolve(const FrameOptions& o) const;
-    // The frame's pipelines for `opaque` and `mask` (mask: none where EQUAL does its work).
-    Draw make_draw(const Variant& opaque, const Variant& mask, bool with_mask);
-    // render_path=subpass (forward_subpass.cpp): subpass 1 of kSubpassGroup, reading the light
-    // the prepass cleared, its depth read-only, its normals and roughness as input attachments.
-    void declare_subpass(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res,
-                         const LightingInputs& lighting) const;
     // Set 4 of the subpass pipelines: the input attachments, written for this frame.
     VkDescriptorSet input_set(graph::PassContext& ctx, const FrameInputs& in,
                               const FrameResources& res);
@@ -134,19 +124,13 @@ class ForwardPass final : public FramePass {
     PassServices services_;
     bool invariant_ = true;  // this frame's (configure)
     LightingSet lighting_;
-    vk::DescriptorSetLayout count_layout_;
+    // count_draws with prepass=off: forward decides visibility, so its draws are queried.
+    GeometryInstrument instrument_;
     vk::PipelineLayout layout_;
     vk::DescriptorSetLayout input_layout_;  // set 4 of subpass_layout_
     vk::PipelineLayout subpass_layout_;     // layout_'s sets and the input attachments
-    FrameDescriptorPool count_sets_;
     FrameDescriptorPool input_sets_;
-    RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
-    PipelineUses uses_;  // this frame's
-    // count_draws with prepass=off: forward decides visibility, so its draws are queried.
-    DrawQueries queries_;
-    PixelHistoryReplay history_;
-    std::vector<HistoryPipeline> history_pipelines_;  // this frame's real ones, by log tag
 };
 
 }  // namespace ds::passes

@@ -186,7 +186,7 @@ std::vector<graph::ImageHandle> HizPass::add_pyramid(graph::RenderGraph& graph,
         std::vector<graph::ImageHandle> levels;
     };
     const Data& data = graph.add_pass<Data>(
-        name(),
+        {name(), graph::PassKind::Compute},
         [&](graph::PassBuilder& b, Data& d) {
             b.read(res.frame_uniforms, Access::UniformRead);
             d.source = b.read(source, Access::Sampled);
@@ -216,8 +216,7 @@ std::vector<graph::ImageHandle> HizPass::add_pyramid(graph::RenderGraph& graph,
                 reduce_.dispatch(ctx.cmd(), frame_set, frame, images, &samples,
                                  ctx.extent(d.levels[k]), uint32_t(k - 1));
             }
-        },
-        graph::PassKind::Compute);
+        });
     return data.levels;
 }
 
@@ -228,27 +227,27 @@ void HizPass::add_test(graph::RenderGraph& graph, const FrameInputs& in, const F
         graph, kVerdictBuffer, VkDeviceSize(instances) * sizeof(HizVerdictRecord));
     verdicts_ = out;
     test_pipeline_.get(test_layout_.handle());  // built now, not while the frame records
-    graph.add_pass(
-        "hiz_test",
-        [&](graph::PassBuilder& b) {
+    struct Data {};
+    graph.add_pass<Data>(
+        {"hiz_test", graph::PassKind::Compute},
+        [&](graph::PassBuilder& b, Data&) {
             b.read(res.frame_uniforms, Access::UniformRead);
             for (graph::ImageHandle level : levels) b.read(level, Access::Sampled);
             b.write(out, Access::StorageWrite);
-            return [this, levels, out, scene = in.scene, frame_set = in.frame_set,
-                    instances](graph::PassContext& ctx) {
-                vk::DescriptorWriter writer;
-                writer.buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, scene->instance_bounds_buffer())
-                    .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ctx.buffer(out));
-                for (uint32_t k = 0; k < kMaxLevels; ++k) {
-                    const graph::ImageHandle level = levels[std::min<size_t>(k, levels.size() - 1)];
-                    writer.image(kFirstLevelBinding + k, ctx.view(level), nearest_.handle(),
-                                 ctx.layout(level));
-                }
-                writer.update(services_.context.device(), test_set_);
-                record_test(ctx, frame_set, instances, uint32_t(levels.size()));
-            };
         },
-        graph::PassKind::Compute);
+        [this, levels, out, scene = in.scene, frame_set = in.frame_set, instances](
+            graph::PassContext& ctx, const Data&) {
+            vk::DescriptorWriter writer;
+            writer.buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, scene->instance_bounds_buffer())
+                .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, ctx.buffer(out));
+            for (uint32_t k = 0; k < kMaxLevels; ++k) {
+                const graph::ImageHandle level = levels[std::min<size_t>(k, levels.size() - 1)];
+                writer.image(kFirstLevelBinding + k, ctx.view(level), nearest_.handle(),
+                             ctx.layout(level));
+            }
+            writer.update(services_.context.device(), test_set_);
+            record_test(ctx, frame_set, instances, uint32_t(levels.size()));
+        });
 }
 
 void HizPass::record_test(graph::PassContext& ctx, VkDescriptorSet frame_set, uint32_t instances,

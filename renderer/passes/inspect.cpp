@@ -88,9 +88,10 @@ void InspectPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
     if (reads_.empty()) return;
     // Built here, not while recording: a shader error surfaces before the frame is recorded.
     for (const Read& r : reads_) kernel(format::is_integer(r.info.format), r.info.samples > 1);
-    graph.add_pass(
-        name(),
-        [&](graph::PassBuilder& b) {
+    struct Data {};
+    graph.add_pass<Data>(
+        {name(), graph::PassKind::Compute, role()},
+        [&](graph::PassBuilder& b, Data&) {
             for (size_t i = 0; i < reads_.size(); ++i) {
                 Read& r = reads_[i];
                 r.texels = b.create_image(
@@ -100,21 +101,19 @@ void InspectPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
                 b.read(r.source, graph::Access::Sampled);  // twice is one access
                 b.write(r.texels, graph::Access::StorageWrite);
             }
-            return
-                [this, frame_set = in.frame_set, frame = in.frame_number](graph::PassContext& ctx) {
-                    for (uint32_t i = 0; i < reads_.size(); ++i) {
-                        const Read& r = reads_[i];
-                        ComputeKernel& k =
-                            kernel(format::is_integer(r.info.format), r.info.samples > 1);
-                        const BoundImage images[] = {{ctx.view(r.source), ctx.layout(r.source)},
-                                                     {ctx.view(r.texels), ctx.layout(r.texels)}};
-                        const int32_t sample_index = int32_t(r.info.sample);
-                        k.dispatch(ctx.cmd(), frame_set, frame, images, &sample_index,
-                                   {r.info.width, r.info.height}, /*slot=*/i);
-                    }
-                };
         },
-        graph::PassKind::Compute);
+        [this, frame_set = in.frame_set, frame = in.frame_number](graph::PassContext& ctx,
+                                                                  const Data&) {
+            for (uint32_t i = 0; i < reads_.size(); ++i) {
+                const Read& r = reads_[i];
+                ComputeKernel& k = kernel(format::is_integer(r.info.format), r.info.samples > 1);
+                const BoundImage images[] = {{ctx.view(r.source), ctx.layout(r.source)},
+                                             {ctx.view(r.texels), ctx.layout(r.texels)}};
+                const int32_t sample_index = int32_t(r.info.sample);
+                k.dispatch(ctx.cmd(), frame_set, frame, images, &sample_index,
+                           {r.info.width, r.info.height}, /*slot=*/i);
+            }
+        });
     std::vector<graph::ImageHandle> copies;
     for (const Read& r : reads_) copies.push_back(r.texels);
     services_.readback.add_copy_pass(graph, "readback_inspect", std::move(copies));

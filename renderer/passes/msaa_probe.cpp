@@ -49,17 +49,17 @@ void MsaaProbePass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameR
     out_ = out;
     const graph::ImageHandle depth = res.msaa_depth, color = res.msaa_hdr;
     const int32_t samples = int32_t(in.options.samples);
-    graph.add_pass(
-        name(),
-        [&](graph::PassBuilder& b) {
+    struct Data {};
+    graph.add_pass<Data>(
+        {name(), graph::PassKind::Compute, role()},
+        [&](graph::PassBuilder& b, Data&) {
             b.read(depth, graph::Access::Sampled);
             b.read(color, graph::Access::Sampled);
             b.write(out, graph::Access::StorageReadWrite);
-            return [this, depth, color, out, samples, copy_depth](graph::PassContext& ctx) {
-                record(ctx, {depth, color, out}, samples, copy_depth);
-            };
         },
-        graph::PassKind::Compute);
+        [this, depth, color, out, samples, copy_depth](graph::PassContext& ctx, const Data&) {
+            record(ctx, {depth, color, out}, samples, copy_depth);
+        });
 }
 
 void MsaaProbePass::record(graph::PassContext& ctx, const Bound& bound, int32_t samples,

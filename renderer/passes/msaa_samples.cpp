@@ -72,16 +72,16 @@ void MsaaSamplesPass::add(graph::RenderGraph& graph, const FrameInputs& in, Fram
         VkDeviceSize(rect_.width) * rect_.height * samples_ * sizeof(SampleRecord);
     bound.out = services_.readback.import_storage(graph, kSamplesBuffer, bytes);
     out_ = bound.out;
-    graph.add_pass(
-        name(),
-        [&](graph::PassBuilder& b) {
+    struct Data {};
+    graph.add_pass<Data>(
+        {name(), graph::PassKind::Compute, role()},
+        [&](graph::PassBuilder& b, Data&) {
             b.read(bound.depth, graph::Access::Sampled);
             b.read(bound.color, graph::Access::Sampled);
             if (bound.surface.valid()) b.read(bound.surface, graph::Access::Sampled);
             b.write(bound.out, graph::Access::StorageWrite);
-            return [this, bound, multi](graph::PassContext& ctx) { record(ctx, bound, multi); };
         },
-        graph::PassKind::Compute);
+        [this, bound, multi](graph::PassContext& ctx, const Data&) { record(ctx, bound, multi); });
 }
 
 void MsaaSamplesPass::record(graph::PassContext& ctx, const Bound& bound, bool multisampled) {

@@ -28,7 +28,7 @@ void NormalsFromDepthPass::add(graph::RenderGraph& graph, const FrameInputs& in,
         graph::ImageHandle depth, normals;
     };
     const Data& data = graph.add_pass<Data>(
-        kName,
+        {kName, graph::PassKind::Compute},
         [&](graph::PassBuilder& b, Data& d) {
             d.normals = b.create_image(kImage, {.format = kFormat,
                                                 .size = graph::ImageSize::relative(1.0f),
@@ -42,8 +42,7 @@ void NormalsFromDepthPass::add(graph::RenderGraph& graph, const FrameInputs& in,
             const BoundImage images[] = {{ctx.view(d.depth), ctx.layout(d.depth)},
                                          {ctx.view(d.normals), ctx.layout(d.normals)}};
             kernel_.dispatch(ctx.cmd(), frame_set, frame, images, nullptr, ctx.extent(d.normals));
-        },
-        graph::PassKind::Compute);
+        });
     res.normals = data.normals;
 }
 

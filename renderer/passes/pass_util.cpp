@@ -33,71 +33,23 @@ ShaderStages compile_fullscreen(shader::Compiler& compiler, const char* fragment
             compiler.compile(fragment, shader::Stage::Fragment).spirv};
 }
 
+void apply_target(vk::GraphicsPipelineBuilder& b, const graph::RenderTarget& target,
+                  vk::Blend blend) {
+    for (size_t i = 0; i < target.colors.size(); ++i)
+        b.color_attachment(target.colors[i], i == 0 ? blend : vk::Blend::None);
+    if (target.depth != VK_FORMAT_UNDEFINED) b.depth_attachment(target.depth);
+    if (target.render_pass) b.render_pass(target.render_pass, target.subpass);
+}
+
 vk::Pipeline create_fullscreen(vk::Context& context, const FullscreenPipeline& p,
-                               const ShaderStages& stages) {
+                               const ShaderStages& stages, const graph::RenderTarget& target) {
     vk::GraphicsPipelineBuilder b;
     b.shader(VK_SHADER_STAGE_VERTEX_BIT, stages.vert)
         .shader(VK_SHADER_STAGE_FRAGMENT_BIT, stages.frag)
         .samples(p.samples)
         .layout(p.layout);
-    if (p.color != VK_FORMAT_UNDEFINED) b.color_attachment(p.color);
-    if (p.depth != VK_FORMAT_UNDEFINED) b.depth_attachment(p.depth);
-    if (p.render_pass) b.render_pass(p.render_pass, p.subpass);
+    apply_target(b, target);
     return b.build(context, p.name);
-}
-
-VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout,
-                                     VkAttachmentLoadOp load, VkAttachmentStoreOp store) {
-    auto a = vk::make<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-    a.imageView = view;
-    a.imageLayout = layout;
-    a.loadOp = load;
-    a.storeOp = store;
-    return a;
-}
-
-VkRenderingAttachmentInfo color_attachment(VkImageView view, VkAttachmentLoadOp load,
-                                           std::array<float, 4> clear) {
-    VkRenderingAttachmentInfo a = attachment(view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, load,
-                                             VK_ATTACHMENT_STORE_OP_STORE);
-    for (size_t i = 0; i < 4; ++i) a.clearValue.color.float32[i] = clear[i];
-    return a;
-}
-
-VkRenderingAttachmentInfo resolving_color_attachment(VkImageView msaa, VkImageView resolve,
-                                                     VkAttachmentLoadOp load,
-                                                     VkAttachmentStoreOp store,
-                                                     std::array<float, 4> clear) {
-    VkRenderingAttachmentInfo a = color_attachment(msaa, load, clear);
-    a.storeOp = store;
-    a.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
-    a.resolveImageView = resolve;
-    a.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    return a;
-}
-
-VkRenderingAttachmentInfo depth_attachment(VkImageView view, VkImageLayout layout,
-                                           VkAttachmentLoadOp load, VkAttachmentStoreOp store,
-                                           float clear_depth) {
-    VkRenderingAttachmentInfo a = attachment(view, layout, load, store);
-    a.clearValue.depthStencil = {clear_depth, 0};
-    return a;
-}
-
-void begin_rendering(VkCommandBuffer cmd, VkExtent2D extent,
-                     std::span<const VkRenderingAttachmentInfo> colors,
-                     const VkRenderingAttachmentInfo* depth) {
-    auto info = vk::make<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-    info.renderArea = {{0, 0}, extent};
-    info.layerCount = 1;
-    info.colorAttachmentCount = uint32_t(colors.size());
-    info.pColorAttachments = colors.data();
-    info.pDepthAttachment = depth;
-    vk::fn().cmd_begin_rendering(cmd, &info);
-    const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, extent};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
 void set_depth_state(VkCommandBuffer cmd, bool test, bool write, VkCompareOp compare) {
@@ -106,15 +58,12 @@ void set_depth_state(VkCommandBuffer cmd, bool test, bool write, VkCompareOp com
     vk::fn().cmd_set_depth_compare_op(cmd, compare);
 }
 
-void draw_fullscreen_depth(graph::PassContext& ctx, graph::ImageHandle target, VkPipeline pipeline,
-                           VkPipelineLayout layout, std::span<const VkDescriptorSet> sets,
-                           std::span<const std::byte> push) {
-    VkCommandBuffer cmd = ctx.cmd();
-    // Every pixel is written, so the old contents are not needed.
-    const VkRenderingAttachmentInfo depth =
-        depth_attachment(ctx.view(target), ctx.layout(target), VK_ATTACHMENT_LOAD_OP_DONT_CARE,
-                         VK_ATTACHMENT_STORE_OP_STORE);
-    begin_rendering(cmd, ctx.extent(target), {}, &depth);
+void declare_fullscreen_depth(graph::PassBuilder& b, graph::ImageHandle target) {
+    b.depth(target, {.load = graph::Load::DontCare});  // every pixel is written
+}
+
+void draw_fullscreen_depth(VkCommandBuffer cmd, VkPipeline pipeline, VkPipelineLayout layout,
+                           std::span<const VkDescriptorSet> sets, std::span<const std::byte> push) {
     // gl_FragDepth is only written with the test on: ALWAYS passes.
     set_depth_state(cmd, /*test=*/true, /*write=*/true, VK_COMPARE_OP_ALWAYS);
     vk::fn().cmd_set_cull_mode(cmd, VK_CULL_MODE_NONE);
@@ -124,36 +73,16 @@ void draw_fullscreen_depth(graph::PassContext& ctx, graph::ImageHandle target, V
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, uint32_t(push.size()),
                        push.data());
     vkCmdDraw(cmd, 3, 1, 0, 0);
-    vk::fn().cmd_end_rendering(cmd);
 }
 
 void declare_hdr_over_depth(graph::PassBuilder& b, FrameResources& res, bool msaa, bool resolve) {
-    if (!msaa) {
-        b.read(res.depth, graph::Access::DepthReadOnly);
-        b.write(res.hdr, graph::Access::ColorAttachment);
-        return;
-    }
-    b.read(res.msaa_depth, graph::Access::DepthReadOnly);
-    b.write(res.msaa_hdr, graph::Access::ColorAttachment);
-    if (!resolve) return;
+    b.depth(msaa ? res.msaa_depth : res.depth, {.read_only = true});
+    b.color(msaa ? res.msaa_hdr : res.hdr);
+    if (!msaa || !resolve) return;
     res.hdr = b.create_image("hdr", {.format = kHdrFormat,
                                      .size = graph::ImageSize::relative(1.0f),
                                      .semantic = graph::Semantic::HdrColor});
-    b.write(res.hdr, graph::Access::ResolveDst);
-}
-
-void begin_hdr_over_depth(graph::PassContext& ctx, const FrameResources& res, bool msaa,
-                          bool resolve) {
-    const VkAttachmentLoadOp load = VK_ATTACHMENT_LOAD_OP_LOAD;
-    const VkRenderingAttachmentInfo color =
-        !msaa     ? color_attachment(ctx.view(res.hdr), load)
-        : resolve ? resolving_color_attachment(ctx.view(res.msaa_hdr), ctx.view(res.hdr), load,
-                                               VK_ATTACHMENT_STORE_OP_STORE)
-                  : color_attachment(ctx.view(res.msaa_hdr), load);
-    const graph::ImageHandle depth_image = msaa ? res.msaa_depth : res.depth;
-    const VkRenderingAttachmentInfo depth = depth_attachment(
-        ctx.view(depth_image), ctx.layout(depth_image), load, VK_ATTACHMENT_STORE_OP_NONE);
-    begin_rendering(ctx.cmd(), ctx.extent(msaa ? res.msaa_hdr : res.hdr), {&color, 1}, &depth);
+    b.resolve(res.msaa_hdr, res.hdr);
 }
 
 vk::DescriptorSetLayout create_count_set_layout(vk::Context& context) {

@@ -48,55 +48,37 @@ class FrameDescriptorPool {
     std::array<uint64_t, vk::FrameRing::kFramesInFlight> frames_;
 };
 
-VkRenderingAttachmentInfo attachment(VkImageView view, VkImageLayout layout,
-                                     VkAttachmentLoadOp load, VkAttachmentStoreOp store);
-VkRenderingAttachmentInfo color_attachment(VkImageView view, VkAttachmentLoadOp load,
-                                           std::array<float, 4> clear = {});
-VkRenderingAttachmentInfo depth_attachment(VkImageView view, VkImageLayout layout,
-                                           VkAttachmentLoadOp load, VkAttachmentStoreOp store,
-                                           float clear_depth = 0.0f);
-// Begins dynamic rendering over the whole `extent` and sets viewport and scissor to it.
-void begin_rendering(VkCommandBuffer cmd, VkExtent2D extent,
-                     std::span<const VkRenderingAttachmentInfo> colors,
-                     const VkRenderingAttachmentInfo* depth);
+// A pipeline made for `target` (graph::PassContext::target()): its colour slots (slot 0
+// blended with `blend`), its depth format, and inside a subpass group the render pass and
+// subpass.
+void apply_target(vk::GraphicsPipelineBuilder& builder, const graph::RenderTarget& target,
+                  vk::Blend blend = vk::Blend::None);
 // The dynamic depth state every pipeline declares (pipeline.h), in one call.
 void set_depth_state(VkCommandBuffer cmd, bool test, bool write, VkCompareOp compare);
 
 // A fullscreen triangle (shaders/fullscreen.vert) with `fragment`: tonemap, skybox, depth
-// resolve. A colour and/or a depth attachment, at `samples`.
+// resolve, made for the target of the pass that draws it, at `samples`.
 struct FullscreenPipeline {
     const char* fragment = nullptr;  // shader path under the shader root
-    VkFormat color = VK_FORMAT_UNDEFINED;
-    VkFormat depth = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     VkPipelineLayout layout = VK_NULL_HANDLE;
     const char* name = "";
-    VkRenderPass render_pass = VK_NULL_HANDLE;  // a subpass of it (render_path=subpass)
-    uint32_t subpass = 0;
 };
 ShaderStages compile_fullscreen(shader::Compiler& compiler, const char* fragment);
 vk::Pipeline create_fullscreen(vk::Context& context, const FullscreenPipeline& pipeline,
-                               const ShaderStages& stages);
+                               const ShaderStages& stages, const graph::RenderTarget& target);
 
-// Records a fullscreen triangle whose fragment shader writes gl_FragDepth into every pixel of
-// `target` (loaded DONT_CARE, stored; test ALWAYS, writes on): depth_resolve, zfight_bound.
-void draw_fullscreen_depth(graph::PassContext& ctx, graph::ImageHandle target, VkPipeline pipeline,
-                           VkPipelineLayout layout, std::span<const VkDescriptorSet> sets,
-                           std::span<const std::byte> push);
-
-// A colour attachment that resolves (AVERAGE) into `resolve` at the end of the rendering.
-VkRenderingAttachmentInfo resolving_color_attachment(VkImageView msaa, VkImageView resolve,
-                                                     VkAttachmentLoadOp load,
-                                                     VkAttachmentStoreOp store,
-                                                     std::array<float, 4> clear = {});
+// Declares `target` the depth attachment of a fullscreen triangle whose fragment shader writes
+// gl_FragDepth into every pixel (nothing loaded): depth_resolve, zfight_bound.
+void declare_fullscreen_depth(graph::PassBuilder& b, graph::ImageHandle target);
+// Records that triangle (test ALWAYS, writes on) with `sets` bound from set 0 and `push`.
+void draw_fullscreen_depth(VkCommandBuffer cmd, VkPipeline pipeline, VkPipelineLayout layout,
+                           std::span<const VkDescriptorSet> sets, std::span<const std::byte> push);
 
 // Drawing over forward's HDR image against the scene depth, read-only (decals, transparent).
 // msaa: into res.msaa_hdr against res.msaa_depth; with `resolve` the rendering ends by
 // resolving it (AVERAGE) into res.hdr, which declare_hdr_over_depth then creates.
 void declare_hdr_over_depth(graph::PassBuilder& b, FrameResources& res, bool msaa, bool resolve);
-// Begins that rendering: colour loaded and stored, depth loaded and not stored.
-void begin_hdr_over_depth(graph::PassContext& ctx, const FrameResources& res, bool msaa,
-                          bool resolve);
 
 // A read-back compute pass's one descriptor set (msaa_probe, msaa_samples): `samplers`
 // combined image samplers at bindings 0.., a storage buffer after them, and a pipeline layout

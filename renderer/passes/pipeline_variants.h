@@ -1,12 +1,13 @@
 #pragma once
 // A pass's pipelines by variant: a small value type per pass (its defines and state, with ==
-// and hash()), each pipeline built on first use, so a variant no frame asks for (the counting
-// ones, invariant=off, another sample count or depth format) costs nothing, and switching back
-// costs nothing after the first frame of each. rebuild() is fail-safe: every stage of every
-// built variant compiles first (a shader::ShaderError leaves the current pipelines in place),
-// then the pipelines are created, and only then are the old ones retired.
-// Geometry passes also describe each variant once, when it is built (PipelineInfo: its name
-// and early-Z verdict from the SPIR-V it compiled), so a frame reports them without looking.
+// and hash()), compiled once, each pipeline built on first use for the target it draws in
+// (graph::RenderTarget: the formats its rendering declared, or the render pass's subpass), so a
+// variant no frame asks for (the counting ones, invariant=off, another sample count or depth
+// format) costs nothing, and switching back costs nothing after the first frame of each. rebuild()
+// is fail-safe: every stage of every built variant compiles first (a shader::ShaderError leaves the
+// current pipelines in place), then the pipelines are created, and only then are the old ones
+// retired. Geometry passes also describe each variant once, when it is built (PipelineInfo: its
+// name and early-Z verdict from the SPIR-V it compiled), so a frame reports them without looking.
 #include <concepts>
 #include <cstddef>
 #include <functional>
@@ -17,6 +18,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "renderer/graph/rendering.h"
 #include "renderer/vk/destroy_list.h"
 #include "renderer/vk/pipeline.h"
 
@@ -66,56 +68,77 @@ template <PipelineKey Key>
 class PipelineVariants {
   public:
     using Compile = std::function<ShaderStages(const Key&)>;
-    using Create = std::function<vk::Pipeline(const Key&, const ShaderStages&)>;
+    // `target`: what the pass renders into (graph::PassContext::target()); empty for compute
+    // and for pipelines a pass makes without a rendering of its own.
+    using Create =
+        std::function<vk::Pipeline(const Key&, const ShaderStages&, const graph::RenderTarget&)>;
     using Describe = std::function<PipelineInfo(const Key&, const ShaderStages&)>;
 
-    // `describe` (geometry passes) runs once per built variant, on the stages it was built from.
+    // `describe` (geometry passes) runs once per variant, on the stages it compiled.
     PipelineVariants(Compile compile, Create create, Describe describe = {})
         : compile_(std::move(compile)),
           create_(std::move(create)),
           describe_(std::move(describe)) {}
 
-    // Throws shader::ShaderError / ds::Error on the first build of a variant.
-    VkPipeline get(const Key& key) { return entry(key).pipeline.handle(); }
-    // The variant's description (empty without `describe`); builds it like get().
-    const PipelineInfo& info(const Key& key) { return entry(key).info; }
+    // The variant's pipeline for `target`, built on first use. Throws shader::ShaderError /
+    // ds::Error on the first build of a variant.
+    VkPipeline get(const Key& key, const graph::RenderTarget& target = {}) {
+        Variant& v = variant(key);
+        auto it = v.pipelines.find(target);
+        if (it == v.pipelines.end())
+            it = v.pipelines.emplace(target, create_(key, v.stages, target)).first;
+        return it->second.handle();
+    }
+    // The variant's description (empty without `describe`): its shaders compile, no pipeline
+    // is made.
+    const PipelineInfo& info(const Key& key) { return variant(key).info; }
 
     void rebuild(vk::DestroyList& retired) {
         std::vector<std::pair<Key, ShaderStages>> stages;
-        for (const auto& entry : pipelines_)
-            stages.emplace_back(entry.first, compile_(entry.first));
+        for (const auto& entry : variants_) stages.emplace_back(entry.first, compile_(entry.first));
         Map fresh;
-        for (const auto& [key, s] : stages) fresh.emplace(key, build(key, s));
+        for (auto& [key, s] : stages) {
+            Variant v = describe(key, std::move(s));
+            for (const auto& entry : variants_.at(key).pipelines)
+                v.pipelines.emplace(entry.first, create_(key, v.stages, entry.first));
+            fresh.emplace(key, std::move(v));
+        }
         // An in-flight frame may still use the old pipelines.
-        for (auto& entry : pipelines_) retired.defer(std::move(entry.second.pipeline));
-        pipelines_ = std::move(fresh);
+        for (auto& entry : variants_)
+            for (auto& pipeline : entry.second.pipelines) retired.defer(std::move(pipeline.second));
+        variants_ = std::move(fresh);
     }
 
   private:
     struct Hash {
         size_t operator()(const Key& key) const { return key.hash(); }
     };
-    struct Built {
-        vk::Pipeline pipeline;
-        PipelineInfo info;
+    struct TargetHash {
+        size_t operator()(const graph::RenderTarget& t) const { return t.hash(); }
     };
-    using Map = std::unordered_map<Key, Built, Hash>;
+    struct Variant {
+        ShaderStages stages;
+        PipelineInfo info;
+        std::unordered_map<graph::RenderTarget, vk::Pipeline, TargetHash> pipelines;
+    };
+    using Map = std::unordered_map<Key, Variant, Hash>;
 
-    Built build(const Key& key, const ShaderStages& stages) const {
-        Built b{create_(key, stages), {}};
-        if (describe_) b.info = describe_(key, stages);
-        return b;
+    Variant describe(const Key& key, ShaderStages stages) const {
+        Variant v;
+        v.stages = std::move(stages);
+        if (describe_) v.info = describe_(key, v.stages);
+        return v;
     }
-    Built& entry(const Key& key) {
-        auto it = pipelines_.find(key);
-        if (it == pipelines_.end()) it = pipelines_.emplace(key, build(key, compile_(key))).first;
+    Variant& variant(const Key& key) {
+        auto it = variants_.find(key);
+        if (it == variants_.end()) it = variants_.emplace(key, describe(key, compile_(key))).first;
         return it->second;
     }
 
     Compile compile_;
     Create create_;
     Describe describe_;
-    Map pipelines_;
+    Map variants_;
 };
 
 }  // namespace ds::passes

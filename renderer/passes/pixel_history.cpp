@@ -211,28 +211,36 @@ void PixelHistoryReplay::add(graph::RenderGraph& graph, const FrameInputs& in, c
     const graph::BufferHandle buffer = services_.readback.import_storage(
         graph, pass_ + "_history", kBufferBytes, kHistoryHeaderBytes);
     buffer_ = buffer;
-    graph.set_role(graph::PassRole::History);
-    graph.add_pass(pass_ + "_history", [&](graph::PassBuilder& b) {
-        const graph::ImageHandle target =
-            b.create_image(pass_ + "_history_target", {.format = kTargetFormat,
-                                                       .size = graph::ImageSize::relative(1.0f),
-                                                       .samples = in.options.samples,
-                                                       .semantic = graph::Semantic::Other});
-        b.write(target, Access::ColorAttachment);
-        b.write(buffer, Access::StorageReadWrite, graph::Shader::Fragment);
-        for (graph::ImageHandle h : {reads.depth, reads.dst})
-            if (h.valid()) b.read(h, Access::Sampled, graph::Shader::Fragment);
-        declare(b);
-        return [this, in, reads, target, buffer, draw](graph::PassContext& ctx) {
-            record(ctx, in, reads, target, buffer, draw);
-        };
-    });
-    graph.set_role(graph::PassRole::Frame);
+    struct Data {
+        FrameInputs in;
+        Reads reads;
+        graph::BufferHandle buffer;
+        Draw draw;
+    };
+    graph.add_pass<Data>(
+        {pass_ + "_history", graph::PassKind::Graphics, graph::PassRole::History},
+        [&](graph::PassBuilder& b, Data& d) {
+            const graph::ImageHandle target =
+                b.create_image(pass_ + "_history_target", {.format = kTargetFormat,
+                                                           .size = graph::ImageSize::relative(1.0f),
+                                                           .samples = in.options.samples,
+                                                           .semantic = graph::Semantic::Other});
+            b.color(target, {.load = graph::Load::DontCare});
+            b.write(buffer, Access::StorageReadWrite, graph::Shader::Fragment);
+            for (graph::ImageHandle h : {reads.depth, reads.dst})
+                if (h.valid()) b.read(h, Access::Sampled, graph::Shader::Fragment);
+            declare(b);
+            d = {in, reads, buffer, std::move(draw)};
+        },
+        [this](graph::PassContext& ctx, const Data& d) {
+            record(ctx, d.in, d.reads, d.buffer, d.draw);
+        });
 }
 
+// Inside the rendering the graph began on the stand-in target: the viewport is the frame's, so
+// every fragment lands where the real pass puts it; the scissor keeps the one pixel.
 void PixelHistoryReplay::record(graph::PassContext& ctx, const FrameInputs& in, const Reads& reads,
-                                graph::ImageHandle target, graph::BufferHandle buffer,
-                                const Draw& draw) {
+                                graph::BufferHandle buffer, const Draw& draw) {
     VkCommandBuffer cmd = ctx.cmd();
     const VkDescriptorSet set = sets_->allocate(in.frame_number, set_layout_.handle());
     vk::DescriptorWriter writer;
@@ -245,19 +253,12 @@ void PixelHistoryReplay::record(graph::PassContext& ctx, const FrameInputs& in, 
             writer.image(binding++, unused_.view(), sampler_.handle());
     }
     writer.update(services_.context.device(), set);
-    // The viewport is the frame's, so every fragment lands where the real pass puts it; the
-    // scissor keeps the one pixel.
-    const VkRenderingAttachmentInfo color =
-        attachment(ctx.view(target), ctx.layout(target), VK_ATTACHMENT_LOAD_OP_DONT_CARE,
-                   VK_ATTACHMENT_STORE_OP_DONT_CARE);
-    begin_rendering(cmd, ctx.extent(target), {&color, 1}, nullptr);
     const VkRect2D pixel{{int32_t(in.pixel->x), int32_t(in.pixel->y)}, {1, 1}};
     vkCmdSetScissor(cmd, 0, 1, &pixel);
     set_depth_state(cmd, /*test=*/false, /*write=*/false, VK_COMPARE_OP_ALWAYS);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.handle(), kSet, 1, &set,
                             0, nullptr);
     draw(ctx, log_);
-    vk::fn().cmd_end_rendering(cmd);
 }
 
 void PixelHistoryReplay::collect(const FrameCollect& c, std::span<const HistoryPipeline> pipelines,

@@ -128,9 +128,9 @@ class PixelHistoryReplay {
     };
     using Declare = std::function<void(graph::PassBuilder&)>;
     using Draw = std::function<void(graph::PassContext&, DrawLog&)>;
-    // Graph pass "<pass>_history" (role history) for in.pixel: declares its buffer, `reads`
-    // and what `declare` adds; records the rendering (no attachments, one-pixel scissor,
-    // depth test off, set 4 bound), then `draw`, which binds and draws as the pass does.
+    // Graph pass "<pass>_history" (role history) for in.pixel: declares its stand-in target,
+    // its buffer, `reads` and what `declare` adds; records inside the rendering (one-pixel
+    // scissor, depth test off, set 4 bound) `draw`, which binds and draws as the pass does.
     void add(graph::RenderGraph& graph, const FrameInputs& in, const Reads& reads,
              const Declare& declare, Draw draw);
     // After the fence: this frame's fragments, simulated, appended to frame.pixel_history.
@@ -139,7 +139,7 @@ class PixelHistoryReplay {
 
   private:
     void record(graph::PassContext& ctx, const FrameInputs& in, const Reads& reads,
-                graph::ImageHandle target, graph::BufferHandle buffer, const Draw& draw);
+                graph::BufferHandle buffer, const Draw& draw);
 
     PassServices services_;
     std::string pass_;

@@ -17,7 +17,9 @@ RasterizedCount::RasterizedCount(const PassServices& services, const char* pass)
       name_(std::string(pass) + "_rasterized"),
       sets_(services.context, 1, kRasterizedCountPoolSizes, "rasterized count sets"),
       pipelines_([this](const Variant& v) { return compile(v); },
-                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); }) {
+                 [this](const Variant& v, const ShaderStages& s, const graph::RenderTarget& t) {
+                     return create(v, s, t);
+                 }) {
     const VkDescriptorSetLayoutBinding binding =
         vk::layout_binding(0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT);
     set_layout_ = vk::DescriptorSetLayout(services.context, {&binding, 1}, "rasterized count set");
@@ -42,34 +44,41 @@ ShaderStages RasterizedCount::compile(const Variant& v) const {
     return s;
 }
 
-vk::Pipeline RasterizedCount::create(const Variant& v, const ShaderStages& s) const {
+vk::Pipeline RasterizedCount::create(const Variant& v, const ShaderStages& s,
+                                     const graph::RenderTarget& target) const {
     const VertexInputs inputs =
         v.vertex == Vertex::Shadow ? VertexInputs::PositionUv : VertexInputs::All;
-    return scene_pipeline_builder(layout_.handle(), s.vert, s.frag, inputs)
-        .samples(v.samples)
-        .build(services_.context, name_.c_str());
+    vk::GraphicsPipelineBuilder b =
+        scene_pipeline_builder(layout_.handle(), s.vert, s.frag, inputs);
+    apply_target(b, target);  // none: counts only
+    return b.samples(v.samples).build(services_.context, name_.c_str());
 }
 
 void RasterizedCount::add(graph::RenderGraph& graph, const FrameInputs& in,
                           const FrameResources& res, const CountImages& counts,
                           Selection selection) {
     if (!counts.rasterized.valid()) return;
-    const VkPipeline pipeline = pipelines_.get({selection.vertex, selection.samples});
-    const graph::ImageHandle image = counts.rasterized;
-    graph.set_role(graph::PassRole::Measure);
-    graph.add_pass(name_, [&](graph::PassBuilder& b) {
-        b.read(res.frame_uniforms, graph::Access::UniformRead, graph::Shader::Vertex);
-        b.write(image, graph::Access::StorageReadWrite, graph::Shader::Fragment);
-        return [this, in, image, pipeline, selection](graph::PassContext& ctx) {
-            record(ctx, in, image, pipeline, selection);
-        };
-    });
-    graph.set_role(graph::PassRole::Frame);
+    struct Data {
+        FrameInputs in;
+        graph::ImageHandle counts;
+        Selection selection;
+    };
+    graph.add_pass<Data>(
+        {name_, graph::PassKind::Graphics, graph::PassRole::Measure},
+        [&](graph::PassBuilder& b, Data& d) {
+            b.read(res.frame_uniforms, graph::Access::UniformRead, graph::Shader::Vertex);
+            b.write(counts.rasterized, graph::Access::StorageReadWrite, graph::Shader::Fragment);
+            b.render_area(b.extent(counts.rasterized));  // no attachments: counts only
+            d = {in, counts.rasterized, std::move(selection)};
+        },
+        [this](graph::PassContext& ctx, const Data& d) {
+            record(ctx, d.in, d.counts, d.selection);
+        });
 }
 
 void RasterizedCount::record(graph::PassContext& ctx, const FrameInputs& in,
-                             graph::ImageHandle counts, VkPipeline pipeline,
-                             const Selection& selection) {
+                             graph::ImageHandle counts, const Selection& selection) {
+    const VkPipeline pipeline = pipelines_.get({selection.vertex, selection.samples}, ctx.target());
     VkCommandBuffer cmd = ctx.cmd();
     const VkDescriptorSet set = sets_.allocate(in.frame_number, set_layout_.handle());
     const VkDescriptorImageInfo info{VK_NULL_HANDLE, ctx.view(counts), VK_IMAGE_LAYOUT_GENERAL};
@@ -80,7 +89,6 @@ void RasterizedCount::record(graph::PassContext& ctx, const FrameInputs& in,
     write.pImageInfo = &info;
     vkUpdateDescriptorSets(services_.context.device(), 1, &write, 0, nullptr);
 
-    begin_rendering(cmd, ctx.extent(counts), {}, nullptr);  // no attachments: counts only
     set_depth_state(cmd, /*test=*/false, /*write=*/false, VK_COMPARE_OP_ALWAYS);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     bind_geometry(cmd, *in.scene);
@@ -92,7 +100,6 @@ void RasterizedCount::record(graph::PassContext& ctx, const FrameInputs& in,
     std::optional<VkCullModeFlags> cull;
     if (selection.cull != Selection::kEachGroup) cull = selection.cull;
     draw_groups(cmd, *in.scene, layout_.handle(), selection.modes, selection.decals, cull);
-    vk::fn().cmd_end_rendering(cmd);
 }
 
 }  // namespace ds::passes

@@ -53,9 +53,10 @@ class RasterizedCount {
         size_t hash() const { return hash_fields(int(vertex), int(samples)); }
     };
     ShaderStages compile(const Variant& v) const;
-    vk::Pipeline create(const Variant& v, const ShaderStages& s) const;
+    vk::Pipeline create(const Variant& v, const ShaderStages& s,
+                        const graph::RenderTarget& target) const;
     void record(graph::PassContext& ctx, const FrameInputs& in, graph::ImageHandle counts,
-                VkPipeline pipeline, const Selection& selection);
+                const Selection& selection);
 
     PassServices services_;
     std::string name_;

@@ -20,23 +20,21 @@ using scene::AlphaMode;
 ShadowPass::ShadowPass(const PassServices& services)
     : services_(services),
       no_set_(services.context, {}, "shadow empty set"),
-      count_layout_(create_count_set_layout(services.context)),
-      count_sets_(services.context, 1, kCountPoolSizes, "shadow count sets"),
-      rasterized_(services, kName),
+      instrument_(services, kName, no_set_.handle()),
       pipelines_([this](const Variant& v) { return compile(v); },
-                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
+                 [this](const Variant& v, const ShaderStages& s, const graph::RenderTarget& t) {
+                     return create(v, s, t);
+                 },
                  [](const Variant& v, const ShaderStages& s) {
                      return describe_pipeline(pipeline_name(v), s, /*alpha_to_coverage=*/false);
                  }) {
-    const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
-                                          no_set_.handle(), count_layout_.handle()};
-    layout_ = vk::PipelineLayout(services.context, sets, {}, "shadow layout");
-    pipelines_.get({.mask = false});  // shader errors surface at start-up, not in the first frame
+    layout_ = vk::PipelineLayout(services.context, instrument_.sets(), {}, "shadow layout");
+    pipelines_.info({.mask = false});  // shader errors surface at start-up, not in the first frame
 }
 
 void ShadowPass::rebuild_pipelines(vk::DestroyList& retired) {
     pipelines_.rebuild(retired);
-    rasterized_.rebuild_pipelines(retired);
+    instrument_.rebuild_pipelines(retired);
 }
 
 ShaderStages ShadowPass::compile(const Variant& v) const {
@@ -55,17 +53,16 @@ std::string ShadowPass::pipeline_name(const Variant& v) {
     return name;
 }
 
-void ShadowPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult&) {
-    PassResult* const own_pass = frame_result(own);
-    if (!own_pass) return;
-    collect_counts(c.readback, c.res.shadow_counts, *own_pass);
-    own_pass->pipelines = uses_.list();
+void ShadowPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {
+    instrument_.collect(c, own, frame, {});
 }
 
-vk::Pipeline ShadowPass::create(const Variant& v, const ShaderStages& s) const {
-    return scene_pipeline_builder(layout_.handle(), s.vert, s.frag, VertexInputs::PositionUv)
-        .depth_attachment(services_.preferred_depth_format)
-        .build(services_.context, pipeline_name(v).c_str());
+vk::Pipeline ShadowPass::create(const Variant& v, const ShaderStages& s,
+                                const graph::RenderTarget& target) const {
+    vk::GraphicsPipelineBuilder b =
+        scene_pipeline_builder(layout_.handle(), s.vert, s.frag, VertexInputs::PositionUv);
+    apply_target(b, target);
+    return b.build(services_.context, pipeline_name(v).c_str());
 }
 
 std::vector<SettingDef> ShadowPass::knobs() {
@@ -79,18 +76,15 @@ void ShadowPass::configure(const FrameSetup& setup, FrameOptions& o) {
 }
 
 void ShadowPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
-    uses_.clear();
+    instrument_.begin_frame(res.shadow_counts, /*queries=*/false, 0);
     if (!in.options.shadows) return;
     const bool counting = res.shadow_counts.valid();
     const bool count_draws = res.shadow_counts.draws.valid();
     const Variant opaque{.mask = false, .counting = counting, .count_draws = count_draws};
     const Variant mask{.mask = true, .counting = counting, .count_draws = count_draws};
-    const Draw draw{pipelines_.get(opaque), pipelines_.get(mask), pipelines_.info(opaque),
-                    pipelines_.info(mask)};
+    const Draw draw{opaque, mask, pipelines_.info(opaque), pipelines_.info(mask)};
     struct Data {
         FrameInputs in;
-        graph::ImageHandle map;
-        CountImages counts;
     };
     graph.add_pass<Data>(
         kName,
@@ -99,38 +93,25 @@ void ShadowPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
                 b.create_image("shadow_map", {.format = services_.preferred_depth_format,
                                               .size = graph::ImageSize::fixed(kSize, kSize),
                                               .semantic = graph::Semantic::ShadowDepth});
-            b.write(res.shadow_map, Access::DepthAttachment);
+            // Stored: forward and transparent sample it after this pass.
+            b.depth(res.shadow_map, {.load = graph::Load::Clear, .clear = 1.0f});
             b.read(res.frame_uniforms, Access::UniformRead,
                    graph::Shader::Vertex | graph::Shader::Fragment);
-            if (counting) declare_counts(b, res.shadow_counts);
-            d = {in, res.shadow_map, res.shadow_counts};
+            instrument_.declare(b);
+            d = {in};
         },
-        [this, draw](graph::PassContext& ctx, const Data& d) {
-            record(ctx, d.map, d.in, d.counts, draw);
-        });
-    rasterized_.add(graph, in, res, res.shadow_counts,
-                    {.vertex = RasterizedCount::Vertex::Shadow,
-                     .modes = {AlphaMode::Opaque, AlphaMode::Mask},
-                     .decals = scene_groups(in.options.decal_pass),
-                     .cull = VK_CULL_MODE_NONE});
+        [this, draw](graph::PassContext& ctx, const Data& d) { record(ctx, d.in, draw); });
+    instrument_.add_measure(graph, in, res,
+                            {.vertex = RasterizedCount::Vertex::Shadow,
+                             .modes = {AlphaMode::Opaque, AlphaMode::Mask},
+                             .decals = scene_groups(in.options.decal_pass),
+                             .cull = VK_CULL_MODE_NONE});
 }
 
-void ShadowPass::record(graph::PassContext& ctx, graph::ImageHandle map, const FrameInputs& in,
-                        const CountImages& counts, const Draw& draw) {
+void ShadowPass::record(graph::PassContext& ctx, const FrameInputs& in, const Draw& draw) {
     VkCommandBuffer cmd = ctx.cmd();
     const VkPipelineLayout layout = layout_.handle();
-    if (counts.valid()) {
-        const VkDescriptorSet set = count_sets_.allocate(in.frame_number, count_layout_.handle());
-        write_count_set(ctx, services_.context.device(), set, counts);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kCountSet, 1, &set, 0,
-                                nullptr);
-    }
-    // Stored: forward and transparent sample it after this pass.
-    const VkRenderingAttachmentInfo depth =
-        depth_attachment(ctx.view(map), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                         VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE,
-                         /*clear_depth=*/1.0f);
-    begin_rendering(cmd, {kSize, kSize}, {}, &depth);
+    instrument_.bind_counts(ctx, in.frame_number, layout);
     set_depth_state(cmd, /*test=*/true, /*write=*/true, VK_COMPARE_OP_LESS);
     bind_geometry(cmd, *in.scene);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
@@ -138,13 +119,16 @@ void ShadowPass::record(graph::PassContext& ctx, graph::ImageHandle map, const F
     const Decals decals = scene_groups(in.options.decal_pass);
     const AlphaMode opaque_modes[] = {AlphaMode::Opaque};
     const AlphaMode mask_modes[] = {AlphaMode::Mask};
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
-    uses_.add(draw.opaque_info,
-              draw_groups(cmd, *in.scene, layout, opaque_modes, decals, VK_CULL_MODE_NONE).draws);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.mask);
-    uses_.add(draw.mask_info,
-              draw_groups(cmd, *in.scene, layout, mask_modes, decals, VK_CULL_MODE_NONE).draws);
-    vk::fn().cmd_end_rendering(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                      pipelines_.get(draw.opaque, ctx.target()));
+    instrument_.used(
+        draw.opaque_info,
+        draw_groups(cmd, *in.scene, layout, opaque_modes, decals, VK_CULL_MODE_NONE).draws);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                      pipelines_.get(draw.mask, ctx.target()));
+    instrument_.used(
+        draw.mask_info,
+        draw_groups(cmd, *in.scene, layout, mask_modes, decals, VK_CULL_MODE_NONE).draws);
 }
 
 glm::mat4 ShadowPass::fit_sun(const scene::Bounds& bounds, glm::vec3 to_sun) {

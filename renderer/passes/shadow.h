@@ -13,9 +13,8 @@
 #include "renderer/graph/graph.h"
 #include "renderer/passes/frame.h"
 #include "renderer/passes/frame_pass.h"
+#include "renderer/passes/geometry_instrument.h"
 #include "renderer/passes/pass_util.h"
-#include "renderer/passes/pipeline_use.h"
-#include "renderer/passes/rasterized_count.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/knob.h"
 #include "renderer/vk/destroy_list.h"
@@ -55,23 +54,20 @@ class ShadowPass final : public FramePass {
         size_t hash() const { return hash_fields(mask, counting, count_draws); }
     };
     struct Draw {
-        VkPipeline opaque = VK_NULL_HANDLE, mask = VK_NULL_HANDLE;
+        Variant opaque, mask;  // their pipelines are made for the target when recorded
         PipelineInfo opaque_info, mask_info;
     };
     ShaderStages compile(const Variant& variant) const;
-    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages,
+                        const graph::RenderTarget& target) const;
     static std::string pipeline_name(const Variant& variant);
-    void record(graph::PassContext& ctx, graph::ImageHandle map, const FrameInputs& in,
-                const CountImages& counts, const Draw& draw);
+    void record(graph::PassContext& ctx, const FrameInputs& in, const Draw& draw);
 
     PassServices services_;
     vk::DescriptorSetLayout no_set_;  // set 2: the count set is set 3 in every counting shader
-    vk::DescriptorSetLayout count_layout_;
+    GeometryInstrument instrument_;
     vk::PipelineLayout layout_;
-    FrameDescriptorPool count_sets_;
-    RasterizedCount rasterized_;
     PipelineVariants<Variant> pipelines_;
-    PipelineUses uses_;  // this frame's
 };
 
 }  // namespace ds::passes

@@ -29,23 +29,20 @@ class SkyboxPass final : public FramePass {
     static std::vector<SettingDef> knobs();
     void configure(const FrameSetup& setup, FrameOptions& options) override;
     // Reads res.depth (read-only attachment), draws into res.hdr. render_path=subpass: in
-    // subpass 1 of kSubpassGroup, after forward (so before decals, which are not in it).
+    // forward's subpass (same attachments).
     void add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) override;
 
   private:
-    // The scene depth it tests against: the frame's sample count and depth_format.
+    // The frame's sample count (the depth format is the target's).
     struct Variant {
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-        VkFormat depth = VK_FORMAT_UNDEFINED;
-        // render_path=subpass: the render pass and subpass it draws in (null: its own).
-        VkRenderPass render_pass = VK_NULL_HANDLE;
-        uint32_t subpass = 0;
         bool operator==(const Variant&) const = default;
-        size_t hash() const { return hash_fields(int(samples), int(depth), render_pass, subpass); }
+        size_t hash() const { return hash_fields(int(samples)); }
     };
 
     ShaderStages compile(const Variant& variant) const;
-    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages,
+                        const graph::RenderTarget& target) const;
 
     PassServices services_;
     vk::PipelineLayout layout_;

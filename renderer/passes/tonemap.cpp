@@ -17,14 +17,16 @@ TonemapPass::TonemapPass(const PassServices& services)
     : services_(services),
       sets_(services.context, 1, kTonemapPoolSizes, "tonemap sets"),
       pipelines_([this](const NoVariant& v) { return compile(v); },
-                 [this](const NoVariant& v, const ShaderStages& s) { return create(v, s); }) {
+                 [this](const NoVariant& v, const ShaderStages& s, const graph::RenderTarget& t) {
+                     return create(v, s, t);
+                 }) {
     const VkDescriptorSetLayoutBinding hdr = vk::layout_binding(
         0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT);
     hdr_layout_ = vk::DescriptorSetLayout(services.context, {&hdr, 1}, "tonemap set layout");
     const VkDescriptorSetLayout sets[] = {services.frame_layout, hdr_layout_.handle()};
     layout_ = vk::PipelineLayout(services.context, sets, {}, "tonemap layout");
     nearest_ = vk::nearest_clamp_sampler(services.context, "tonemap nearest");
-    pipelines_.get({});
+    pipelines_.info({});
 }
 
 void TonemapPass::rebuild_pipelines(vk::DestroyList& retired) {
@@ -35,17 +37,15 @@ ShaderStages TonemapPass::compile(const NoVariant&) const {
     return compile_fullscreen(services_.compiler, "tonemap.frag");
 }
 
-vk::Pipeline TonemapPass::create(const NoVariant&, const ShaderStages& s) const {
-    return create_fullscreen(services_.context,
-                             {.fragment = "tonemap.frag",
-                              .color = kFinalFormat,
-                              .layout = layout_.handle(),
-                              .name = "tonemap"},
-                             s);
+vk::Pipeline TonemapPass::create(const NoVariant&, const ShaderStages& s,
+                                 const graph::RenderTarget& target) const {
+    return create_fullscreen(
+        services_.context,
+        {.fragment = "tonemap.frag", .layout = layout_.handle(), .name = "tonemap"}, s, target);
 }
 
 void TonemapPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameResources& res) {
-    const VkPipeline pipeline = pipelines_.get({});
+    pipelines_.info({});
     struct Data {
         FrameInputs in;
         FrameResources res;
@@ -54,29 +54,26 @@ void TonemapPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
         kName,
         [&](graph::PassBuilder& b, Data& d) {
             b.read(res.hdr, Access::Sampled, graph::Shader::Fragment);
-            b.write(res.final_image, Access::ColorAttachment);
+            // Every pixel is written: the old contents need not be loaded.
+            b.color(res.final_image, {.load = graph::Load::DontCare});
             b.read(res.frame_uniforms, Access::UniformRead,
                    graph::Shader::Vertex | graph::Shader::Fragment);
             d = {in, res};
         },
-        [this, pipeline](graph::PassContext& ctx, const Data& d) {
+        [this](graph::PassContext& ctx, const Data& d) {
             VkCommandBuffer cmd = ctx.cmd();
             const VkDescriptorSet set = sets_.allocate(d.in.frame_number, hdr_layout_.handle());
             vk::DescriptorWriter writer;
             writer.image(0, ctx.view(d.res.hdr), nearest_.handle(), ctx.layout(d.res.hdr));
             writer.update(services_.context.device(), set);
-            // Every pixel is written: the old contents need not be loaded.
-            const VkRenderingAttachmentInfo color =
-                color_attachment(ctx.view(d.res.final_image), VK_ATTACHMENT_LOAD_OP_DONT_CARE);
-            begin_rendering(cmd, ctx.extent(d.res.final_image), {&color, 1}, nullptr);
             set_depth_state(cmd, /*test=*/false, /*write=*/false, VK_COMPARE_OP_ALWAYS);
             vk::fn().cmd_set_cull_mode(cmd, VK_CULL_MODE_NONE);
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                              pipelines_.get({}, ctx.target()));
             const VkDescriptorSet sets[] = {d.in.frame_set, set};
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.handle(), 0, 2,
                                     sets, 0, nullptr);
             vkCmdDraw(cmd, 3, 1, 0, 0);
-            vk::fn().cmd_end_rendering(cmd);
         });
 }
 

@@ -31,7 +31,8 @@ class TonemapPass final : public FramePass {
 
   private:
     ShaderStages compile(const NoVariant& variant) const;
-    vk::Pipeline create(const NoVariant& variant, const ShaderStages& stages) const;
+    vk::Pipeline create(const NoVariant& variant, const ShaderStages& stages,
+                        const graph::RenderTarget& target) const;
 
     PassServices services_;
     vk::DescriptorSetLayout hdr_layout_;

@@ -174,9 +174,12 @@ void TriangleSizePass::add(graph::RenderGraph& graph, const FrameInputs& in, Fra
     histogram_ = services_.readback.import_storage(graph, kHistogramBuffer, kHistogramBytes,
                                                    kHistogramBytes);
     Bound bound{res.surface_id, {}, histogram_};
-    graph.add_pass(
-        name(),
-        [&](graph::PassBuilder& b) {
+    struct Data {
+        Bound bound;
+    };
+    graph.add_pass<Data>(
+        {name(), graph::PassKind::Compute},
+        [&](graph::PassBuilder& b, Data& d) {
             bound.sizes = b.create_image("triangle_size", {.format = VK_FORMAT_R32_SFLOAT,
                                                            .size = graph::ImageSize::relative(1.0f),
                                                            .semantic = graph::Semantic::Scalar,
@@ -185,10 +188,11 @@ void TriangleSizePass::add(graph::RenderGraph& graph, const FrameInputs& in, Fra
             b.read(bound.surfaces, Access::Sampled);
             b.write(bound.sizes, Access::StorageWrite);
             b.write(bound.histogram, Access::StorageReadWrite);
-            return [this, bound, scene = in.scene, frame_set = in.frame_set](
-                       graph::PassContext& ctx) { record(ctx, bound, *scene, frame_set); };
+            d = {bound};
         },
-        graph::PassKind::Compute);
+        [this, scene = in.scene, frame_set = in.frame_set](graph::PassContext& ctx, const Data& d) {
+            record(ctx, d.bound, *scene, frame_set);
+        });
 }
 
 void TriangleSizePass::record(graph::PassContext& ctx, const Bound& bound, const GpuScene& scene,

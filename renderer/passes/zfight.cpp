@@ -78,7 +78,9 @@ ZfightPass::ZfightPass(const PassServices& services)
       nearest_(vk::nearest_clamp_sampler(services.context, "zfight nearest")),
       sets_(services.context, 1, kZfightPoolSizes, "zfight sets"),
       pipelines_([this](const Variant& v) { return compile(v); },
-                 [this](const Variant& v, const ShaderStages& s) { return create(v, s); },
+                 [this](const Variant& v, const ShaderStages& s, const graph::RenderTarget& t) {
+                     return create(v, s, t);
+                 },
                  [](const Variant&, const ShaderStages& s) {
                      return describe_pipeline(kPipelineName, s, /*alpha_to_coverage=*/false);
                  }),
@@ -105,9 +107,10 @@ ShaderStages ZfightPass::compile(const Variant& v) const {
             services_.compiler.compile("zfight.frag", shader::Stage::Fragment, frag).spirv};
 }
 
-vk::Pipeline ZfightPass::create(const Variant& v, const ShaderStages& s) const {
+vk::Pipeline ZfightPass::create(const Variant& v, const ShaderStages& s,
+                                const graph::RenderTarget& target) const {
     vk::GraphicsPipelineBuilder b = scene_pipeline_builder(layout_.handle(), s.vert, s.frag);
-    b.depth_attachment(v.depth);
+    apply_target(b, target);
     // One invocation per sample (the shader's gl_SampleID asks for it too).
     if (v.per_sample()) b.samples(v.samples).sample_shading(1.0f);
     return b.build(services_.context, kPipelineName);
@@ -165,16 +168,24 @@ void ZfightPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameReso
     const Bound bound{msaa ? res.msaa_surface_id : res.surface_id,
                       msaa ? res.msaa_depth : res.depth, bound_.add(graph, in, res, steps_),
                       res.zfight, records};
-    graph.add_pass(name(), [&](graph::PassBuilder& b) {
-        b.read(res.frame_uniforms, Access::UniformRead,
-               graph::Shader::Vertex | graph::Shader::Fragment);
-        b.read(bound.surfaces, Access::Sampled);
-        b.read(bound.depth, Access::Sampled);
-        b.read(bound.limit, Access::DepthReadOnly);
-        b.write(bound.competitors, Access::StorageReadWrite);
-        b.write(bound.records, Access::StorageReadWrite);
-        return [this, in, bound](graph::PassContext& ctx) { record(ctx, in, bound); };
-    });
+    struct Data {
+        FrameInputs in;
+        Bound bound;
+    };
+    graph.add_pass<Data>(
+        name(),
+        [&](graph::PassBuilder& b, Data& d) {
+            b.read(res.frame_uniforms, Access::UniformRead,
+                   graph::Shader::Vertex | graph::Shader::Fragment);
+            b.read(bound.surfaces, Access::Sampled);
+            b.read(bound.depth, Access::Sampled);
+            // No colour: the fragments only count. Layers beyond the limit fail the early test.
+            b.depth(bound.limit, {.read_only = true});
+            b.write(bound.competitors, Access::StorageReadWrite);
+            b.write(bound.records, Access::StorageReadWrite);
+            d = {in, bound};
+        },
+        [this](graph::PassContext& ctx, const Data& d) { record(ctx, d.in, d.bound); });
 }
 
 void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bound& bound) {
@@ -190,16 +201,11 @@ void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bo
     const VkExtent2D extent = ctx.extent(bound.depth);
     const ZfightPush push{steps_, format::depth_bits(ctx.format(bound.depth)), extent.width,
                           capacity_};
-    // No colour: the fragments only count. Layers beyond the limit fail the early test.
-    const VkRenderingAttachmentInfo limit =
-        depth_attachment(ctx.view(bound.limit), ctx.layout(bound.limit), VK_ATTACHMENT_LOAD_OP_LOAD,
-                         VK_ATTACHMENT_STORE_OP_NONE);
-    begin_rendering(cmd, extent, {}, &limit);
     set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());
     bind_geometry(cmd, *in.scene);
     const VkPipelineLayout layout = layout_.handle();
     const Variant variant{.depth = in.options.depth_format, .samples = in.options.samples};
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get(variant));
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get(variant, ctx.target()));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
                             nullptr);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &set, 0, nullptr);
@@ -208,7 +214,6 @@ void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bo
     uses_.add(
         pipelines_.info(variant),
         draw_groups(cmd, *in.scene, layout, modes, scene_groups(in.options.decal_pass)).draws);
-    vk::fn().cmd_end_rendering(cmd);
 }
 
 void ZfightPass::collect(const FrameCollect& c, std::span<PassResult> own, FrameResult& frame) {

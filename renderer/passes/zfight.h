@@ -108,7 +108,8 @@ class ZfightPass final : public FramePass {
     };
     using Variant = ZfightVariant;  // the frame's depth_format and msaa (the limit's)
     ShaderStages compile(const Variant& variant) const;
-    vk::Pipeline create(const Variant& variant, const ShaderStages& stages) const;
+    vk::Pipeline create(const Variant& variant, const ShaderStages& stages,
+                        const graph::RenderTarget& target) const;
     void record(graph::PassContext& ctx, const FrameInputs& in, const Bound& bound);
 
     PassServices services_;

@@ -30,14 +30,13 @@ ZfightBound::ZfightBound(const PassServices& services)
                       .compile("zfight_bound.frag", shader::Stage::Fragment, {{"PER_SAMPLE", "1"}})
                       .spirv};
           },
-          [this](const Variant& v, const ShaderStages& s) {
+          [this](const Variant& v, const ShaderStages& s, const graph::RenderTarget& target) {
               return create_fullscreen(services_.context,
                                        {.fragment = "zfight_bound.frag",
-                                        .depth = v.depth,
                                         .samples = v.samples,
                                         .layout = layout_.handle(),
                                         .name = "zfight bound"},
-                                       s);
+                                       s, target);
           }) {
     const VkDescriptorSetLayoutBinding binding = vk::layout_binding(
         0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT);
@@ -50,27 +49,34 @@ ZfightBound::ZfightBound(const PassServices& services)
 graph::ImageHandle ZfightBound::add(graph::RenderGraph& graph, const FrameInputs& in,
                                     const FrameResources& res, uint32_t steps) {
     const graph::ImageHandle stored = in.options.msaa() ? res.msaa_depth : res.depth;
-    graph::ImageHandle bound;
-    graph.add_pass("zfight_bound", [&](graph::PassBuilder& b) {
-        bound = b.create_image("zfight_bound",
+    struct Data {
+        FrameInputs in;
+        graph::ImageHandle stored, bound;
+    };
+    const Data& data = graph.add_pass<Data>(
+        "zfight_bound",
+        [&](graph::PassBuilder& b, Data& d) {
+            const graph::ImageHandle bound =
+                b.create_image("zfight_bound",
                                {.format = in.options.depth_format,
                                 .size = graph::ImageSize::relative(1.0f),
                                 .samples = in.options.samples,
                                 .semantic = in.options.reverse_z ? graph::Semantic::ReverseZDepth
                                                                  : graph::Semantic::ForwardZDepth});
-        b.read(res.frame_uniforms, graph::Access::UniformRead,
-               graph::Shader::Vertex | graph::Shader::Fragment);
-        b.read(stored, graph::Access::Sampled);
-        b.write(bound, graph::Access::DepthAttachment);
-        return [this, in, steps, stored, bound](graph::PassContext& ctx) {
-            record(ctx, in, steps, stored, bound);
-        };
-    });
-    return bound;
+            b.read(res.frame_uniforms, graph::Access::UniformRead,
+                   graph::Shader::Vertex | graph::Shader::Fragment);
+            b.read(stored, graph::Access::Sampled);
+            declare_fullscreen_depth(b, bound);
+            d = {in, stored, bound};
+        },
+        [this, steps](graph::PassContext& ctx, const Data& d) {
+            record(ctx, d.in, steps, d.stored);
+        });
+    return data.bound;
 }
 
 void ZfightBound::record(graph::PassContext& ctx, const FrameInputs& in, uint32_t steps,
-                         graph::ImageHandle stored, graph::ImageHandle bound) {
+                         graph::ImageHandle stored) {
     const VkDescriptorSet set = sets_.allocate(in.frame_number, set_layout_.handle());
     vk::DescriptorWriter writer;
     writer.image(0, ctx.view(stored), nearest_.handle(), ctx.layout(stored));
@@ -78,7 +84,7 @@ void ZfightBound::record(graph::PassContext& ctx, const FrameInputs& in, uint32_
     const VkDescriptorSet sets[] = {in.frame_set, set};
     const BoundPush push{steps, format::depth_bits(in.options.depth_format)};
     const Variant variant{.depth = in.options.depth_format, .samples = in.options.samples};
-    draw_fullscreen_depth(ctx, bound, pipelines_.get(variant), layout_.handle(), sets,
+    draw_fullscreen_depth(ctx.cmd(), pipelines_.get(variant, ctx.target()), layout_.handle(), sets,
                           std::as_bytes(std::span(&push, 1)));
 }
 

@@ -43,7 +43,7 @@ class ZfightBound {
   private:
     using Variant = ZfightVariant;
     void record(graph::PassContext& ctx, const FrameInputs& in, uint32_t steps,
-                graph::ImageHandle stored, graph::ImageHandle bound);
+                graph::ImageHandle stored);
 
     PassServices services_;
     vk::Sampler nearest_;

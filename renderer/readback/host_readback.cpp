@@ -63,17 +63,21 @@ graph::BufferHandle HostReadback::declare_copy(graph::RenderGraph& graph,
 
 void HostReadback::add_copy_pass(graph::RenderGraph& graph, const std::string& name,
                                  std::vector<graph::ImageHandle> images) {
-    graph.add_pass(
-        name,
-        [&](graph::PassBuilder& b) {
-            std::vector<graph::BufferHandle> targets;
+    struct Data {
+        std::vector<graph::ImageHandle> images;
+        std::vector<graph::BufferHandle> targets;
+    };
+    graph.add_pass<Data>(
+        {name, graph::PassKind::Transfer, graph::PassRole::ReadBack},
+        [&](graph::PassBuilder& b, Data& d) {
             for (graph::ImageHandle image : images)
-                targets.push_back(declare_copy(graph, b, image));
-            return [this, images, targets](graph::PassContext& ctx) {
-                for (size_t i = 0; i < images.size(); ++i) record_copy(ctx, images[i], targets[i]);
-            };
+                d.targets.push_back(declare_copy(graph, b, image));
+            d.images = std::move(images);
         },
-        graph::PassKind::Transfer);
+        [this](graph::PassContext& ctx, const Data& d) {
+            for (size_t i = 0; i < d.images.size(); ++i)
+                record_copy(ctx, d.images[i], d.targets[i]);
+        });
 }
 
 void HostReadback::record_copy(graph::PassContext& ctx, graph::ImageHandle image,

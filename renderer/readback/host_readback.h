@@ -34,7 +34,7 @@ class HostReadback {
 
     // A transfer pass `name` copying each of `images` (single-sample, colour or depth) into a
     // host buffer "readback_<image name>": the whole image, tightly packed, row 0 = top (depth
-    // aspect only). The pass takes the graph's current role.
+    // aspect only), with the read-back role.
     void add_copy_pass(graph::RenderGraph& graph, const std::string& name,
                        std::vector<graph::ImageHandle> images);
     // A host buffer a shader writes (declare the write in the pass). Its first `zeroed`

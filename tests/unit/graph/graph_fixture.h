@@ -4,6 +4,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <type_traits>
 
 #include <gtest/gtest.h>
 
@@ -54,23 +55,24 @@ class GraphVk : public ::testing::Test {
     std::unique_ptr<RenderGraph> graph_;
 };
 
-// Dynamic rendering into one attachment, cleared; the caller records inside, then ends it.
-inline void begin_clear(const PassContext& ctx, ImageHandle target, VkClearValue clear) {
-    const bool depth = ctx.layout(target) == VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    auto attachment =
-        vk::make<VkRenderingAttachmentInfo>(VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO);
-    attachment.imageView = ctx.view(target);
-    attachment.imageLayout = ctx.layout(target);
-    attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    attachment.clearValue = clear;
-    auto rendering = vk::make<VkRenderingInfo>(VK_STRUCTURE_TYPE_RENDERING_INFO);
-    rendering.renderArea = {{0, 0}, ctx.extent(target)};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = depth ? 0 : 1;
-    rendering.pColorAttachments = depth ? nullptr : &attachment;
-    rendering.pDepthAttachment = depth ? &attachment : nullptr;
-    vk::fn().cmd_begin_rendering(ctx.cmd(), &rendering);
+// A pass without data of its own, through the graph's one add_pass form: `setup` declares,
+// `record` records.
+struct NoData {};
+template <typename Setup, typename Record>
+void add(RenderGraph& graph, const PassDecl& decl, Setup setup, Record record) {
+    graph.add_pass<NoData>(
+        decl, [&](PassBuilder& b, NoData&) { setup(b); },
+        [record](PassContext& ctx, const NoData&) {
+            if constexpr (!std::is_same_v<Record, std::nullptr_t>) record(ctx);
+        });
+}
+
+// `target` declared cleared to `clear` (a colour or a depth attachment by its format).
+inline void clear_attachment(PassBuilder& b, ImageHandle target, VkClearValue clear, bool depth) {
+    if (depth)
+        b.depth(target, {.load = Load::Clear, .clear = clear.depthStencil.depth});
+    else
+        b.color(target, {.load = Load::Clear, .clear = clear.color});
 }
 
 // The whole of a colour image into a tightly packed buffer.

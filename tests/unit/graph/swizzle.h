@@ -46,18 +46,13 @@ struct Swizzle {
         sampler = vk::Sampler(context, info, "nearest");
     }
 
-    // A fullscreen triangle into `target` that samples `source` in the layout the graph chose.
-    void record(const PassContext& ctx, ImageHandle source, ImageHandle target) const {
+    // A fullscreen triangle into the pass's target (declared cleared to black) that samples
+    // `source` in the layout the graph chose.
+    void record(const PassContext& ctx, ImageHandle source) const {
         vk::DescriptorWriter writer;  // every earlier frame has finished: the set is free
         writer.image(0, ctx.view(source), sampler.handle(), ctx.layout(source));
         writer.update(device, set);
         VkCommandBuffer cmd = ctx.cmd();
-        begin_clear(ctx, target, colour(0, 0, 0));
-        const VkExtent2D extent = ctx.extent(target);
-        const VkViewport viewport{0, 0, float(extent.width), float(extent.height), 0, 1};
-        const VkRect2D scissor{{0, 0}, extent};
-        vkCmdSetViewport(cmd, 0, 1, &viewport);
-        vkCmdSetScissor(cmd, 0, 1, &scissor);
         vk::fn().cmd_set_cull_mode(cmd, VK_CULL_MODE_NONE);
         vk::fn().cmd_set_depth_test_enable(cmd, VK_FALSE);
         vk::fn().cmd_set_depth_write_enable(cmd, VK_FALSE);
@@ -66,7 +61,6 @@ struct Swizzle {
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout.handle(), 0, 1, &set,
                                 0, nullptr);
         vkCmdDraw(cmd, 3, 1, 0, 0);
-        vk::fn().cmd_end_rendering(cmd);
     }
 };
 

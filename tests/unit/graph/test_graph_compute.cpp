@@ -65,27 +65,36 @@ void declare(RenderGraph& g, const Pattern& pattern, const Swizzle& swizzle,
     const ImageDesc desc{.format = kSwizzleFormat,
                          .size = ImageSize::relative(1.0f),
                          .semantic = Semantic::LdrColor};
-    ImageHandle image, swizzled;
-    g.add_pass(
-        "pattern",
+    struct Image {
+        ImageHandle image;
+    };
+    const ImageHandle image =
+        g.add_pass<Image>(
+             {"pattern", PassKind::Compute},
+             [&](PassBuilder& b, Image& d) {
+                 d.image = b.create_image("pattern", desc);
+                 // a compute pass: the compute stage
+                 b.write(d.image, Access::StorageWrite);
+             },
+             [&pattern](PassContext& ctx, const Image& d) { pattern.record(ctx, d.image); })
+            .image;
+    const ImageHandle swizzled =
+        g.add_pass<Image>(
+             "swizzle",
+             [&](PassBuilder& b, Image& d) {
+                 d.image = b.create_image("swizzled", desc);
+                 b.read(image, Access::Sampled);  // a graphics pass: the fragment stage
+                 b.color(d.image, {.load = Load::Clear});
+             },
+             [&swizzle, image](PassContext& ctx, const Image&) { swizzle.record(ctx, image); })
+            .image;
+    add(
+        g, {"readback", PassKind::Transfer},
         [&](PassBuilder& b) {
-            image = b.create_image("pattern", desc);
-            b.write(image, Access::StorageWrite);  // a compute pass: the compute stage
-            return [&pattern, image](PassContext& ctx) { pattern.record(ctx, image); };
+            b.read(swizzled, Access::TransferSrc);
+            b.write(rb, Access::TransferDst);
         },
-        PassKind::Compute);
-    g.add_pass("swizzle", [&](PassBuilder& b) {
-        swizzled = b.create_image("swizzled", desc);
-        b.read(image, Access::Sampled);  // a graphics pass: the fragment stage
-        b.write(swizzled, Access::ColorAttachment);
-        return
-            [&swizzle, image, swizzled](PassContext& ctx) { swizzle.record(ctx, image, swizzled); };
-    });
-    g.add_pass("readback", [&](PassBuilder& b) {
-        b.read(swizzled, Access::TransferSrc);
-        b.write(rb, Access::TransferDst);
-        return [swizzled, rb](PassContext& ctx) { copy_to_buffer(ctx, swizzled, rb); };
-    });
+        [swizzled, rb](PassContext& ctx) { copy_to_buffer(ctx, swizzled, rb); });
 }
 
 TEST_F(GraphVk, ComputeStorageImageSampledByAFragmentShader) {

@@ -17,8 +17,8 @@ constexpr VkExtent2D kFrameSize{64, 48};
 
 // The left half of the clear pass is red, the rest (0.25, 0.5, 0.75); swizzled: blue, and
 // (0.75, 0.5, 0.25).
+// The pass declares the target cleared to (0.25, 0.5, 0.75); this clears the left half red.
 void clear_two_halves(const PassContext& ctx, ImageHandle target) {
-    begin_clear(ctx, target, colour(0.25f, 0.5f, 0.75f));
     const VkExtent2D extent = ctx.extent(target);
     VkClearAttachment red{};
     red.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
@@ -26,7 +26,6 @@ void clear_two_halves(const PassContext& ctx, ImageHandle target) {
     red.clearValue = colour(1, 0, 0);
     const VkClearRect rect{{{0, 0}, {extent.width / 2, extent.height}}, 0, 1};
     vkCmdClearAttachments(ctx.cmd(), 1, &red, 1, &rect);
-    vk::fn().cmd_end_rendering(ctx.cmd());
 }
 
 struct Targets {
@@ -56,19 +55,19 @@ void declare_frame(RenderGraph& graph, const Swizzle& swizzle, const Targets& t,
             d.colour = b.create_image("colour", {.format = kFormat,
                                                  .size = ImageSize::relative(1.0f),
                                                  .semantic = Semantic::LdrColor});
-            b.write(d.colour, Access::ColorAttachment);
+            b.color(d.colour, {.load = Load::Clear, .clear = colour(0.25f, 0.5f, 0.75f).color});
         },
         [](PassContext& ctx, const Clear& d) { clear_two_halves(ctx, d.colour); });
     const ImageHandle source = clear.colour;
-    graph.add_pass(
-        "swizzle",
+    add(
+        graph, "swizzle",
         [&](PassBuilder& b) {
             b.read(source, Access::Sampled);
-            b.write(result, Access::ColorAttachment);
+            b.color(result, {.load = Load::Clear, .clear = colour(0, 0, 0).color});
         },
-        [&swizzle, source, result](PassContext& ctx) { swizzle.record(ctx, source, result); });
-    graph.add_pass(
-        "readback",
+        [&swizzle, source](PassContext& ctx) { swizzle.record(ctx, source); });
+    add(
+        graph, {"readback", PassKind::Transfer},
         [&](PassBuilder& b) {
             b.read(result, Access::TransferSrc);
             b.write(readback, Access::TransferDst);
@@ -143,7 +142,7 @@ TEST_F(GraphVk, ThreePassesClearSampleReadBack) {
     EXPECT_EQ(graph_->images_created(), 1u) << "one transient, created once for three frames";
 
     for (const char* expected :
-         {"1. clear (graphics)", "2. swizzle (graphics)", "3. readback (graphics)",
+         {"1. clear (graphics)", "2. swizzle (graphics)", "3. readback (transfer)",
           "colour: image R8G8B8A8_UNORM 64x48 (output x1) samples 1 mips 1 LdrColor transient",
           "result: image R8G8B8A8_UNORM 64x48 (fixed)", "external",
           "readback: buffer 12288 bytes external",
@@ -151,7 +150,10 @@ TEST_F(GraphVk, ThreePassesClearSampleReadBack) {
           "barrier result: TRANSFER_SRC_OPTIMAL -> COLOR_ATTACHMENT_OPTIMAL",
           "barrier result: COLOR_ATTACHMENT_OPTIMAL -> TRANSFER_SRC_OPTIMAL",
           "barrier readback: buffer, COPY|BLIT|RESOLVE|CLEAR/TRANSFER_WRITE -> HOST/HOST_READ",
-          "read colour: sampled (fragment) [SHADER_READ_ONLY_OPTIMAL]"})
+          "read colour: sampled (fragment) [SHADER_READ_ONLY_OPTIMAL]",
+          // The graph begins each rendering: cleared, and stored for the pass that samples it.
+          "renders 64x48: colour colour (clear, store)",
+          "renders 64x48: colour result (clear, store)"})
         EXPECT_NE(second_dump.find(expected), std::string::npos) << expected << "\n" << second_dump;
     std::ostringstream streamed;
     streamed << *graph_;

@@ -38,17 +38,15 @@ class GraphReadback : public GraphVk {
 // "clear" fills an 8x4 image; "readback_image" (transfer, read-back role) copies it out.
 ImageHandle clear_and_read_back(RenderGraph& g, HostReadback& readback, VkClearValue value) {
     ImageHandle image;
-    g.add_pass("clear", [&](PassBuilder& b) {
-        image = b.create_image("image", {.format = VK_FORMAT_R8G8B8A8_UNORM,
-                                         .size = ImageSize::fixed(8, 4),
-                                         .semantic = Semantic::LdrColor});
-        b.write(image, Access::ColorAttachment);
-        return [image, value](PassContext& ctx) {
-            begin_clear(ctx, image, value);
-            vk::fn().cmd_end_rendering(ctx.cmd());
-        };
-    });
-    g.set_role(PassRole::ReadBack);
+    add(
+        g, "clear",
+        [&](PassBuilder& b) {
+            image = b.create_image("image", {.format = VK_FORMAT_R8G8B8A8_UNORM,
+                                             .size = ImageSize::fixed(8, 4),
+                                             .semantic = Semantic::LdrColor});
+            clear_attachment(b, image, value, false);
+        },
+        nullptr);
     readback.add_copy_pass(g, "readback_image", {image});
     return image;
 }
@@ -95,16 +93,13 @@ TEST_F(GraphReadback, StorageBuffersStartZeroedByTheHost) {
         BufferHandle counters;
         run({16, 16}, [&](RenderGraph& g) {
             counters = readback_->import_storage(g, "counters", 16, 16);
-            g.add_pass(
-                "fill",
-                [&](PassBuilder& b) {
-                    b.write(counters, Access::TransferDst);
-                    return [counters, fill_from](PassContext& ctx) {
-                        vkCmdFillBuffer(ctx.cmd(), ctx.buffer(counters), fill_from, 16 - fill_from,
-                                        0x11111111u);
-                    };
-                },
-                PassKind::Transfer);
+            add(
+                g, {"fill", PassKind::Transfer},
+                [&](PassBuilder& b) { b.write(counters, Access::TransferDst); },
+                [counters, fill_from](PassContext& ctx) {
+                    vkCmdFillBuffer(ctx.cmd(), ctx.buffer(counters), fill_from, 16 - fill_from,
+                                    0x11111111u);
+                });
         });
         const std::span<const std::byte> bytes = readback_->buffer_bytes(counters);
         ASSERT_EQ(bytes.size(), 16u);
@@ -119,20 +114,19 @@ TEST_F(GraphReadback, TransferPassesHaveNoAttachmentsOrShaders) {
     vk::DestroyList retired;
     graph_->begin_frame({16, 16}, retired);
     ImageHandle image;
-    graph_->add_pass(
-        "make",
+    add(
+        *graph_, "make",
         [&](PassBuilder& b) {
             image = b.create_image(
                 "image", {.format = VK_FORMAT_R8G8B8A8_UNORM, .size = ImageSize::relative(1.0f)});
-            b.write(image, Access::ColorAttachment);
+            b.color(image);
         },
         nullptr);
     auto transfer = [&](std::function<void(PassBuilder&)> setup) {
-        graph_->add_pass("copy", setup, nullptr, PassKind::Transfer);
+        add(*graph_, {"copy", PassKind::Transfer}, setup, nullptr);
     };
-    expect_error(
-        [&] { transfer([&](PassBuilder& b) { b.write(image, Access::ColorAttachment); }); },
-        "a transfer pass has no attachments");
+    expect_error([&] { transfer([&](PassBuilder& b) { b.color(image); }); },
+                 "a transfer pass has no attachments");
     expect_error([&] { transfer([&](PassBuilder& b) { b.read(image, Access::Sampled); }); },
                  "a transfer pass runs no shader (sampled)");
 }
@@ -141,15 +135,14 @@ TEST_F(GraphReadback, ADependencyNeedsBothAccessesDeclared) {
     vk::DestroyList retired;
     graph_->begin_frame({16, 16}, retired);
     ImageHandle image;
-    graph_->add_pass(
-        "steps",
+    add(
+        *graph_, {"steps", PassKind::Compute},
         [&](PassBuilder& b) {
             image = b.create_image(
                 "image", {.format = VK_FORMAT_R8G8B8A8_UNORM, .size = ImageSize::relative(1.0f)});
             b.write(image, Access::StorageWrite);
         },
-        [&](PassContext& ctx) { ctx.dependency(image, Access::StorageWrite, Access::Sampled); },
-        PassKind::Compute);
+        [&](PassContext& ctx) { ctx.dependency(image, Access::StorageWrite, Access::Sampled); });
     graph_->compile();
     expect_error([&] { context_->submit_once([&](VkCommandBuffer cmd) { graph_->execute(cmd); }); },
                  "pass 'steps', 'image': dependency() between accesses it did not declare");

@@ -14,16 +14,15 @@ namespace {
 ImageHandle add_clear(RenderGraph& graph, const std::string& name, const ImageDesc& desc) {
     ImageHandle image;
     const bool depth = desc.format == VK_FORMAT_D32_SFLOAT;
-    graph.add_pass("clear " + name, [&](PassBuilder& b) {
-        image = b.create_image(name, desc);
-        b.write(image, depth ? Access::DepthAttachment : Access::ColorAttachment);
-        return [image, depth](PassContext& ctx) {
+    add(
+        graph, "clear " + name,
+        [&](PassBuilder& b) {
+            image = b.create_image(name, desc);
             VkClearValue clear = colour(0, 0, 0);
             if (depth) clear.depthStencil = {0.0f, 0};
-            begin_clear(ctx, image, clear);
-            vk::fn().cmd_end_rendering(ctx.cmd());
-        };
-    });
+            clear_attachment(b, image, clear, depth);
+        },
+        nullptr);
     return image;
 }
 
@@ -92,29 +91,33 @@ HistoryFrame run_history_frame(
         const BufferHandle rb = g.import_buffer(
             "readback", {readback.handle(), readback.size(), {}, ExternalState::host_read()});
         HistoryImage history;
-        g.add_pass("peek", [&](PassBuilder& b) {
-            history = b.create_history("accum", {.format = VK_FORMAT_R8G8B8A8_UNORM,
-                                                 .size = ImageSize::relative(1.0f),
-                                                 .semantic = Semantic::AO});
-            b.read(history.previous, Access::TransferSrc);
-            b.write(rb, Access::TransferDst);
-            return [&out, history, rb](PassContext& ctx) {
-                out.valid = ctx.history_valid(history);
+        struct Peek {
+            HistoryImage history;
+        };
+        const Peek& peek = g.add_pass<Peek>(
+            {"peek", PassKind::Transfer},
+            [&](PassBuilder& b, Peek& d) {
+                d.history = b.create_history("accum", {.format = VK_FORMAT_R8G8B8A8_UNORM,
+                                                       .size = ImageSize::relative(1.0f),
+                                                       .semantic = Semantic::AO});
+                b.read(d.history.previous, Access::TransferSrc);
+                b.write(rb, Access::TransferDst);
+            },
+            [&out, rb](PassContext& ctx, const Peek& d) {
+                out.valid = ctx.history_valid(d.history);
                 VkBufferImageCopy region{};
                 region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
                 region.imageExtent = {1, 1, 1};
-                vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(history.previous),
-                                       ctx.layout(history.previous), ctx.buffer(rb), 1, &region);
-            };
-        });
-        // The three-argument form: history was assigned above, so copying it here is fine.
-        g.add_pass(
-            "accumulate",
-            [&](PassBuilder& b) { b.write(history.current, Access::ColorAttachment); },
-            [history, k](PassContext& ctx) {
-                begin_clear(ctx, history.current, colour(float((k + 1) * 20) / 255.0f, 0, 0));
-                vk::fn().cmd_end_rendering(ctx.cmd());
+                vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(d.history.previous),
+                                       ctx.layout(d.history.previous), ctx.buffer(rb), 1, &region);
             });
+        const ImageHandle current = peek.history.current;
+        add(
+            g, "accumulate",
+            [&](PassBuilder& b) {
+                clear_attachment(b, current, colour(float((k + 1) * 20) / 255.0f, 0, 0), false);
+            },
+            nullptr);
     });
     readback.invalidate();
     out.previous = uint8_t(readback.mapped()[0]);
@@ -156,47 +159,60 @@ TEST_F(GraphVk, HistoryPingPongsAndResetsOnCutAndResize) {
 
 TEST_F(GraphVk, WrongDeclarationsAreClearErrors) {
     vk::DestroyList retired;
-    expect_error([&] { graph_->add_pass("early", nullptr, nullptr); }, "begin_frame");
+    expect_error(
+        [&] {
+            add(
+                *graph_, "early", [](PassBuilder&) {}, nullptr);
+        },
+        "begin_frame");
     graph_->begin_frame({16, 16}, retired);
     ImageHandle colour_image, depth_image;
     BufferHandle buffer;
-    graph_->add_pass(
-        "make",
+    add(
+        *graph_, "make",
         [&](PassBuilder& b) {
             colour_image = b.create_image(
                 "colour", {.format = VK_FORMAT_R8G8B8A8_UNORM, .size = ImageSize::relative(1.0f)});
             depth_image = b.create_image(
                 "depth", {.format = VK_FORMAT_D32_SFLOAT, .size = ImageSize::relative(1.0f)});
             buffer = b.create_buffer("counts", {.size = 64});
-            b.write(colour_image, Access::ColorAttachment);
+            b.color(colour_image);
         },
         nullptr);
     auto in_pass = [&](std::function<void(PassBuilder&)> setup,
                        PassKind kind = PassKind::Graphics) {
-        graph_->add_pass("bad", setup, nullptr, kind);
+        add(*graph_, {"bad", kind}, setup, nullptr);
     };
     expect_error([&] { in_pass([&](PassBuilder& b) { b.write(colour_image, Access::Sampled); }); },
                  "pass 'bad', 'colour': sampled is not a write");
     expect_error(
         [&] { in_pass([&](PassBuilder& b) { b.read(colour_image, Access::ColorAttachment); }); },
-        "colour attachment is a write");
+        "colour attachment is an attachment: declare it with color()");
     expect_error(
         [&] { in_pass([&](PassBuilder& b) { b.read(colour_image, Access::VertexRead); }); },
         "vertex input does not apply to an image");
     expect_error([&] { in_pass([&](PassBuilder& b) { b.read(buffer, Access::Sampled); }); },
                  "sampled does not apply to a buffer");
+    expect_error([&] { in_pass([&](PassBuilder& b) { b.depth(colour_image); }); },
+                 "does not fit format R8G8B8A8_UNORM");
+    expect_error([&] { in_pass([&](PassBuilder& b) { b.color(depth_image); }); },
+                 "does not fit format D32_SFLOAT");
     expect_error(
-        [&] { in_pass([&](PassBuilder& b) { b.write(colour_image, Access::DepthAttachment); }); },
-        "does not fit format R8G8B8A8_UNORM");
-    expect_error(
-        [&] { in_pass([&](PassBuilder& b) { b.write(depth_image, Access::ColorAttachment); }); },
-        "does not fit format D32_SFLOAT");
+        [&] { in_pass([&](PassBuilder& b) { b.color(colour_image); }, PassKind::Compute); },
+        "a compute pass has no attachments");
     expect_error(
         [&] {
-            in_pass([&](PassBuilder& b) { b.write(colour_image, Access::ColorAttachment); },
-                    PassKind::Compute);
+            in_pass([&](PassBuilder& b) { b.render_area({16, 16}); }, PassKind::Transfer);
         },
-        "a compute pass has no attachments");
+        "a transfer pass renders nothing");
+    expect_error(
+        [&] {
+            in_pass([&](PassBuilder& b) {
+                b.depth(depth_image);
+                b.depth(depth_image, {.read_only = true});
+            });
+        },
+        "declares a second depth attachment");
     expect_error(
         [&] {
             in_pass([&](PassBuilder& b) {
@@ -212,19 +228,20 @@ TEST_F(GraphVk, RecordingAnUndeclaredResourceThrows) {
     vk::DestroyList retired;
     graph_->begin_frame({16, 16}, retired);
     ImageHandle a, b;
-    graph_->add_pass(
-        "make",
+    add(
+        *graph_, "make",
         [&](PassBuilder& pb) {
             a = pb.create_image(
                 "a", {.format = VK_FORMAT_R8G8B8A8_UNORM, .size = ImageSize::relative(1.0f)});
             b = pb.create_image(
                 "b", {.format = VK_FORMAT_R8G8B8A8_UNORM, .size = ImageSize::relative(1.0f)});
-            pb.write(a, Access::ColorAttachment);
-            pb.write(b, Access::ColorAttachment);
+            pb.color(a, {.load = Load::Clear});
+            pb.color(b, {.load = Load::Clear});
         },
         nullptr);
-    graph_->add_pass(
-        "sneaky", [&](PassBuilder& pb) { pb.read(a, Access::Sampled); },
+    add(
+        *graph_, {"sneaky", PassKind::Compute},
+        [&](PassBuilder& pb) { pb.read(a, Access::Sampled); },
         [&](PassContext& ctx) { (void)ctx.view(b); });
     graph_->compile();
     expect_error([&] { context_->submit_once([&](VkCommandBuffer cmd) { graph_->execute(cmd); }); },

@@ -34,6 +34,45 @@ PassInfo subpass(const std::string& name, uint32_t index, std::vector<AccessInfo
     return p;
 }
 
+// Each pass's attachment declarations from its accesses, as PassBuilder::color / depth /
+// input / resolve would make them (a resolve takes the pass's first multisampled colour); a
+// pass named "gbuffer" clears what it attaches (seed 002's subpass 0).
+void attach(std::vector<PassInfo>& passes, const std::vector<ResourceInfo>& resources) {
+    using Kind = AttachmentDecl::Kind;
+    for (PassInfo& p : passes) {
+        p.attachments.clear();
+        const Load load = p.name == "gbuffer" ? Load::Clear : Load::Keep;
+        for (const AccessInfo& a : p.accesses) {
+            if (a.access == Access::ColorAttachment)
+                p.attachments.push_back(
+                    {.kind = Kind::Color, .resource = a.resource, .load = load});
+            if (a.access == Access::DepthAttachment || a.access == Access::DepthReadOnly)
+                p.attachments.push_back({.kind = Kind::Depth,
+                                         .resource = a.resource,
+                                         .load = load,
+                                         .read_only = a.access == Access::DepthReadOnly});
+            if (a.access == Access::InputAttachment)
+                p.attachments.push_back({.kind = Kind::Input, .resource = a.resource});
+            if (a.access != Access::ResolveDst) continue;
+            uint32_t from = kNoResource;
+            for (const AccessInfo& c : p.accesses)
+                if (c.access == Access::ColorAttachment && resources[c.resource].multisampled() &&
+                    from == kNoResource)
+                    from = c.resource;
+            p.attachments.push_back({.kind = Kind::Resolve,
+                                     .resource = a.resource,
+                                     .resolves = from,
+                                     .mode = VK_RESOLVE_MODE_AVERAGE_BIT});
+        }
+    }
+}
+
+std::vector<GroupPlan> groups_of(std::vector<PassInfo>& passes,
+                                 const std::vector<ResourceInfo>& resources) {
+    attach(passes, resources);
+    return find_subpass_groups(resources, passes);
+}
+
 PassInfo alone(const std::string& name, std::vector<AccessInfo> accesses) {
     PassInfo p;
     p.name = name;
@@ -58,7 +97,6 @@ struct SeedFrame {
                                     {kNormals, Access::ColorAttachment},
                                     {kRoughness, Access::ColorAttachment},
                                     {kDepth, Access::DepthAttachment}});
-        for (uint32_t r : {kLight, kNormals, kRoughness, kDepth}) gbuffer.clears.push_back({r, {}});
         passes = {gbuffer,
                   subpass("lighting", 1,
                           {{kLight, Access::ColorAttachment},
@@ -69,7 +107,7 @@ struct SeedFrame {
     }
 
     std::vector<GroupPlan> plan() {
-        std::vector<GroupPlan> groups = find_subpass_groups(resources, passes);
+        std::vector<GroupPlan> groups = groups_of(passes, resources);
         BarrierPlan barriers = plan_barriers(resources, passes, store_writes(groups, passes));
         plan_subpass_groups(groups, resources, passes, barriers);
         for (uint32_t p = 0; p < 2; ++p) EXPECT_TRUE(barriers.passes[p].barriers.empty());
@@ -132,7 +170,7 @@ TEST(SubpassGroup, AStoredAttachmentIsWrittenByTheStoreForWhatComesNext) {
     SeedFrame frame;
     // The depth read back after the frame: stored, and the copy waits for the store's write.
     frame.passes.push_back(alone("readback", {{SeedFrame::kDepth, Access::TransferSrc}}));
-    std::vector<GroupPlan> groups = find_subpass_groups(frame.resources, frame.passes);
+    std::vector<GroupPlan> groups = groups_of(frame.passes, frame.resources);
     BarrierPlan plan =
         plan_barriers(frame.resources, frame.passes, store_writes(groups, frame.passes));
     plan_subpass_groups(groups, frame.resources, frame.passes, plan);
@@ -161,17 +199,17 @@ TEST(SubpassGroup, MalformedGroupsAreErrors) {
     {  // a group that comes back after another pass
         SeedFrame frame;
         frame.passes.push_back(subpass("again", 1, {{SeedFrame::kLight, Access::ColorAttachment}}));
-        EXPECT_THROW(find_subpass_groups(frame.resources, frame.passes), ds::Error);
+        EXPECT_THROW(groups_of(frame.passes, frame.resources), ds::Error);
     }
     {  // subpass indices skip
         SeedFrame frame;
         frame.passes[1].subpass = 2;
-        EXPECT_THROW(find_subpass_groups(frame.resources, frame.passes), ds::Error);
+        EXPECT_THROW(groups_of(frame.passes, frame.resources), ds::Error);
     }
     {  // an input attachment outside a group
         SeedFrame frame;
         frame.passes[2].accesses = {{SeedFrame::kNormals, Access::InputAttachment}};
-        EXPECT_THROW(find_subpass_groups(frame.resources, frame.passes), ds::Error);
+        EXPECT_THROW(groups_of(frame.passes, frame.resources), ds::Error);
     }
     {  // a buffer one subpass writes and the next reads: no barrier fits in a render pass
         SeedFrame frame;

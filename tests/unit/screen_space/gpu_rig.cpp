@@ -210,7 +210,6 @@ std::vector<graph::ImageHandle> GpuRig::add_read_back(graph::RenderGraph& graph,
         if (!images.back().valid()) throw Error("read-back: no image '" + name + "' in the graph");
     }
     if (images.empty()) return images;
-    graph.set_role(graph::PassRole::ReadBack);
     readback_->add_copy_pass(graph, "readback", images);
     return images;
 }
