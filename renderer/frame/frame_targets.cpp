@@ -117,9 +117,10 @@ void FrameTargets::import(graph::RenderGraph& graph, const passes::FrameOptions&
 
 void FrameTargets::bind(graph::RenderGraph& graph, const passes::FrameResources& res) const {
     graph.bind_import(res.final_image, final_.handle(), final_.view());
-    graph.bind_import(res.depth, depth_.handle(), depth_.view());
+    graph.bind_import(res.depth, depth_.handle(), depth_.view(), depth_.attachment_view());
     if (res.msaa_depth.valid())
-        graph.bind_import(res.msaa_depth, msaa_depth_.handle(), msaa_depth_.view());
+        graph.bind_import(res.msaa_depth, msaa_depth_.handle(), msaa_depth_.view(),
+                          msaa_depth_.attachment_view());
     if (res.msaa_hdr.valid()) graph.bind_import(res.msaa_hdr, msaa_hdr_.handle(), msaa_hdr_.view());
 }
 

@@ -96,15 +96,18 @@ ImageHandle RenderGraph::import_image(const std::string& name, const ExternalIma
     const uint32_t index = add_resource(std::move(info));
     bindings_[index].image = image.image;
     bindings_[index].view = image.view;
+    bindings_[index].attachment_view = image.attachment_view;
     return {index};
 }
 
-void RenderGraph::bind_import(ImageHandle image, VkImage handle, VkImageView view) {
+void RenderGraph::bind_import(ImageHandle image, VkImage handle, VkImageView view,
+                              VkImageView attachment_view) {
     require_declaring("bind_import");
     if (resource(image.index, true, "bind_import").lifetime != Lifetime::External)
         throw Error("render graph: bind_import on an image the graph owns");
     bindings_[image.index].image = handle;
     bindings_[image.index].view = view;
+    bindings_[image.index].attachment_view = attachment_view;
 }
 
 BufferHandle RenderGraph::import_buffer(const std::string& name, const ExternalBuffer& buffer) {
@@ -175,6 +178,7 @@ void RenderGraph::realize_resources() {
             CachedImage& entry = cache_.image(image_key(r.name, r));
             b.image = entry.image.handle();
             b.view = entry.image.view();
+            b.attachment_view = entry.image.attachment_view();
             b.lazily_allocated = entry.image.lazily_allocated();
             r.initial = entry.state.discarded();
             b.persistent = &entry.state;
@@ -198,10 +202,18 @@ void RenderGraph::realize_history(HistoryRequest& h) {
     HistoryPair& pair = cache_.history(image_key(h.name, current));
     h.pair = &pair;
     const uint32_t p = pair.previous(), c = pair.current;
-    bindings_[h.previous] = {pair.images[p].handle(), pair.images[p].view(), VK_NULL_HANDLE,
-                             &pair.states[p]};
-    bindings_[h.current] = {pair.images[c].handle(), pair.images[c].view(), VK_NULL_HANDLE,
-                            &pair.states[c]};
+    bindings_[h.previous] = {pair.images[p].handle(),
+                             pair.images[p].view(),
+                             VK_NULL_HANDLE,
+                             &pair.states[p],
+                             false,
+                             pair.images[p].attachment_view()};
+    bindings_[h.current] = {pair.images[c].handle(),
+                            pair.images[c].view(),
+                            VK_NULL_HANDLE,
+                            &pair.states[c],
+                            false,
+                            pair.images[c].attachment_view()};
     previous.history_valid = pair.valid;
     previous.initial = pair.valid ? pair.states[p] : pair.states[p].discarded();
     current.initial = pair.states[c].discarded();
@@ -223,8 +235,8 @@ void RenderGraph::record_barriers(VkCommandBuffer cmd, std::span<const Barrier> 
             v.newLayout = b.new_layout;
             v.srcQueueFamilyIndex = v.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
             v.image = bindings_[b.resource].image;
-            v.subresourceRange = {format::aspect_flags(r.image.format), 0, VK_REMAINING_MIP_LEVELS,
-                                  0, VK_REMAINING_ARRAY_LAYERS};
+            v.subresourceRange = {r.aspects(), 0, VK_REMAINING_MIP_LEVELS, 0,
+                                  VK_REMAINING_ARRAY_LAYERS};
             images.push_back(v);
         } else {
             auto v = vk::make<VkBufferMemoryBarrier2>(VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2);
@@ -314,8 +326,8 @@ void RenderGraph::begin_rendering(VkCommandBuffer cmd, uint32_t pass) const {
     auto attachment = [&](const RenderingAttachment& a) {
         const bool unused = a.resource == kNoResource;
         return rendering_attachment(
-            a, unused ? VK_NULL_HANDLE : bindings_[a.resource].view,
-            a.resolve == kNoResource ? VK_NULL_HANDLE : bindings_[a.resolve].view);
+            a, unused ? VK_NULL_HANDLE : bindings_[a.resource].attached(),
+            a.resolve == kNoResource ? VK_NULL_HANDLE : bindings_[a.resolve].attached());
     };
     std::vector<VkRenderingAttachmentInfo> colors;
     for (const RenderingAttachment& a : r.colors) colors.push_back(attachment(a));
@@ -343,7 +355,8 @@ void RenderGraph::execute_group(VkCommandBuffer cmd, uint32_t index) {
     for (uint32_t p = g.first_pass; p <= g.last_pass; ++p)
         for (const auto& prologue : prologues_[p]) prologue(cmd);
     std::vector<VkImageView> views;
-    for (const GroupAttachment& a : g.attachments) views.push_back(bindings_[a.resource].view);
+    for (const GroupAttachment& a : g.attachments)
+        views.push_back(bindings_[a.resource].attached());
     render_passes_.begin(cmd, group_passes_[index], g, views, *retired_);
     for (uint32_t s = 0; s < g.subpasses.size(); ++s) {
         if (s > 0) {

@@ -170,7 +170,8 @@ class RenderGraph {
     BufferHandle import_buffer(const std::string& name, const ExternalBuffer& buffer);
     // An image imported before it existed (null handles: the frame's targets, made once the
     // frame's memory estimate passed) gets its handles here, before compile().
-    void bind_import(ImageHandle image, VkImage handle, VkImageView view);
+    void bind_import(ImageHandle image, VkImage handle, VkImageView view,
+                     VkImageView attachment_view = VK_NULL_HANDLE);
     // render_path=subpass: runs of graphics passes that share a depth attachment are planned
     // as the subpasses of one render pass named `group` (subpass.h); empty (begin_frame()'s
     // default): every pass renders on its own.
@@ -221,6 +222,9 @@ class RenderGraph {
         VkBuffer buffer = VK_NULL_HANDLE;
         ResourceState* persistent = nullptr;  // graph-owned: where the end state goes
         bool lazily_allocated = false;
+        // What renderings attach (vk::Image::attachment_view); null: `view`.
+        VkImageView attachment_view = VK_NULL_HANDLE;
+        VkImageView attached() const { return attachment_view ? attachment_view : view; }
     };
     struct HistoryRequest {
         std::string name;

@@ -107,6 +107,10 @@ bool ResourceInfo::depth() const {
                         (VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT)) != 0;
 }
 
+VkImageAspectFlags ResourceInfo::aspects() const {
+    return is_image ? format::aspect_flags(image.format) : 0;
+}
+
 std::vector<PassUse> merge_uses(const PassInfo& pass, std::span<const ResourceInfo> resources) {
     const bool resolves =
         std::any_of(pass.accesses.begin(), pass.accesses.end(),

@@ -51,6 +51,11 @@ struct ResourceInfo {
     std::optional<ExternalState> final;  // externals only
 
     bool depth() const;  // a depth/stencil format
+    // The aspects the graph plans and transitions: every aspect of the format. A depth-stencil
+    // image's stencil moves with its depth: its sampled view names depth alone, but every
+    // rendering attaches a view of both (Binding::attachment_view), so a render pass's own
+    // transitions move both aspects as the graph's barriers do (one layout, per image).
+    VkImageAspectFlags aspects() const;
     bool multisampled() const { return is_image && image.samples != VK_SAMPLE_COUNT_1_BIT; }
 };
 

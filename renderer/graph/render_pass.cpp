@@ -47,8 +47,7 @@ std::vector<VkAttachmentReference2> references(const std::vector<AttachmentRef>&
         ref.attachment = r.attachment;
         ref.layout = r.attachment == UINT32_MAX ? VK_IMAGE_LAYOUT_UNDEFINED : r.layout;
         if (r.attachment != UINT32_MAX)
-            ref.aspectMask =
-                format::aspect_flags(resources[g.attachments[r.attachment].resource].image.format);
+            ref.aspectMask = resources[g.attachments[r.attachment].resource].aspects();
         out.push_back(ref);
     }
     return out;

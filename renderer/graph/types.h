@@ -81,6 +81,8 @@ struct ExternalImage {
     ImageDesc desc;  // desc.size must be fixed(): the graph does not own (or resize) it
     ExternalState initial;
     std::optional<ExternalState> final;  // none: left as the last pass used it
+    // What renderings attach, where it is not `view` (both aspects of a depth/stencil format).
+    VkImageView attachment_view = VK_NULL_HANDLE;
 };
 
 struct ExternalBuffer {

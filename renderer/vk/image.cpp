@@ -105,6 +105,12 @@ Image::Image(Context& context, const ImageDesc& desc) : context_(&context), desc
         if (aspect & VK_IMAGE_ASPECT_DEPTH_BIT) aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
         view.subresourceRange = {aspect, 0, desc.mip_levels, 0, 1};
         check(vkCreateImageView(device, &view, nullptr, &view_), "vkCreateImageView");
+        if (aspect != aspect_flags(desc.format) &&
+            (desc.usage & VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)) {
+            view.subresourceRange.aspectMask = aspect_flags(desc.format);
+            check(vkCreateImageView(device, &view, nullptr, &attachment_view_),
+                  "vkCreateImageView");
+        }
     } catch (...) {
         reset();
         throw;
@@ -119,6 +125,7 @@ Image& Image::operator=(Image&& other) noexcept {
     context_ = std::exchange(other.context_, nullptr);
     image_ = std::exchange(other.image_, VK_NULL_HANDLE);
     view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+    attachment_view_ = std::exchange(other.attachment_view_, VK_NULL_HANDLE);
     desc_ = std::exchange(other.desc_, ImageDesc{});
     allocation_ = std::exchange(other.allocation_, Allocation{});
     return *this;
@@ -130,9 +137,10 @@ void Image::reset() {
     if (view_) context_->clear_name(VK_OBJECT_TYPE_IMAGE_VIEW, view_);
     if (image_) context_->clear_name(VK_OBJECT_TYPE_IMAGE, image_);
     if (view_) vkDestroyImageView(device, view_, nullptr);
+    if (attachment_view_) vkDestroyImageView(device, attachment_view_, nullptr);
     if (image_) vkDestroyImage(device, image_, nullptr);
     context_->allocator().free(allocation_);
-    view_ = VK_NULL_HANDLE;
+    view_ = attachment_view_ = VK_NULL_HANDLE;
     image_ = VK_NULL_HANDLE;
     context_ = nullptr;
 }

@@ -22,8 +22,8 @@ struct ImageDesc {
 };
 
 uint32_t mip_level_count(uint32_t width, uint32_t height);  // full chain down to 1x1
-// Every aspect of the format (barriers), from the format table; views of depth/stencil
-// formats use depth only.
+// Every aspect of the format (barriers), from the format table; the view of a depth/stencil
+// format names depth only (a sampled view may name one aspect), its attachment view both.
 using format::aspect_flags;
 
 class Image {
@@ -40,6 +40,9 @@ class Image {
     explicit operator bool() const { return image_ != VK_NULL_HANDLE; }
     VkImage handle() const { return image_; }
     VkImageView view() const { return view_; }
+    // What a rendering attaches: of a depth/stencil attachment image, a view of both aspects, so
+    // a render pass's layout transitions move both, as every barrier does; else view().
+    VkImageView attachment_view() const { return attachment_view_ ? attachment_view_ : view_; }
     VkFormat format() const { return desc_.format; }
     uint32_t width() const { return desc_.width; }
     uint32_t height() const { return desc_.height; }
@@ -53,6 +56,7 @@ class Image {
     Context* context_ = nullptr;
     VkImage image_ = VK_NULL_HANDLE;
     VkImageView view_ = VK_NULL_HANDLE;
+    VkImageView attachment_view_ = VK_NULL_HANDLE;  // depth/stencil attachments only
     ImageDesc desc_;
     Allocation allocation_;
 };

@@ -138,3 +138,31 @@ TEST_F(RenderPath, WithoutThePrepassTheDynamicPathRuns) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 25: the graph begins every rendering and render pass, so each combination of path,
+// depth format (D24_UNORM_S8_UINT's stencil aspect included), sample count and prepass mode
+// must be validation clean on a scene with everything (atrium) and one with coplanar overlays
+// (decals). The fixture fails the test on any message; the trace names the combination.
+TEST_F(RenderPath, EveryPathDepthFormatSampleCountAndPrepassModeIsValidationClean) {
+    std::vector<int> counts = {1};
+    if (has_msaa4()) counts.push_back(4);
+    for (const char* scene : {"atrium", "decals"})
+        for (const char* path : {"dynamic", "subpass"})
+            for (const char* depth : {"d32f", "d24", "d16"})
+                for (int msaa : counts)
+                    for (const char* mode : {"gbuffer", "depth"}) {
+                        const std::vector<std::string> settings = {
+                            std::string("render_path=") + path,
+                            std::string("depth_format=") + depth, "msaa=" + std::to_string(msaa),
+                            std::string("prepass_mode=") + mode};
+                        SCOPED_TRACE(std::string(scene) + " " + path + " " + depth + " msaa " +
+                                     std::to_string(msaa) + " " + mode);
+                        const FrameResult f = render(scene, settings, 160, 90, ReadBack::No);
+                        EXPECT_EQ(f.tiler.has_value(), std::string(path) == "subpass");
+                        ASSERT_EQ(renderer_->validation_message_count(), 0u);
+                    }
+}
+
+}  // namespace
