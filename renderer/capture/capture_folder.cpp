@@ -12,18 +12,9 @@
 #include "renderer/common/quoted.h"
 #include "renderer/scene/image_checks.h"
 
-// A private copy of stb_image (static functions), PNG only, for final.png; other libraries in
-// the process carry their own.
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#define STBI_NO_STDIO
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+// Debian's stb_image (libstb) decodes final.png; the PNG signature is checked first, since
+// stb reads other formats too.
 #include <stb/stb_image.h>
-#pragma GCC diagnostic pop
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -173,7 +164,8 @@ Rgba8Image read_png_rgba8(const fs::path& path) {
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int size = int(bytes.size());
     int w = 0, h = 0, comp = 0;
-    if (!stbi_info_from_memory(data, size, &w, &h, &comp)) fail(path, "is not a PNG");
+    if (!scene::is_png(data, size) || !stbi_info_from_memory(data, size, &w, &h, &comp))
+        fail(path, "is not a PNG");
     if (w < 1 || h < 1 || w > kMaxSide || h > kMaxSide)
         fail(path, "PNG of " + std::to_string(w) + "x" + std::to_string(h) + ": outside 1x1.." +
                        std::to_string(kMaxSide) + "x" + std::to_string(kMaxSide));

@@ -6,10 +6,7 @@
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 
-// Static, so another library in the process may carry its own copy of stb_image_write.
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb/stb_image_write.h>
+#include <stb/stb_image_write.h>  // Debian's libstb
 
 namespace ds::capture {
 

@@ -1,10 +1,11 @@
 #pragma once
-// SHA-256 (FIPS 180-4), for what a capture records of a scene file so that a replay can tell
-// the file changed. Small and dependency-free: the only hash the project needs.
+// SHA-256, for what a capture records of a scene file so that a replay can tell the file
+// changed: Nettle's (Debian's nettle-dev), behind this small interface.
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -13,15 +14,15 @@ namespace ds {
 class Sha256 {
   public:
     Sha256();
+    ~Sha256();
+    Sha256(const Sha256&) = delete;
+    Sha256& operator=(const Sha256&) = delete;
     void update(const void* data, size_t bytes);
     std::array<uint8_t, 32> finish();  // once; the object is spent afterwards
 
   private:
-    void block(const uint8_t* p);
-    std::array<uint32_t, 8> h_;
-    std::array<uint8_t, 64> buffer_{};
-    size_t used_ = 0;
-    uint64_t total_ = 0;
+    struct State;
+    std::unique_ptr<State> state_;
 };
 
 std::string to_hex(const std::array<uint8_t, 32>& digest);

@@ -171,7 +171,10 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
 
 DepthPrepass::Draw DepthPrepass::make_draw(const Variant& opaque, const Variant& tested,
                                            bool split) {
-    Draw draw{.opaque = split ? opaque : tested, .mask = tested, .split = split};
+    Draw draw;
+    draw.opaque = split ? opaque : tested;
+    draw.mask = tested;
+    draw.split = split;
     draw.opaque_info = pipelines_.info(draw.opaque);
     if (split) draw.mask_info = pipelines_.info(tested);
     return draw;

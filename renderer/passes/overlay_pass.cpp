@@ -93,8 +93,11 @@ void OverlayPass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRes
         pipelines_.info(variants.back());
     }
     // Not in the prepass: no prepass normal or roughness.
-    const LightingInputs lighting = {
-        .shadow_map = res.shadow_map, .ao = res.ao, .contact_shadows = res.contact_shadows};
+    const LightingInputs lighting = {.shadow_map = res.shadow_map,
+                                     .normals = {},
+                                     .roughness = {},
+                                     .ao = res.ao,
+                                     .contact_shadows = res.contact_shadows};
     // Not inside the render pass of render_path=subpass: a replay would split it.
     if (in.pixel && !in.options.subpass) add_history(graph, in, res, variants, lighting);
     struct Data {

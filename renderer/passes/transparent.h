@@ -28,7 +28,7 @@ class TransparentPass final : public OverlayPass {
     const CountImages& counts(const FrameResources& res) const override {
         return res.transparent_counts;
     }
-    std::vector<Step> steps() const override { return {{.blend = true}}; }
+    std::vector<Step> steps() const override { return {{.mode = std::nullopt, .blend = true}}; }
     DrawCounts draw(VkCommandBuffer cmd, const FrameInputs& in, VkPipelineLayout layout,
                     const Step& step, DrawHooks hooks) const override;
     RasterizedCount::Selection measured(const FrameInputs& in) const override;

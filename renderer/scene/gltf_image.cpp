@@ -11,21 +11,10 @@
 #include "renderer/scene/import_limits.h"
 #include "renderer/scene/import_util.h"
 
-// A private copy of stb_image (static functions) for the two glTF formats. Other libraries in
-// the process may carry their own stb_image; static linkage keeps them apart. stb's own cap on
-// dimensions (2^24) stays above ours, so that stbi_info reports a large header and the message
-// can say which limit it passes.
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#define STBI_ONLY_JPEG
-#define STBI_NO_STDIO
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+// Debian's stb_image (libstb), which decodes more than the two glTF formats: decode() takes
+// PNG and JPEG only. stb's own cap on dimensions (2^24) stays above ours, so that stbi_info
+// reports a large header and the message can say which limit it passes.
 #include <stb/stb_image.h>
-#pragma GCC diagnostic pop
 
 namespace ds::scene::detail {
 namespace {
@@ -51,6 +40,8 @@ bool read_header(const unsigned char* bytes, int size, int& w, int& h) {
 void decode(tinygltf::Image& image, int req_width, int req_height, const unsigned char* bytes,
             int size, ImageBudget& budget) {
     if (size <= 0) fail("empty image");
+    if (!is_png(bytes, size) && !is_jpeg(bytes, size))
+        fail("not a PNG or JPEG image (neither signature)");
     // Before stb reads the header: stbi_info already builds the tables it meets before SOF.
     if (is_jpeg(bytes, size)) check_jpeg_segments(bytes, size);
     int w = 0;

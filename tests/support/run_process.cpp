@@ -7,8 +7,6 @@
 #include <set>
 #include <sstream>
 
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>
 
 namespace fs = std::filesystem;

@@ -1,7 +1,5 @@
 // The seed frame (seed 000) on the atrium, through the Renderer facade with validation on
 // (synchronization validation included): facts the frame must show, not golden images.
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 
 #include <cstdio>

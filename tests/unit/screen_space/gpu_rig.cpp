@@ -1,6 +1,5 @@
 #include "tests/unit/screen_space/gpu_rig.h"
 
-#define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 
 #include <algorithm>

@@ -1,7 +1,5 @@
 // Smoke render of the seed frame on the real device (lavapipe in CI) with validation on: a
 // ground plane and a textured cube, checked against facts computed from the scene itself.
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 
 #include <cmath>
