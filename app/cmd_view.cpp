@@ -19,10 +19,10 @@
 #include "renderer/common/quoted.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
-#include "renderer/vk/context.h"
 #include "ui/config.h"
 #include "ui/inspector.h"
 #include "ui/presenter.h"
+#include "ui/ui_device.h"
 #include "ui/window.h"
 
 #ifndef DS_CAPTURE_ROOT
@@ -112,17 +112,6 @@ scene::Scene load_start_scene(const Options& o, const Start& start) {
         std::fprintf(stderr, "depthscope: warning: saved scene: %s\n", e.what());
         return scene::load_scene(o.scene, start.settings);
     }
-}
-
-// The UI's own device, on the renderer's physical device: its queue runs UI frames while a
-// scene frame occupies the renderer's (lavapipe executes one queue's submissions in order, on
-// rasterizer threads of each device's own). It takes only CPU pixels from the renderer.
-std::unique_ptr<vk::Context> ui_context(const Options& o) {
-    return std::make_unique<vk::Context>(
-        vk::ContextOptions{.validate = o.validate,
-                           .device = o.device,
-                           .instance_extensions = ui::Window::instance_extensions(),
-                           .swapchain = true});
 }
 
 // The session's first line: the scene and the settings that differ from the defaults.
@@ -312,10 +301,10 @@ int run_view(const Options& o) {
     Renderer renderer(renderer_options);
     // After the renderer, and destroyed before its shutdown: the swapchain and surface before
     // the UI's device.
-    std::unique_ptr<vk::Context> ui_device = ui_context(o);
+    ui::UiDevice ui_device(o.validate, o.device);
     auto window =
         std::make_unique<ui::Window>(o.window.width, o.window.height, "depthscope — " + scene.name);
-    window->attach(*ui_device);
+    window->attach(ui_device.context());
     print_session(scene, start.settings);
 
     ImGuiContext* imgui = ImGui::CreateContext();
@@ -325,7 +314,7 @@ int run_view(const Options& o) {
     ImGui_ImplGlfw_InitForVulkan(window->handle(), true);
     window->route_mouse_buttons();
     {
-        ui::Presenter presenter(*ui_device, window->format());
+        ui::Presenter presenter(ui_device.context(), window->format());
         ui::Inspector::Options options;
         options.capture_root = capture_root();
         options.threaded = true;
@@ -345,8 +334,7 @@ int run_view(const Options& o) {
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext(imgui);
     window.reset();
-    const std::shared_ptr<const std::atomic<uint64_t>> ui_messages =
-        ui_device->validation_counter();
+    const std::shared_ptr<const std::atomic<uint64_t>> ui_messages = ui_device.validation_counter();
     ui_device.reset();
     return validation_exit_code(renderer, true, ui_messages->load());
 }

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "renderer/common/error.h"
+#include "renderer/device_info.h"
 #include "renderer/diagnose/checks.h"
 #include "renderer/passes/clear_counts.h"
 #include "renderer/passes/depth_precision.h"
@@ -11,7 +12,6 @@
 #include "renderer/passes/equal_check.h"
 #include "renderer/passes/zfight.h"
 #include "renderer/settings/frame_knobs.h"
-#include "renderer/vk/capabilities.h"
 
 namespace ds::diagnose {
 namespace {
@@ -34,15 +34,15 @@ struct AdvisorRun {
 };
 
 AdvisorRun run_advisor(Renderer& renderer, const scene::Camera& camera, const Settings& settings,
-                       VkExtent2D size, const vk::DeviceReport& device) {
+                       VkExtent2D size, const DeviceInfo& device) {
     AdvisorRun run;
     if (knob_value(settings, knobs::kRenderPath) == "subpass") {
         run.skipped = "render_path=subpass: count_fragments does not run on it";
         return run;
     }
-    if (!device.fragment_stores_and_atomics) {
+    if (!device.fragment_counts) {
         run.skipped = "needs fragmentStoresAndAtomics (exact fragment counts), which " +
-                      device.candidate.name + " does not offer";
+                      device.name + " does not offer";
         return run;
     }
     const bool prepass = knob_value(settings, knobs::kPrepass);
@@ -80,24 +80,25 @@ std::vector<SkippedDetector> merge_skipped(std::vector<SkippedDetector> device,
 
 }  // namespace
 
-Settings with_measurement_knobs(const Settings& settings, const vk::DeviceReport& device,
+Settings with_measurement_knobs(const Settings& settings, const DeviceInfo& device,
                                 std::vector<SkippedDetector>& skipped) {
     Settings m = settings;
     set_knob(m, passes::DepthPrecisionPass::kKnob, "on");
-    if (!device.fragment_stores_and_atomics) {
+    if (!device.fragment_counts) {
         const std::string why =
-            "needs fragmentStoresAndAtomics, which " + device.candidate.name + " does not offer";
+            "needs fragmentStoresAndAtomics, which " + device.name + " does not offer";
         for (const char* d : {"zfight", "equal_check", "draws"}) skipped.push_back({d, why});
         return m;
     }
     set_knob(m, passes::ClearCountsPass::kKnob, "on");
     set_knob(m, passes::ZfightPass::kKnob, "on");
     set_knob(m, passes::EqualCheckPass::kKnob, "on");
-    if (device.occlusion_query_precise)
+    if (device.draw_counts)
         set_knob(m, passes::DrawCountsPass::kKnob, "on");
     else
-        skipped.push_back({"draws", "count_draws needs occlusionQueryPrecise, which " +
-                                        device.candidate.name + " does not offer"});
+        skipped.push_back(
+            {"draws", "count_draws needs occlusionQueryPrecise and geometryShader, which " +
+                          device.name + " does not offer"});
     return m;
 }
 
@@ -111,7 +112,7 @@ Diagnosis diagnose(Renderer& renderer, const scene::Scene& scene, const scene::C
     d.height = size.height;
     for (const auto& [name, value] : settings.values()) d.settings.push_back({name, value});
 
-    const vk::DeviceReport& device = renderer.device_report();
+    const DeviceInfo device = device_info(renderer);
     std::vector<SkippedDetector> device_skips;
     const Settings measuring = with_measurement_knobs(settings, device, device_skips);
     d.measurement_knobs = added_knobs(measuring, settings);

@@ -16,6 +16,7 @@
 #include <vulkan/vulkan.h>
 
 #include "renderer/capture/advice.h"
+#include "renderer/common/device_info.h"
 #include "renderer/diagnose/finding.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/scene.h"
@@ -29,7 +30,7 @@ inline constexpr capture::AdviceRun kAdviceRun{.frames = 3, .warmup = 1};
 // zfight (which turns surface_id and depth_precision on), equal_check and depth_precision.
 // Each only measures: the frame's image is the same (the passes' own tests say so). Detectors
 // the device cannot run are appended to `skipped` with the reason.
-Settings with_measurement_knobs(const Settings& settings, const vk::DeviceReport& device,
+Settings with_measurement_knobs(const Settings& settings, const DeviceInfo& device,
                                 std::vector<SkippedDetector>& skipped);
 
 // Diagnoses the view of `scene` (already the renderer's: Renderer::set_scene) from `camera` at

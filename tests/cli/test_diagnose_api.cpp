@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "renderer/device_info.h"
 #include "renderer/diagnose/finding.h"
 #include "renderer/diagnose_run.h"
 #include "renderer/renderer.h"
@@ -87,7 +88,7 @@ TEST_F(DiagnoseApi, TheMeasurementKnobsLeaveTheImageAsItWas) {
         renderer_->set_scene(scene_);
         std::vector<diagnose::SkippedDetector> skipped;
         const Settings measuring =
-            diagnose::with_measurement_knobs(settings, renderer_->device_report(), skipped);
+            diagnose::with_measurement_knobs(settings, device_info(*renderer_), skipped);
         EXPECT_TRUE(skipped.empty()) << skipped.front().reason;
         const RenderRequest request{.width = kWidth, .height = kHeight};
         renderer_->camera_cut();
