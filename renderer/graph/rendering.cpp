@@ -10,7 +10,7 @@ namespace {
 
 using Kind = AttachmentDecl::Kind;
 
-bool same_size(VkExtent2D a, VkExtent2D b) {
+bool equal_extent(VkExtent2D a, VkExtent2D b) {
     return a.width == b.width && a.height == b.height;
 }
 
@@ -85,7 +85,7 @@ RenderingPlan plan_rendering(uint32_t pass, std::span<const ResourceInfo> resour
         }
         const ResourceInfo& r = resources[d.resource];
         if (out.extent.width == 0) out.extent = r.extent;
-        if (!same_size(out.extent, r.extent))
+        if (!equal_extent(out.extent, r.extent))
             throw Error("render graph: pass '" + p.name + "': attachment '" + r.name +
                         "' is not the size of its other attachments");
         if (d.kind == Kind::Color)
