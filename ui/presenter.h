@@ -1,5 +1,6 @@
 #pragma once
-// The inspector's presentation layer: the only ui/ code that calls Vulkan. One UI frame is
+// The inspector's presentation layer, one of the two ui/ files that call Vulkan (window.cpp,
+// the surface and swapchain, is the other). One UI frame is
 // a small render graph of its own on the renderer's device (renderer/graph, so its barriers
 // and layout transitions are planned like the frame's):
 //   ui_upload  the viewer's decoded pixels, staging buffer -> display image

@@ -1,5 +1,5 @@
 #pragma once
-// A capture's files for one graph image (DESIGN: "Captures"): resources/NAME.png, sample 0
+// A capture's files for one graph image (docs/reference/frame.md): resources/NAME.png, sample 0
 // decoded by its semantic exactly as the inspector's viewer shows it by default (view::decode,
 // auto-fit, linear depth; the range it used goes into report.json), and resources/NAME.exr,
 // the raw values of every sample through OpenEXR, in channels named by meaning:

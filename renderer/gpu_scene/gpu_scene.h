@@ -56,7 +56,7 @@ struct GpuInstance {
 };
 static_assert(sizeof(GpuInstance) == 144);
 
-// Surfaces (DESIGN: Z-fighting): each triangle of each instance is one surface, id
+// Surfaces (docs/history/issue-10.md): each triangle of each instance is one surface, id
 // `base + triangle + 1` (0: nothing drawn). The table names them for reports and readouts.
 struct SurfaceInstance {
     uint32_t base = 0;       // id of triangle 0, minus 1

@@ -1,6 +1,6 @@
 #pragma once
 // hiz (hiz=on, with the prepass): a Hi-Z pyramid from the prepass depth, and with
-// count_draws=on a per-draw occlusion test against it (DESIGN "As built (issue 15: Hi-Z)").
+// count_draws=on a per-draw occlusion test against it (docs/history/issue-15.md).
 //
 // Graph pass "hiz" (compute, shaders/hiz.comp): images hiz.0 ... hiz.N (R32_SFLOAT, the frame's
 // depth semantic so the viewer decodes them as depth), level 0 the prepass depth (at msaa > 1

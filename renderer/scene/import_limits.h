@@ -1,9 +1,9 @@
 #pragma once
-// Every size and count the glTF importer accepts, in one place (listed in docs/DESIGN.md and
-// the README). Each is checked before the thing it bounds is read, decoded or allocated, so a
-// hostile or broken file costs at most a bounded amount of time and memory and gives one error
-// line. They sit far above real assets: a large production scene has a few thousand nodes,
-// textures of 4096 or 8192 per side and a few million vertices per mesh.
+// Every size and count the glTF importer accepts, in one place (listed in
+// docs/reference/commands.md). Each is checked before the thing it bounds is read, decoded or
+// allocated, so a hostile or broken file costs at most a bounded amount of time and memory and
+// gives one error line. They sit far above real assets: a large production scene has a few thousand
+// nodes, textures of 4096 or 8192 per side and a few million vertices per mesh.
 #include <cstddef>
 #include <cstdint>
 

@@ -1,9 +1,9 @@
 #pragma once
-// How code declares and reads a knob (DESIGN "Knobs"). A knob is declared once, by what owns
-// it: the frame-wide ones in frame_knobs.cpp, a pass's in its own file (gathered from the
-// pass list), a built-in scene's in its scene file, the inspector's in ui/. The declaring
-// file defines a typed handle (Knob<bool> kHiz{"hiz"}) that every reader uses, so a knob's
-// name is spelled in one file and its type is checked by the compiler.
+// How code declares and reads a knob (DESIGN "How to add a knob"). A knob is declared once, by what
+// owns it: the frame-wide ones in frame_knobs.cpp, a pass's in its own file (gathered from the pass
+// list), a built-in scene's in its scene file, the inspector's in ui/. The declaring file defines a
+// typed handle (Knob<bool> kHiz{"hiz"}) that every reader uses, so a knob's name is spelled in one
+// file and its type is checked by the compiler.
 #include <map>
 #include <optional>
 #include <string>

@@ -9,7 +9,8 @@
 // At msaa > 1 a pixel counts when any of its samples fights, so a pair gains the partly
 // covered pixels along its overlap's edge: 640x360 keeps that near 5 % (10 % at 320x180).
 // zfight_steps=8: lavapipe interpolates coplanar triangles with different diagonals up to 6
-// ULPs apart (DESIGN.md), which at 4 steps leaves 1x pixels unflagged that 4x then finds.
+// ULPs apart (docs/history/issue-24.md), which at 4 steps leaves 1x pixels unflagged that 4x then
+// finds.
 #include <gtest/gtest.h>
 
 #include <cstdint>

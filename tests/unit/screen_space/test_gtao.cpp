@@ -113,7 +113,7 @@ TEST_F(Gtao, StaticCameraStaysStable) {
 // The AO forward reads, as built (half resolution, kSlices x kSteps, filtered at half
 // resolution and upsampled in ao_temporal), against a high-quality setting of the same
 // shaders (full resolution, 8 slices x 16 steps): the cheap path must not drift beyond the
-// tolerance DESIGN states (issue 14: mean |dAO| <= 0.02, 99th percentile <= 0.1).
+// tolerance docs/history/issue-14.md states (issue 14: mean |dAO| <= 0.02, 99th percentile <= 0.1).
 TEST_F(Gtao, DefaultsStayWithinToleranceOfHighQuality) {
     const SyntheticFrame frame =
         render_synthetic(corner_scene(), corner_camera(), kGtaoWidth, kGtaoHeight, true, kGtaoSun);
