@@ -10,7 +10,7 @@ namespace ds {
 
 namespace {
 
-// Measured, not assumed: lavapipe in this project's tests (tests/unit/passes), NVIDIA on an
+// Measured, not assumed: lavapipe in this project's tests (tests/gpu/passes), NVIDIA on an
 // H200 (the note of issue 11). Any other driver is described as what the spec allows.
 std::string fragment_statistic_meaning(VkDriverId driver) {
     switch (driver) {

@@ -12,7 +12,7 @@
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 #include "renderer/vk/capabilities.h"
-#include "tests/unit/passes/shared_renderer.h"
+#include "tests/gpu/passes/shared_renderer.h"
 
 namespace {
 

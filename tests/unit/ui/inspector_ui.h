@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/scene/loader.h"
-#include "tests/unit/passes/shared_renderer.h"
+#include "tests/gpu/passes/shared_renderer.h"
 #include "ui/headless.h"
 
 namespace ds::test {
