@@ -162,51 +162,17 @@ void Inspector::draw() {
 
 void Inspector::apply(const Action& action) {
     std::visit(Overloaded{
-                   [&](const SetSetting& a) {
-                       Settings changed = settings_;
-                       try {
-                           changed.set(a.name, a.value);
-                           change_settings(changed);
-                       } catch (const std::exception& e) {
-                           message_ = e.what();  // nothing changed
-                       }
-                   },
+                   [&](const SetSetting& a) { set_setting(a.name, a.value); },
                    [&](const SelectResource& a) {
                        viewer_.resource = a.name;
                        viewer_.sample = 0;
                        viewer_.hover.reset();
                    },
                    [&](const SelectPass& a) { selected_pass_ = a.name; },
-                   [&](const LoadScene& a) {
-                       try {
-                           scene::Scene loaded = scene::load_scene(a.name_or_path, settings_);
-                           set_scene(std::move(loaded));
-                           history_ = {};
-                           message_.clear();
-                       } catch (const std::exception& e) {
-                           message_ = e.what();  // the current scene stays
-                       }
-                   },
-                   [&](const ReloadShaders&) {
-                       dirty_ = true;
-                       try {
-                           worker_->exclusive([](Renderer& r) { r.rebuild_pipelines(); });
-                           shader_status_ = "shaders reloaded";
-                           shader_error_ = false;
-                       } catch (const std::exception& e) {
-                           shader_status_ =
-                               e.what();  // file:line; the last good pipelines keep running
-                           shader_error_ = true;
-                       }
-                   },
+                   [&](const LoadScene& a) { load_named_scene(a.name_or_path); },
+                   [&](const ReloadShaders&) { reload_shaders(); },
                    [&](const SetAutoReload& a) { auto_reload_ = a.on; },
-                   [&](const ResetSettings&) {
-                       try {
-                           change_settings(Settings());
-                       } catch (const std::exception& e) {
-                           message_ = e.what();
-                       }
-                   },
+                   [&](const ResetSettings&) { set_settings_or_say(Settings()); },
                    [&](const MeasureAdvice&) { measure_advice(); },
                    [&](const SceneCamera&) { camera_.reset(scene_.camera); },
                    [&](const Diagnose&) { start_diagnosis(); },
@@ -227,6 +193,48 @@ void Inspector::apply(const Action& action) {
                    [&](const PinCapture& a) { pin_capture(a.dir); },
                },
                action);
+}
+
+void Inspector::set_setting(const std::string& name, const std::string& value) {
+    Settings changed = settings_;
+    try {
+        changed.set(name, value);
+    } catch (const std::exception& e) {
+        message_ = e.what();  // nothing changed
+        return;
+    }
+    set_settings_or_say(changed);
+}
+
+void Inspector::set_settings_or_say(const Settings& changed) {
+    try {
+        change_settings(changed);
+    } catch (const std::exception& e) {
+        message_ = e.what();  // nothing changed
+    }
+}
+
+void Inspector::load_named_scene(const std::string& name_or_path) {
+    try {
+        scene::Scene loaded = scene::load_scene(name_or_path, settings_);
+        set_scene(std::move(loaded));
+        history_ = {};
+        message_.clear();
+    } catch (const std::exception& e) {
+        message_ = e.what();  // the current scene stays
+    }
+}
+
+void Inspector::reload_shaders() {
+    dirty_ = true;
+    try {
+        worker_->exclusive([](Renderer& r) { r.rebuild_pipelines(); });
+        shader_status_ = "shaders reloaded";
+        shader_error_ = false;
+    } catch (const std::exception& e) {
+        shader_status_ = e.what();  // file:line; the last good pipelines keep running
+        shader_error_ = true;
+    }
 }
 
 void Inspector::change_settings(const Settings& changed) {

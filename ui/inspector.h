@@ -319,6 +319,11 @@ class Inspector {
     // Applies `changed` (rebuilding a built-in scene whose knobs changed); throws, changing
     // nothing, when the rebuild fails.
     void change_settings(const Settings& changed);
+    // apply()'s steps that may fail: the message says why and nothing changes.
+    void set_setting(const std::string& name, const std::string& value);
+    void set_settings_or_say(const Settings& changed);
+    void load_named_scene(const std::string& name_or_path);
+    void reload_shaders();
     // inspector_frames.cpp: what the next scene frame is, whether it differs from the last one
     // posted, taking a finished frame, decoding the view when it or the frame changed.
     FrameJob next_job() const;

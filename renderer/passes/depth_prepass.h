@@ -155,6 +155,9 @@ class DepthPrepass final : public FramePass {
     // input attachment); the depth resolves after the render pass (depth_resolve).
     void declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res);
     void declare_tiled(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res);
+    // declare()'s multisampled attachments and their resolves.
+    void declare_samples(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res,
+                         const graph::DepthUse& depth);
     // The frame's pipelines: the opaque and alpha-tested variants (or the one unsplit one).
     Draw make_draw(const Variant& opaque, const Variant& tested, bool split);
     VkDescriptorSet discard_set(graph::PassContext& ctx, const FrameInputs& in,

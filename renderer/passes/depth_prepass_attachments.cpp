@@ -30,10 +30,6 @@ void DepthPrepass::declare(graph::PassBuilder& b, const FrameInputs& in, FrameRe
         res.surface_id = b.create_image(
             "surface_id",
             {.format = kSurfaceFormat, .size = full, .semantic = graph::Semantic::SurfaceId});
-    // The coverage slot: no image, so the alpha it receives only makes the sample mask.
-    auto coverage_slot = [&] {
-        if (!o.gbuffer && o.alpha_to_coverage) b.unused_color(kCoverageSlotFormat);
-    };
     const graph::DepthUse depth{.load = graph::Load::Clear, .clear = o.far_depth()};
     if (!o.msaa()) {
         b.depth(res.depth, depth);
@@ -41,13 +37,21 @@ void DepthPrepass::declare(graph::PassBuilder& b, const FrameInputs& in, FrameRe
             b.color(res.normals, {.load = graph::Load::Clear, .clear = kNoNormal});
             b.color(res.roughness, {.load = graph::Load::Clear});
         }
-        coverage_slot();
+        // The coverage slot: no image, so the alpha it receives only makes the sample mask.
+        if (!o.gbuffer && o.alpha_to_coverage) b.unused_color(kCoverageSlotFormat);
         if (res.surface_id.valid()) b.color(res.surface_id, {.load = graph::Load::Clear});
         return;
     }
-    // At msaa > 1 the samples are kept only where a later pass reads them: forward, skybox and
-    // transparent LOAD the depth samples (seed 000's lesson); the sample view and zfight the
-    // surface ids'; normals and roughness are read resolved.
+    declare_samples(b, in, res, depth);
+}
+
+// At msaa > 1 the samples are kept only where a later pass reads them: forward, skybox and
+// transparent LOAD the depth samples (seed 000's lesson); the sample view and zfight the
+// surface ids'; normals and roughness are read resolved.
+void DepthPrepass::declare_samples(graph::PassBuilder& b, const FrameInputs& in,
+                                   FrameResources& res, const graph::DepthUse& depth) {
+    const graph::ImageSize full = graph::ImageSize::relative(1.0f);
+    const FrameOptions& o = in.options;
     const VkSampleCountFlagBits samples = o.samples;
     graph::ImageHandle msaa_normals, msaa_roughness;
     if (o.gbuffer) {
@@ -66,7 +70,7 @@ void DepthPrepass::declare(graph::PassBuilder& b, const FrameInputs& in, FrameRe
         b.resolve(msaa_roughness, res.roughness);
     }
     b.depth(res.msaa_depth, depth);
-    coverage_slot();
+    if (!o.gbuffer && o.alpha_to_coverage) b.unused_color(kCoverageSlotFormat);
     if (res.surface_id.valid()) {
         res.msaa_surface_id =
             b.create_image("msaa_surface_id", {.format = kSurfaceFormat,

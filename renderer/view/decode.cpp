@@ -343,24 +343,11 @@ uint32_t format_channels(VkFormat f) {
     return info ? info->channels : 4;  // unknown: all four, as sampled
 }
 
-void decode_into(const InspectedImage& image, const ViewParams& params, DecodedView& out) {
-    const size_t count = size_t(image.width) * image.height;
-    out.black = 0.0f;
-    out.white = 1.0f;
-    out.unit.clear();
-    if (count == 0 || image.texels.size() != count * 4) {
-        out.width = out.height = 0;
-        out.rgba8.clear();
-        return;
-    }
-    out.width = image.width;
-    out.height = image.height;
-    out.rgba8.resize(count * 4);
-    uint8_t* p = out.rgba8.data();
-    const int channel = params.channel >= 0 && params.channel <= 3 ? params.channel : -1;
-    ViewParams vp = params;
-    vp.channel = channel;
+namespace {
 
+// Each semantic's decoding (ViewParams::channel already checked).
+void decode_semantic(const InspectedImage& image, const ViewParams& vp, size_t count, uint8_t* p,
+                     DecodedView& out) {
     switch (image.semantic) {
         case Semantic::ReverseZDepth:
         case Semantic::ForwardZDepth:
@@ -395,7 +382,7 @@ void decode_into(const InspectedImage& image, const ViewParams& params, DecodedV
             }
             break;
         case Semantic::HdrColor:
-            decode_colour<true>(image, vp, count, p, std::exp2(params.exposure));
+            decode_colour<true>(image, vp, count, p, std::exp2(vp.exposure));
             break;
         case Semantic::Other:
             decode_other(image, vp, count, p, out);
@@ -404,6 +391,28 @@ void decode_into(const InspectedImage& image, const ViewParams& params, DecodedV
             decode_scalar(image, vp, count, p, out);
             break;
     }
+}
+
+}  // namespace
+
+void decode_into(const InspectedImage& image, const ViewParams& params, DecodedView& out) {
+    const size_t count = size_t(image.width) * image.height;
+    out.black = 0.0f;
+    out.white = 1.0f;
+    out.unit.clear();
+    if (count == 0 || image.texels.size() != count * 4) {
+        out.width = out.height = 0;
+        out.rgba8.clear();
+        return;
+    }
+    out.width = image.width;
+    out.height = image.height;
+    out.rgba8.resize(count * 4);
+    uint8_t* p = out.rgba8.data();
+    const int channel = params.channel >= 0 && params.channel <= 3 ? params.channel : -1;
+    ViewParams vp = params;
+    vp.channel = channel;
+    decode_semantic(image, vp, count, p, out);
 }
 
 void overlay_counts(DecodedView& view, const InspectedImage& counts,

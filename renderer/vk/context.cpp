@@ -202,20 +202,23 @@ void Context::pick_physical_device(const std::string& request) {
     limits_.maxFramebufferHeight = report_.limits.max_framebuffer_height;
 }
 
+// A window needs VK_KHR_swapchain on the chosen device.
+void Context::require_swapchain() const {
+    uint32_t count = 0;
+    check(vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, nullptr),
+          "vkEnumerateDeviceExtensionProperties");
+    std::vector<VkExtensionProperties> exts(count);
+    check(vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, exts.data()),
+          "vkEnumerateDeviceExtensionProperties");
+    if (std::none_of(exts.begin(), exts.end(), [](const VkExtensionProperties& e) {
+            return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
+        }))
+        throw Error(report_.candidate.name + " has no " VK_KHR_SWAPCHAIN_EXTENSION_NAME
+                                             " (needed for a window)");
+}
+
 void Context::create_device() {
-    if (swapchain_) {
-        uint32_t count = 0;
-        check(vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, nullptr),
-              "vkEnumerateDeviceExtensionProperties");
-        std::vector<VkExtensionProperties> exts(count);
-        check(vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, exts.data()),
-              "vkEnumerateDeviceExtensionProperties");
-        if (std::none_of(exts.begin(), exts.end(), [](const VkExtensionProperties& e) {
-                return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
-            }))
-            throw Error(report_.candidate.name + " has no " VK_KHR_SWAPCHAIN_EXTENSION_NAME
-                                                 " (needed for a window)");
-    }
+    if (swapchain_) require_swapchain();
     const float priority = 1.0f;
     auto queue = make<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
     queue.queueFamilyIndex = report_.queue_family;
@@ -251,7 +254,11 @@ void Context::create_device() {
     check(vkCreateDevice(physical_device_, &info, nullptr, &device_), "vkCreateDevice");
     load_device_functions(device_, report_.candidate.via_extensions);
     vkGetDeviceQueue(device_, report_.queue_family, 0, &queue_);
+    create_once_objects();
+}
 
+// submit_once()'s command buffer and fence, and the memory allocator.
+void Context::create_once_objects() {
     auto pool = make<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
     pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pool.queueFamilyIndex = report_.queue_family;

@@ -70,6 +70,8 @@ class Context {
     void create_instance(const ContextOptions& options);
     void pick_physical_device(const std::string& request);
     void create_device();
+    void require_swapchain() const;
+    void create_once_objects();
     void destroy();  // explicit teardown order; safe on a partly built context
 
     std::shared_ptr<std::atomic<uint64_t>> validation_messages_ =

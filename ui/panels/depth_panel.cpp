@@ -122,66 +122,86 @@ struct Curve {
 };
 
 // log10 step against log10 distance, n .. f, for every configuration; the frame's is thick.
+// The plot's area and its two log axes: distance (ln..lf) and step (lo..hi).
+struct PlotFrame {
+    ImVec2 p0, size;
+    double ln = 0, lf = 1, lo = 0, hi = 1;
+    ImVec2 to_screen(double lz, double ls) const {
+        return ImVec2(p0.x + float((lz - ln) / (lf - ln)) * size.x,
+                      p0.y + size.y - float((ls - lo) / std::max(hi - lo, 1e-9)) * size.y);
+    }
+};
+
+// A line per decade of distance, labelled; the step's decades as faint lines.
+void plot_grid(ImDrawList* dl, const PlotFrame& f) {
+    const ImU32 grid = IM_COL32(255, 255, 255, 28), label = IM_COL32(200, 200, 200, 160);
+    for (double e = std::ceil(f.ln); e <= f.lf; e += 1.0) {
+        const float x = f.to_screen(e, f.lo).x;
+        dl->AddLine(ImVec2(x, f.p0.y), ImVec2(x, f.p0.y + f.size.y), grid);
+        dl->AddText(ImVec2(x + 2, f.p0.y + f.size.y - ImGui::GetTextLineHeight()), label,
+                    view::length_text(float(std::pow(10.0, e))).c_str());
+    }
+    const double every = std::max(1.0, std::ceil((f.hi - f.lo) / 6.0));
+    for (double e = std::ceil(f.lo / every) * every; e <= f.hi; e += every) {
+        const float y = f.to_screen(f.ln, e).y;
+        dl->AddLine(ImVec2(f.p0.x, y), ImVec2(f.p0.x + f.size.x, y), grid);
+        if (y < f.p0.y + f.size.y - 2.0f * ImGui::GetTextLineHeight())  // clear of the x labels
+            dl->AddText(ImVec2(f.p0.x + 2, y), label,
+                        view::length_text(float(std::pow(10.0, e))).c_str());
+    }
+}
+
+// Under the mouse: each curve's step at that distance.
+void plot_tooltip(const PlotFrame& f, const std::array<Curve, 6>& curves) {
+    if (!ImGui::IsItemHovered()) return;
+    const double lz = f.ln + (ImGui::GetIO().MousePos.x - f.p0.x) / f.size.x * (f.lf - f.ln);
+    const double z = std::pow(10.0, std::clamp(lz, f.ln, f.lf));
+    std::string tip = "at " + view::length_text(float(z)) + ", one step is:";
+    for (const Curve& curve : curves)
+        tip += std::string("\n  ") + curve.label + ": " +
+               view::length_text(float(view::step_at(curve.config, z)));
+    ImGui::SetTooltip("%s", tip.c_str());
+}
+
 void precision_plot(const Inspector& in, const std::array<Curve, 6>& curves, int current) {
     const view::DepthConfig& c = curves[size_t(current)].config;
-    const double ln = std::log10(c.znear), lf = std::log10(c.zfar);
+    PlotFrame f;
+    f.ln = std::log10(c.znear);
+    f.lf = std::log10(c.zfar);
     constexpr int kSamples = 96;
-    auto sample_z = [&](int i) { return std::pow(10.0, ln + (lf - ln) * (i + 0.5) / kSamples); };
-    double lo = 1e300, hi = -1e300;
+    auto sample_z = [&](int i) {
+        return std::pow(10.0, f.ln + (f.lf - f.ln) * (i + 0.5) / kSamples);
+    };
+    f.lo = 1e300;
+    f.hi = -1e300;
     for (const Curve& curve : curves)
         for (int i = 0; i < kSamples; ++i) {
             const double s = std::log10(std::max(view::step_at(curve.config, sample_z(i)), 1e-30));
-            lo = std::min(lo, s);
-            hi = std::max(hi, s);
+            f.lo = std::min(f.lo, s);
+            f.hi = std::max(f.hi, s);
         }
-    const ImVec2 p0 = ImGui::GetCursorScreenPos();
-    const ImVec2 size(std::max(ImGui::GetContentRegionAvail().x, 100.0f), 150.0f);
-    ImGui::InvisibleButton("precision plot", size);
+    f.p0 = ImGui::GetCursorScreenPos();
+    f.size = ImVec2(std::max(ImGui::GetContentRegionAvail().x, 100.0f), 150.0f);
+    ImGui::InvisibleButton("precision plot", f.size);
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    auto to_screen = [&](double lz, double ls) {
-        return ImVec2(p0.x + float((lz - ln) / (lf - ln)) * size.x,
-                      p0.y + size.y - float((ls - lo) / std::max(hi - lo, 1e-9)) * size.y);
-    };
-    dl->AddRectFilled(p0, ImVec2(p0.x + size.x, p0.y + size.y), IM_COL32(20, 20, 24, 255));
-    // A line per decade of distance, labelled; the step's decades as faint lines.
-    const ImU32 grid = IM_COL32(255, 255, 255, 28), label = IM_COL32(200, 200, 200, 160);
-    for (double e = std::ceil(ln); e <= lf; e += 1.0) {
-        const float x = to_screen(e, lo).x;
-        dl->AddLine(ImVec2(x, p0.y), ImVec2(x, p0.y + size.y), grid);
-        dl->AddText(ImVec2(x + 2, p0.y + size.y - ImGui::GetTextLineHeight()), label,
-                    view::length_text(float(std::pow(10.0, e))).c_str());
-    }
-    const double every = std::max(1.0, std::ceil((hi - lo) / 6.0));
-    for (double e = std::ceil(lo / every) * every; e <= hi; e += every) {
-        const float y = to_screen(ln, e).y;
-        dl->AddLine(ImVec2(p0.x, y), ImVec2(p0.x + size.x, y), grid);
-        if (y < p0.y + size.y - 2.0f * ImGui::GetTextLineHeight())  // clear of the x labels
-            dl->AddText(ImVec2(p0.x + 2, y), label,
-                        view::length_text(float(std::pow(10.0, e))).c_str());
-    }
+    dl->AddRectFilled(f.p0, ImVec2(f.p0.x + f.size.x, f.p0.y + f.size.y),
+                      IM_COL32(20, 20, 24, 255));
+    plot_grid(dl, f);
     const auto [front, back] = scene_depth_range(in, c.znear, c.zfar);
-    dl->AddRectFilled(ImVec2(to_screen(std::log10(front), 0).x, p0.y),
-                      ImVec2(to_screen(std::log10(back), 0).x, p0.y + size.y),
+    dl->AddRectFilled(ImVec2(f.to_screen(std::log10(front), 0).x, f.p0.y),
+                      ImVec2(f.to_screen(std::log10(back), 0).x, f.p0.y + f.size.y),
                       IM_COL32(80, 80, 110, 90));
     for (size_t k = 0; k < curves.size(); ++k) {
         std::array<ImVec2, kSamples> points;
         for (int i = 0; i < kSamples; ++i) {
             const double z = sample_z(i);
-            points[size_t(i)] = to_screen(
+            points[size_t(i)] = f.to_screen(
                 std::log10(z), std::log10(std::max(view::step_at(curves[k].config, z), 1e-30)));
         }
         dl->AddPolyline(points.data(), kSamples, curves[k].colour, 0,
                         int(k) == current ? 3.0f : 1.2f);
     }
-    if (ImGui::IsItemHovered()) {
-        const double lz = ln + (ImGui::GetIO().MousePos.x - p0.x) / size.x * (lf - ln);
-        const double z = std::pow(10.0, std::clamp(lz, ln, lf));
-        std::string tip = "at " + view::length_text(float(z)) + ", one step is:";
-        for (const Curve& curve : curves)
-            tip += std::string("\n  ") + curve.label + ": " +
-                   view::length_text(float(view::step_at(curve.config, z)));
-        ImGui::SetTooltip("%s", tip.c_str());
-    }
+    plot_tooltip(f, curves);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped(
         "x: distance, znear to zfar; y: one depth step; both log. Shaded: the scene's depth "
