@@ -51,6 +51,7 @@ void RenderGraph::begin_frame(VkExtent2D output, vk::DestroyList& retired) {
     group_passes_.clear();
     prologues_.clear();
     renderings_.clear();
+    targets_.clear();
     subpass_group_.clear();
     phase_ = Phase::Declaring;
 }
@@ -160,9 +161,14 @@ void RenderGraph::compile() {
     plan_subpass_groups(groups_, resources_, passes_, plan_);
     for (const GroupPlan& g : groups_) group_passes_.push_back(render_passes_.get(g, resources_));
     renderings_.resize(passes_.size());
-    for (uint32_t i = 0; i < passes_.size(); ++i)
+    targets_.resize(passes_.size());
+    for (uint32_t i = 0; i < passes_.size(); ++i) {
         if (passes_[i].renders() && passes_[i].group.empty())
             renderings_[i] = plan_rendering(i, resources_, passes_, plan_);
+        targets_[i] = render_target(passes_[i], resources_);
+        targets_[i].render_pass = render_pass_of(i);
+        targets_[i].subpass = passes_[i].subpass;
+    }
     phase_ = Phase::Compiled;
 }
 

@@ -136,7 +136,7 @@ class PassContext {
     bool history_valid(const HistoryImage& history) const;
     // What this pass renders into, for its pipelines (rendering.h): the declared formats, or
     // inside a subpass group the render pass and subpass.
-    RenderTarget target() const;
+    const RenderTarget& target() const;  // planned at compile()
 
     // A dependency between two steps inside this pass (two dispatches, where the second reads
     // what the first wrote), in the graph's terms: `before` and `after` must both be declared
@@ -262,6 +262,7 @@ class RenderGraph {
     std::vector<Record> records_;
     std::vector<std::vector<std::function<void(VkCommandBuffer)>>> prologues_;  // per pass
     std::vector<RenderingPlan> renderings_;  // per pass, after compile(): passes outside groups
+    std::vector<RenderTarget> targets_;      // per pass, after compile(): what pipelines meet
     std::vector<HistoryRequest> histories_;
     std::vector<std::shared_ptr<void>> pass_data_;  // add_pass<Data>'s, until begin_frame()
     BarrierPlan plan_;

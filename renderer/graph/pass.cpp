@@ -275,12 +275,8 @@ void PassContext::dependency(ImageHandle h, Access before, Access after) const {
     graph_.record_barriers(cmd_, {&b, 1});
 }
 
-RenderTarget PassContext::target() const {
-    const PassInfo& pass = graph_.passes_[pass_];
-    RenderTarget t = render_target(pass, graph_.resources_);
-    t.render_pass = graph_.render_pass_of(pass_);
-    t.subpass = pass.subpass;
-    return t;
+const RenderTarget& PassContext::target() const {
+    return graph_.targets_[pass_];
 }
 
 bool PassContext::history_valid(const HistoryImage& history) const {

@@ -39,8 +39,7 @@ std::vector<OverlayPass::Step> DecalsPass::steps() const {
 DrawCounts DecalsPass::draw(VkCommandBuffer cmd, const FrameInputs& in, VkPipelineLayout layout,
                             const Step& step, DrawHooks hooks) const {
     const AlphaMode mode = *step.mode;
-    return draw_groups(cmd, *in.scene, layout, {&mode, 1}, Decals::Only, std::nullopt,
-                       {.log = hooks.log});
+    return draw_groups(cmd, *in.scene, layout, {&mode, 1}, Decals::Only, std::nullopt, hooks);
 }
 
 RasterizedCount::Selection DecalsPass::measured(const FrameInputs& in) const {

@@ -51,13 +51,6 @@ struct NoVariant {
     size_t hash() const { return 0; }
 };
 
-// Pipelines that differ only by the depth format they attach (the frame's depth_format).
-struct DepthFormatVariant {
-    VkFormat depth = VK_FORMAT_UNDEFINED;
-    bool operator==(const DepthFormatVariant&) const = default;
-    size_t hash() const { return size_t(depth); }
-};
-
 template <typename Key>
 concept PipelineKey = requires(const Key& k) {
     { k == k } -> std::convertible_to<bool>;

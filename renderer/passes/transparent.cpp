@@ -10,7 +10,7 @@ DrawCounts TransparentPass::draw(VkCommandBuffer cmd, const FrameInputs& in,
                                  VkPipelineLayout layout, const Step&, DrawHooks hooks) const {
     const std::vector<InstanceDraw> draws =
         sort_back_to_front(*in.scene, in.camera_position, scene_groups(in.options.decal_pass));
-    return draw_sorted(cmd, *in.scene, layout, draws, {.log = hooks.log});
+    return draw_sorted(cmd, *in.scene, layout, draws, hooks);
 }
 
 RasterizedCount::Selection TransparentPass::measured(const FrameInputs& in) const {

@@ -204,7 +204,7 @@ void ZfightPass::record(graph::PassContext& ctx, const FrameInputs& in, const Bo
     set_depth_state(cmd, /*test=*/true, /*write=*/false, in.options.closer_or_equal());
     bind_geometry(cmd, *in.scene);
     const VkPipelineLayout layout = layout_.handle();
-    const Variant variant{.depth = in.options.depth_format, .samples = in.options.samples};
+    const Variant variant{.samples = in.options.samples};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.get(variant, ctx.target()));
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &in.frame_set, 0,
                             nullptr);

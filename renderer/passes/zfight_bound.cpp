@@ -83,7 +83,7 @@ void ZfightBound::record(graph::PassContext& ctx, const FrameInputs& in, uint32_
     writer.update(services_.context.device(), set);
     const VkDescriptorSet sets[] = {in.frame_set, set};
     const BoundPush push{steps, format::depth_bits(in.options.depth_format)};
-    const Variant variant{.depth = in.options.depth_format, .samples = in.options.samples};
+    const Variant variant{.samples = in.options.samples};
     draw_fullscreen_depth(ctx.cmd(), pipelines_.get(variant, ctx.target()), layout_.handle(), sets,
                           std::as_bytes(std::span(&push, 1)));
 }

@@ -20,14 +20,13 @@
 
 namespace ds::passes {
 
-// The zfight pipelines' key (the bound's and the detector's): the frame's depth_format and
-// msaa sample count (above 1: the PER_SAMPLE shaders).
+// The zfight pipelines' key (the bound's and the detector's): the msaa sample count (above 1:
+// the PER_SAMPLE shaders); the depth format is the target's.
 struct ZfightVariant {
-    VkFormat depth = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     bool per_sample() const { return samples != VK_SAMPLE_COUNT_1_BIT; }
     bool operator==(const ZfightVariant&) const = default;
-    size_t hash() const { return size_t(depth) * 64 + size_t(samples); }
+    size_t hash() const { return size_t(samples); }
 };
 
 class ZfightBound {
