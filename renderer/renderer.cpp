@@ -77,7 +77,7 @@ Renderer::Impl::Impl(const RendererOptions& options) {
 
 Renderer::Impl::~Impl() {
     if (!context) return;
-    vkDeviceWaitIdle(context->device());  // teardown: an error here has nowhere to go
+    context->drain();
     if (targets) targets->reset();
     scene.reset();
     frames.reset();  // flushes every destroy list

@@ -81,7 +81,7 @@ Presenter::Presenter(vk::Context& context, VkFormat target_format)
 }
 
 Presenter::~Presenter() {
-    vkDeviceWaitIdle(context_.device());
+    context_.drain();
     if (backend_) ImGui_ImplVulkan_Shutdown();
     frames_.reset();
     readback_.reset();

@@ -257,7 +257,7 @@ void Window::present(const Acquired& a, bool& swapchain_changed) {
     info.swapchainCount = 1;
     info.pSwapchains = &swapchain_;
     info.pImageIndices = &a.index;
-    const VkResult r = vkQueuePresentKHR(context_->queue(), &info);
+    const VkResult r = context_->present(info);
     if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) {
         context_->wait_idle();
         destroy_swapchain();

@@ -282,6 +282,7 @@ VkFormatProperties Context::format_properties(VkFormat format) const {
 }
 
 void Context::submit_once(const std::function<void(VkCommandBuffer)>& record) {
+    std::lock_guard lock(once_mutex_);
     struct Reset {  // a throw from `record` leaves the buffer recording: reset it for the next
         Context& c;
         bool recorded = false;
@@ -302,12 +303,28 @@ void Context::submit_once(const std::function<void(VkCommandBuffer)>& record) {
     auto submit = make<VkSubmitInfo2>(VK_STRUCTURE_TYPE_SUBMIT_INFO_2);
     submit.commandBufferInfoCount = 1;
     submit.pCommandBufferInfos = &cmd_info;
-    check(fn().queue_submit2(queue_, 1, &submit, once_fence_), "vkQueueSubmit2");
+    this->submit(submit, once_fence_);
     check(vkWaitForFences(device_, 1, &once_fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
 }
 
+void Context::submit(const VkSubmitInfo2& submit, VkFence fence) const {
+    std::lock_guard lock(queue_mutex_);
+    check(fn().queue_submit2(queue_, 1, &submit, fence), "vkQueueSubmit2");
+}
+
+VkResult Context::present(const VkPresentInfoKHR& info) const {
+    std::lock_guard lock(queue_mutex_);
+    return vkQueuePresentKHR(queue_, &info);
+}
+
 void Context::wait_idle() const {
+    std::lock_guard lock(queue_mutex_);
     check(vkDeviceWaitIdle(device_), "vkDeviceWaitIdle");
+}
+
+void Context::drain() const noexcept {
+    std::lock_guard lock(queue_mutex_);
+    vkDeviceWaitIdle(device_);
 }
 
 }  // namespace ds::vk

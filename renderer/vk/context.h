@@ -1,11 +1,15 @@
 #pragma once
 // Instance, optional validation, device selection, logical device, queue and memory allocator:
-// everything every other vk object needs. The validation counter is shared: the messenger
-// counts into it until vkDestroyInstance, so whoever holds it reads what teardown reported
-// (objects still alive at vkDestroyDevice) after the Context is gone.
+// everything every other vk object needs. The queue is used from several threads (the
+// inspector's render thread, its UI thread presenting, a diagnosis running beside them), and
+// Vulkan requires the host to synchronize a VkQueue: every submit, present and device wait goes
+// through the Context, which holds one lock for them. The validation counter is shared: the
+// messenger counts into it until vkDestroyInstance, so whoever holds it reads what teardown
+// reported (objects still alive at vkDestroyDevice) after the Context is gone.
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -37,7 +41,7 @@ class Context {
     VkInstance instance() const { return instance_; }
     VkPhysicalDevice physical_device() const { return physical_device_; }
     VkDevice device() const { return device_; }
-    VkQueue queue() const { return queue_; }
+    VkQueue queue() const { return queue_; }  // for ImGui's init info only: submit() below
     uint32_t queue_family() const { return report_.queue_family; }
     const DeviceReport& report() const { return report_; }
     const VkPhysicalDeviceLimits& limits() const { return limits_; }
@@ -64,7 +68,11 @@ class Context {
     // Records `record` into a one-time command buffer, submits it and waits on its fence
     // (uploads, layout set-up). Not for per-frame work.
     void submit_once(const std::function<void(VkCommandBuffer)>& record);
+    // The queue's operations, each under the queue lock.
+    void submit(const VkSubmitInfo2& submit, VkFence fence) const;
+    VkResult present(const VkPresentInfoKHR& info) const;  // the caller handles OUT_OF_DATE
     void wait_idle() const;
+    void drain() const noexcept;  // wait_idle for teardown: an error there has nowhere to go
 
   private:
     void create_instance(const ContextOptions& options);
@@ -88,6 +96,8 @@ class Context {
     VkCommandPool once_pool_ = VK_NULL_HANDLE;
     VkCommandBuffer once_cmd_ = VK_NULL_HANDLE;
     VkFence once_fence_ = VK_NULL_HANDLE;
+    std::mutex once_mutex_;           // submit_once's command buffer and fence
+    mutable std::mutex queue_mutex_;  // queue_, and vkDeviceWaitIdle (which uses every queue)
     DeviceReport report_;
     VkPhysicalDeviceLimits limits_{};
     DebugUtils debug_;

@@ -26,7 +26,7 @@ FrameRing::FrameRing(Context& context) : context_(context) {
 
 FrameRing::~FrameRing() {
     VkDevice device = context_.device();
-    vkDeviceWaitIdle(device);  // teardown: nothing useful to do with an error here
+    context_.drain();
     for (Frame& f : frames_) {
         f.retired.flush();
         if (f.fence) vkDestroyFence(device, f.fence, nullptr);
@@ -70,7 +70,7 @@ void FrameRing::submit(Frame& f, const SubmitSemaphores& semaphores) {
         submit.signalSemaphoreInfoCount = 1;
         submit.pSignalSemaphoreInfos = &signal;
     }
-    check(fn().queue_submit2(context_.queue(), 1, &submit, f.fence), "vkQueueSubmit2");
+    context_.submit(submit, f.fence);
     f.submitted = true;
 }
 

@@ -159,6 +159,7 @@ Allocator::Pool& Allocator::pool_for(uint32_t type, ResourceKind kind, int32_t& 
 }
 
 Allocation Allocator::allocate(const AllocationRequest& request) {
+    std::lock_guard lock(mutex_);
     const VkMemoryRequirements& req = request.requirements;
     if (max_allocation_ && req.size > max_allocation_)
         throw Error(describe(request) + " is larger than the device's maxMemoryAllocationSize (" +
@@ -196,6 +197,7 @@ Allocation Allocator::allocate(const AllocationRequest& request) {
 }
 
 void Allocator::free(Allocation& allocation) {
+    std::lock_guard lock(mutex_);
     if (!allocation) return;
     if (allocation.pool < 0) {
         vkFreeMemory(device_, allocation.memory, nullptr);
@@ -230,6 +232,7 @@ void Allocator::invalidate(const Allocation& a) const {
 }
 
 MemoryStats Allocator::stats() const {
+    std::lock_guard lock(mutex_);
     MemoryStats s;
     s.dedicated = dedicated_count_;
     s.used_bytes = dedicated_bytes_;

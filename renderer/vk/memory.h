@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -105,6 +106,8 @@ class Allocator {
     std::vector<std::unique_ptr<Pool>> pools_;
     uint32_t dedicated_count_ = 0;
     uint64_t dedicated_bytes_ = 0;
+    // allocate, free and stats: the inspector's render and UI threads both make images.
+    mutable std::mutex mutex_;
 };
 
 }  // namespace ds::vk
