@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "app/cli.h"
-#include "renderer/capture/resource_capture.h"
+#include "capture/resource_capture.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
 

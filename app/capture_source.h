@@ -1,13 +1,13 @@
 #pragma once
 // A capture folder opened to render its frame again: `replay` (a new capture) and
 // `view --capture` (the inspector) read it the same way, with the same checks: report.json's
-// replay information (renderer/capture/replay_info.h), final.png present, the same depthscope
+// replay information (capture/replay_info.h), final.png present, the same depthscope
 // version and, for a scene file, the same SHA-256 (each unless --force).
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "renderer/capture/replay_info.h"
+#include "capture/replay_info.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
 

@@ -7,13 +7,13 @@
 #include "app/capture_job.h"
 #include "app/commands.h"
 #include "app/exit_code.h"
-#include "renderer/capture/file_output.h"
-#include "renderer/capture/image_writer.h"
-#include "renderer/capture/output_dir.h"
-#include "renderer/capture/renderdoc.h"
-#include "renderer/capture/resource_capture.h"
-#include "renderer/capture/trace.h"
-#include "renderer/capture_writer.h"
+#include "capture/capture_writer.h"
+#include "capture/file_output.h"
+#include "capture/image_writer.h"
+#include "capture/output_dir.h"
+#include "capture/renderdoc.h"
+#include "capture/resource_capture.h"
+#include "capture/trace.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 #include "renderer/device_info.h"
@@ -93,7 +93,7 @@ FrameResult capture_ui_frame(const Options& o, Renderer& renderer, const Setting
     return frame;
 }
 
-// The frame alone (from a camera cut, renderer/capture_writer.h), written as final.png.
+// The frame alone (from a camera cut, capture/capture_writer.h), written as final.png.
 FrameResult capture_plain_frame(Renderer& renderer, const CaptureSpec& spec,
                                 const capture::OutputDir& out, const FrameCapture& rdc) {
     rdc.start();
@@ -118,7 +118,7 @@ capture::Advice advise(const Options& o, Renderer& renderer, const Settings& set
     return advice;
 }
 
-// --resources: the selected graph images (renderer/capture_writer.h). With --ui the written
+// --resources: the selected graph images (capture/capture_writer.h). With --ui the written
 // frame is the inspector's third, so a fresh frame from a cut is the reference the batches
 // must equal.
 nlohmann::json write_resources(const Options& o, Renderer& renderer, const CaptureSpec& spec,

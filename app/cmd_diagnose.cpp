@@ -1,4 +1,4 @@
-// diagnose: every detector that applies, on one view (renderer/diagnose_run.h): the ranked
+// diagnose: every detector that applies, on one view (capture/diagnose/diagnose_run.h): the ranked
 // summary on stdout, the findings as JSON with --json (written whole or not at all), the exit
 // code by --fail-on.
 #include <cstdio>
@@ -6,10 +6,10 @@
 #include "app/commands.h"
 #include "app/exit_code.h"
 #include "app/view_camera.h"
-#include "renderer/capture/file_output.h"
-#include "renderer/capture/report.h"
-#include "renderer/diagnose/finding_json.h"
-#include "renderer/diagnose_run.h"
+#include "capture/diagnose/diagnose_run.h"
+#include "capture/diagnose/finding_json.h"
+#include "capture/file_output.h"
+#include "capture/report.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 

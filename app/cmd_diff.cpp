@@ -1,5 +1,5 @@
 // `depthscope diff A B [--threshold N] [--max-percent P] [--out DIR]` (issue 13): two capture
-// folders compared (renderer/capture/capture_diff.h has the rules), a one-screen summary on
+// folders compared (capture/capture_diff.h has the rules), a one-screen summary on
 // stdout and, with --out, a heat-map PNG per compared image and diff.json in a new folder.
 // Exit codes as cmp(1) and diff(1) have them, so a script can tell a failed comparison from a
 // failed command: 0 same (final.png within --max-percent), 1 differs, 2 trouble — a usage
@@ -15,11 +15,11 @@
 #include <optional>
 
 #include "app/commands.h"
-#include "renderer/capture/capture_diff.h"
-#include "renderer/capture/diff_report.h"
-#include "renderer/capture/image_writer.h"
-#include "renderer/capture/output_dir.h"
-#include "renderer/capture/report.h"
+#include "capture/capture_diff.h"
+#include "capture/diff_report.h"
+#include "capture/image_writer.h"
+#include "capture/output_dir.h"
+#include "capture/report.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 

@@ -5,9 +5,9 @@
 
 #include "app/commands.h"
 #include "app/exit_code.h"
-#include "renderer/capture/file_output.h"
-#include "renderer/capture/pixel_report.h"
-#include "renderer/capture/report.h"
+#include "capture/file_output.h"
+#include "capture/pixel_report.h"
+#include "capture/report.h"
 #include "renderer/common/error.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"

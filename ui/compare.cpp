@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "renderer/capture/capture_diff.h"
+#include "capture/capture_diff.h"
 #include "renderer/view/heat.h"
 
 namespace ds::ui {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/capture/capture_folder.h"
+#include "capture/capture_folder.h"
 #include "renderer/passes/frame_result.h"
 
 namespace ds::ui {

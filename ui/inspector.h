@@ -25,9 +25,9 @@
 #include <variant>
 #include <vector>
 
-#include "renderer/capture/advice.h"
+#include "capture/advice.h"
+#include "capture/diagnose/finding.h"
 #include "renderer/device_info.h"
-#include "renderer/diagnose/finding.h"
 #include "renderer/passes/msaa_samples.h"
 #include "renderer/passes/pixel_history.h"
 #include "renderer/renderer.h"
@@ -74,7 +74,7 @@ struct MeasureAdvice {};
 // Back to the scene's own camera (the file's, or the framed view of a scene without one).
 struct SceneCamera {};
 // The Diagnose button: every detector that applies, on the current view, off the UI thread
-// (renderer/diagnose_run.h); its findings list in the Diagnose panel.
+// (capture/diagnose/diagnose_run.h); its findings list in the Diagnose panel.
 struct Diagnose {};
 // A finding of the diagnosis selected (-1: none): its pixels are highlighted over the image
 // while the view is the one diagnosed, and the panel with its details opens.

@@ -1,8 +1,8 @@
 // The inspector's captures (F12, the Capture button) and the compare view's pinned capture.
 #include <exception>
 
-#include "renderer/capture/output_dir.h"
-#include "renderer/capture_writer.h"
+#include "capture/capture_writer.h"
+#include "capture/output_dir.h"
 #include "ui/inspector.h"
 
 namespace ds::ui {
@@ -24,7 +24,7 @@ void Inspector::capture_when_shown() {
 
 // A normal capture (final.png, every resource, report.json; `depthscope replay` renders it
 // again bit for bit) of what the viewer showed: that camera and render size, these settings,
-// through the live renderer (renderer/capture_writer.h). The capture renders from a camera
+// through the live renderer (capture/capture_writer.h). The capture renders from a camera
 // cut, so the inspector's temporal history stays out of it; the next live frame continues
 // from the capture's own history (the same camera) and is the captured frame bit for bit
 // (ui_capture_tests).

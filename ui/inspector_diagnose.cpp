@@ -1,11 +1,11 @@
-// The inspector's Diagnose (issue 24 point 5): renderer/diagnose_run.h's diagnosis of the
+// The inspector's Diagnose (issue 24 point 5): capture/diagnose/diagnose_run.h's diagnosis of the
 // current view, run off the UI thread (the UI goes on drawing; scene frames wait for the
 // renderer meanwhile), its findings listed by the Diagnose panel. Selecting a finding
 // highlights its pixels while the view is the one diagnosed, turns on the measurement its
 // detector's panel shows (never a knob that changes the image) and opens that panel.
 #include <algorithm>
 
-#include "renderer/diagnose_run.h"
+#include "capture/diagnose/diagnose_run.h"
 #include "renderer/passes/depth_precision.h"
 #include "renderer/passes/draw_counts.h"
 #include "renderer/passes/equal_check.h"

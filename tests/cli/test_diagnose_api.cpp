@@ -1,14 +1,14 @@
-// The API the inspector calls (renderer/diagnose_run.h), in-process on one validated renderer:
-// each finding carries the pixels it covers (as many as its magnitude in pixels says, from the
-// zfight pass's hits and equal_check's image), and the measurement knobs leave the image as
-// the user's settings draw it.
+// The API the inspector calls (capture/diagnose/diagnose_run.h), in-process on one validated
+// renderer: each finding carries the pixels it covers (as many as its magnitude in pixels says,
+// from the zfight pass's hits and equal_check's image), and the measurement knobs leave the image
+// as the user's settings draw it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
+#include "capture/diagnose/diagnose_run.h"
+#include "capture/diagnose/finding.h"
 #include "renderer/device_info.h"
-#include "renderer/diagnose/finding.h"
-#include "renderer/diagnose_run.h"
 #include "renderer/renderer.h"
 #include "renderer/scene/loader.h"
 #include "renderer/vk/capabilities.h"

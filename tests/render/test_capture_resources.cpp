@@ -10,7 +10,7 @@
 
 #include <tinyexr.h>
 
-#include "renderer/capture/exr_file.h"
+#include "capture/exr_file.h"
 #include "tests/render/capture_helpers.h"
 
 namespace ds::test {

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "renderer/capture/exr_file.h"
+#include "capture/exr_file.h"
 #include "tests/render/capture_helpers.h"
 
 namespace fs = std::filesystem;

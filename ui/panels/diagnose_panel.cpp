@@ -1,11 +1,12 @@
-// Diagnose: "what is wrong with this view?" in one click. The diagnosis (renderer/diagnose_run.h)
-// runs every detector that applies on the current camera, settings and size, off the UI
-// thread; its findings are rows ranked by severity then magnitude. Selecting one highlights
-// its pixels over the image (while the view is the one diagnosed) and opens the panel with
-// its details (Depth, Draws, Passes or Advisor); its surfaces and fix are listed below.
+// Diagnose: "what is wrong with this view?" in one click. The diagnosis
+// (capture/diagnose/diagnose_run.h) runs every detector that applies on the current camera,
+// settings and size, off the UI thread; its findings are rows ranked by severity then magnitude.
+// Selecting one highlights its pixels over the image (while the view is the one diagnosed) and
+// opens the panel with its details (Depth, Draws, Passes or Advisor); its surfaces and fix are
+// listed below.
 #include <imgui.h>
 
-#include "renderer/diagnose/finding_json.h"
+#include "capture/diagnose/finding_json.h"
 #include "ui/panels/panels.h"
 
 namespace ds::ui {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/capture/report.h"
+#include "capture/report.h"
 #include "renderer/passes/draw_counts.h"
 #include "renderer/renderer.h"
 #include "tests/gpu/passes/shared_renderer.h"

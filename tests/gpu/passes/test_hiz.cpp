@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/capture/report.h"
+#include "capture/report.h"
 #include "renderer/passes/draw_counts.h"
 #include "renderer/passes/hiz.h"
 #include "renderer/renderer.h"

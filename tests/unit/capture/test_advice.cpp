@@ -2,7 +2,7 @@
 // predicted and measured changes, the verdict and seed 003's rule beside it. No device.
 #include <gtest/gtest.h>
 
-#include "renderer/capture/advice.h"
+#include "capture/advice.h"
 
 namespace ds::capture {
 namespace {

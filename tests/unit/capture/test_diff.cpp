@@ -10,10 +10,10 @@
 #include <limits>
 #include <string>
 
-#include "renderer/capture/capture_diff.h"
-#include "renderer/capture/diff_report.h"
-#include "renderer/capture/exr_file.h"
-#include "renderer/capture/image_writer.h"
+#include "capture/capture_diff.h"
+#include "capture/diff_report.h"
+#include "capture/exr_file.h"
+#include "capture/image_writer.h"
 #include "renderer/common/error.h"
 
 namespace fs = std::filesystem;

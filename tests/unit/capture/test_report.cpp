@@ -5,7 +5,7 @@
 #include <set>
 #include <string>
 
-#include "renderer/capture/report.h"
+#include "capture/report.h"
 #include "renderer/passes/depth_prepass.h"
 #include "renderer/passes/draw_counts.h"
 #include "renderer/passes/hiz.h"

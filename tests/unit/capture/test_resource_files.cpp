@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "renderer/capture/capture_folder.h"
-#include "renderer/capture/exr_file.h"
-#include "renderer/capture/resource_files.h"
+#include "capture/capture_folder.h"
+#include "capture/exr_file.h"
+#include "capture/resource_files.h"
 #include "renderer/view/heat.h"
 
 namespace ds::capture {

@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "renderer/capture/trace.h"
+#include "capture/trace.h"
 #include "renderer/common/error.h"
 #include "renderer/graph/profiler.h"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "renderer/capture/image_writer.h"
+#include "capture/image_writer.h"
 #include "tests/unit/ui/inspector_ui.h"
 
 namespace ds::test {

@@ -13,7 +13,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
-#include "renderer/capture/image_writer.h"
+#include "capture/image_writer.h"
 #include "tests/support/run_process.h"
 #include "tests/unit/ui/inspector_ui.h"
 

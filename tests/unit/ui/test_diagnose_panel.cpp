@@ -10,7 +10,7 @@
 #include <set>
 #include <string>
 
-#include "renderer/capture/image_writer.h"
+#include "capture/image_writer.h"
 #include "renderer/passes/zfight.h"
 
 #include "tests/unit/ui/inspector_ui.h"

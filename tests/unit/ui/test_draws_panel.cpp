@@ -11,7 +11,7 @@
 
 #include <imgui.h>
 
-#include "renderer/capture/image_writer.h"
+#include "capture/image_writer.h"
 #include "renderer/passes/draw_counts.h"
 #include "renderer/scene/loader.h"
 #include "tests/gpu/passes/shared_renderer.h"

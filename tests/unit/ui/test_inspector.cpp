@@ -13,7 +13,7 @@
 
 #include <imgui.h>
 
-#include "renderer/capture/image_writer.h"
+#include "capture/image_writer.h"
 #include "renderer/passes/depth_prepass.h"
 #include "renderer/passes/zfight.h"
 #include "renderer/scene/loader.h"

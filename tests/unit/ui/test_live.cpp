@@ -10,7 +10,7 @@
 #include <memory>
 #include <thread>
 
-#include "renderer/capture/image_writer.h"
+#include "capture/image_writer.h"
 #include "renderer/scene/loader.h"
 #include "tests/gpu/passes/shared_renderer.h"
 #include "ui/headless.h"

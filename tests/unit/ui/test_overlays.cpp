@@ -13,7 +13,7 @@
 
 #include <imgui.h>
 
-#include "renderer/capture/image_writer.h"
+#include "capture/image_writer.h"
 #include "renderer/scene/loader.h"
 #include "renderer/view/heat.h"
 #include "renderer/view/overlay.h"

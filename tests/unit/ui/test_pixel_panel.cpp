@@ -12,7 +12,7 @@
 
 #include <imgui.h>
 
-#include "renderer/capture/image_writer.h"
+#include "capture/image_writer.h"
 #include "renderer/passes/pixel_history.h"
 #include "tests/unit/ui/inspector_ui.h"
 

@@ -15,7 +15,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/capture/image_writer.h"
+#include "capture/image_writer.h"
 #include "renderer/passes/msaa_samples.h"
 #include "renderer/passes/pixel_history.h"
 #include "renderer/view/decode.h"

@@ -8,7 +8,7 @@
 
 #include <imgui.h>
 
-#include "renderer/capture/image_writer.h"
+#include "capture/image_writer.h"
 #include "renderer/scene/loader.h"
 #include "tests/gpu/passes/shared_renderer.h"
 #include "ui/headless.h"

@@ -1,0 +1,82 @@
+// Decal classification (scene/decals.h: overlays found by geometry at load) against the
+// frame: with decal_pass=off the overlays are drawn as ordinary geometry, so an OPAQUE / MASK
+// overlay fights its base (DECAL_ZFIGHT, error, from the zfight pass's pairs); without the
+// zfight pass to say so, the overlays that would fight are listed (DECAL_PASS_OFF, warning).
+// With decal_pass=on there is nothing to report: the decals pass draws them once, after forward.
+#include "capture/diagnose/checks.h"
+#include "capture/diagnose/finding_json.h"
+#include "renderer/passes/decals.h"
+#include "renderer/passes/zfight.h"
+
+namespace ds::diagnose {
+namespace {
+
+constexpr const char* kDecalFix =
+    "decal_pass=on: the decals pass draws classified overlays once, after forward, with a "
+    "depth bias towards the camera";
+
+// The overlay of a classified pair (a or b), as the scene's decal list names it.
+bool is_overlay(const scene::Scene& scene, const SurfaceName& name) {
+    for (const scene::Decal& d : scene.decals)
+        if (scene.instance_name(d.instance) == name) return true;
+    return false;
+}
+
+Finding decal_zfight(const CheckInput& in, const ZfightPair& pair, std::vector<uint32_t> pixels) {
+    const bool a_is_overlay = is_overlay(in.scene, pair.a);
+    const FindingSurface overlay = surface_named(in.scene, a_is_overlay ? pair.a : pair.b);
+    const FindingSurface base = surface_named(in.scene, a_is_overlay ? pair.b : pair.a);
+    Finding f;
+    f.code = "DECAL_ZFIGHT";
+    f.severity = Severity::Error;
+    f.detector = "decals";
+    f.magnitude = {double(pair.pixels), "px"};
+    f.message = "decal " + label(overlay) + " fights its base " + label(base) + ": " +
+                grouped(double(pair.pixels)) + " px (decal_pass=off; " + depth_label(in.settings) +
+                ")";
+    f.fix = kDecalFix;
+    f.surfaces = {overlay, base};
+    f.pointer = overlay.pointer;
+    f.pixels = std::move(pixels);
+    return f;
+}
+
+// decal_pass=off without the zfight pass: every OPAQUE / MASK overlay is drawn coplanar with
+// its base by forward (BLEND ones go to transparent, whose closer-or-equal test is right).
+void unmeasured_overlays(const CheckInput& in, CheckOutput& out) {
+    Finding f;
+    for (const scene::Decal& d : in.scene.decals) {
+        if (in.scene.instance_material(d.instance).alpha_mode == scene::AlphaMode::Blend) continue;
+        f.surfaces.push_back(surface_of(in.scene, d.instance));
+    }
+    if (f.surfaces.empty()) return;
+    f.code = "DECAL_PASS_OFF";
+    f.severity = Severity::Warning;
+    f.detector = "decals";
+    f.magnitude = {double(f.surfaces.size()), "overlays"};
+    f.message = grouped(double(f.surfaces.size())) +
+                " opaque / masked overlays are drawn as ordinary geometry, coplanar with their "
+                "bases (decal_pass=off; zfight did not run to measure the fight)";
+    f.fix = kDecalFix;
+    f.pointer = f.surfaces.front().pointer;
+    out.findings.push_back(std::move(f));
+}
+
+}  // namespace
+
+void check_decals(const CheckInput& in, CheckOutput& out) {
+    if (in.scene.decals.empty()) {
+        out.skip("decals", "the scene has no coplanar overlays: the decal classifier found none");
+        return;
+    }
+    out.ran.push_back("decals");
+    if (knob_value(in.settings, passes::DecalsPass::kKnob)) return;
+    const ZfightResult* z = in.measured.find<ZfightResult>();
+    if (!z) return unmeasured_overlays(in, out);
+    std::vector<std::vector<uint32_t>> pixels = pair_pixels(*z);
+    for (uint32_t i = 0; i < z->pairs.size(); ++i)
+        if (is_decal_pair(in.scene, z->pairs[i].a, z->pairs[i].b))
+            out.findings.push_back(decal_zfight(in, z->pairs[i], std::move(pixels[i])));
+}
+
+}  // namespace ds::diagnose
