@@ -43,15 +43,15 @@ namespace {
 
 // Set 2's bindings (set 0 is the frame's; set 1 the material layout, which
 // common/bindings.glsl declares and the shader leaves unused).
-enum Binding : uint32_t {
-    kSurfaceIds,
-    kSizes,
-    kVertices,
-    kIndices,
-    kRows,
-    kInstances,
-    kHistogram,
-    kBindings,
+enum SizeBinding : uint32_t {
+    kSizeSurfaceIds,
+    kSizeImage,
+    kSizeVertices,
+    kSizeIndices,
+    kSizeRows,
+    kSizeInstances,
+    kSizeHistogram,
+    kSizeBindings,
 };
 
 // triangle_size.comp's push constants.
@@ -104,15 +104,15 @@ TriangleSizePass::TriangleSizePass(const PassServices& services)
     vk::Context& context = services.context;
     const VkShaderStageFlags c = VK_SHADER_STAGE_COMPUTE_BIT;
     std::vector<VkDescriptorSetLayoutBinding> bindings = {
-        vk::layout_binding(kSurfaceIds, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, c),
-        vk::layout_binding(kSizes, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, c)};
-    for (uint32_t b = kVertices; b < kBindings; ++b)
+        vk::layout_binding(kSizeSurfaceIds, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, c),
+        vk::layout_binding(kSizeImage, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, c)};
+    for (uint32_t b = kSizeVertices; b < kSizeBindings; ++b)
         bindings.push_back(vk::layout_binding(b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, c));
     set_layout_ = vk::DescriptorSetLayout(context, bindings, "triangle size set");
     const VkDescriptorPoolSize sizes[] = {
         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
         {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1},
-        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kBindings - kVertices}};
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kSizeBindings - kSizeVertices}};
     pool_ = vk::DescriptorPool(context, 1, sizes, "triangle size");
     set_ = pool_.allocate(set_layout_.handle());
     const VkDescriptorSetLayout sets[] = {services.frame_layout, services.material_layout,
@@ -200,13 +200,13 @@ void TriangleSizePass::record(graph::PassContext& ctx, const Bound& bound, const
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     vk::DescriptorWriter writer;
     writer
-        .image(kSurfaceIds, ctx.view(bound.surfaces), nearest_.handle(), ctx.layout(bound.surfaces))
-        .storage_image(kSizes, ctx.view(bound.sizes), ctx.layout(bound.sizes))
-        .buffer(kVertices, storage, scene.vertex_buffer())
-        .buffer(kIndices, storage, scene.index_buffer())
-        .buffer(kRows, storage, rows_buffer_.handle())
-        .buffer(kInstances, storage, scene.instance_buffer())
-        .buffer(kHistogram, storage, ctx.buffer(bound.histogram));
+        .image(kSizeSurfaceIds, ctx.view(bound.surfaces), nearest_.handle(), ctx.layout(bound.surfaces))
+        .storage_image(kSizeImage, ctx.view(bound.sizes), ctx.layout(bound.sizes))
+        .buffer(kSizeVertices, storage, scene.vertex_buffer())
+        .buffer(kSizeIndices, storage, scene.index_buffer())
+        .buffer(kSizeRows, storage, rows_buffer_.handle())
+        .buffer(kSizeInstances, storage, scene.instance_buffer())
+        .buffer(kSizeHistogram, storage, ctx.buffer(bound.histogram));
     writer.update(services_.context.device(), set_);
     const VkExtent2D extent = ctx.extent(bound.sizes);
     VkCommandBuffer cmd = ctx.cmd();
