@@ -322,6 +322,7 @@ int run_view(const Options& o) {
         options.threaded = true;
         ui::Inspector inspector(renderer, start.settings, std::move(scene), options);
         inspector.worker().on_finished(&ui::Window::wake);
+        if (persist) inspector.use_bookmarks(ui::bookmarks_file(files.dir));
         if (opened) open_in(inspector, *opened);
         const uint64_t frames = run_frames(o, *window, presenter, inspector);
         presenter.wait_idle();
