@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/view_camera.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 #include "renderer/common/sha256.h"
@@ -70,7 +71,8 @@ CaptureSource read_capture_source(const fs::path& dir, const std::vector<std::st
 }
 
 scene::Scene load_captured_scene(const capture::ReplayInfo& info, const Settings& settings,
-                                 bool force) {
+                                 const Options& o) {
+    const bool force = o.force;
     scene::Scene scene;
     if (!info.builtin.empty()) {
         scene = scene::load_scene(info.builtin, settings);
@@ -85,7 +87,7 @@ scene::Scene load_captured_scene(const capture::ReplayInfo& info, const Settings
                         "…); --force uses it anyway");
         scene = scene::load_scene(info.file.string(), settings);
     }
-    scene.camera = info.camera;
+    scene.camera = chosen_camera(o, scene).value_or(info.camera);
     return scene;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli.h"
 #include "capture/replay_info.h"
 #include "renderer/scene/scene.h"
 #include "renderer/settings/settings.h"
@@ -26,10 +27,12 @@ struct CaptureSource {
 CaptureSource read_capture_source(const std::filesystem::path& dir,
                                   const std::vector<std::string>& overrides, bool force);
 
-// The scene as captured, seen from the captured camera: a built-in one rebuilt with
-// `settings`, or the file, which must be the one captured (the same SHA-256) unless `force`.
+// The scene as captured: a built-in one rebuilt with `settings`, or the file, which must be
+// the one captured (the same SHA-256) unless o.force. Seen from the captured camera, or from
+// the one o.camera or o.look_at choose (app/view_camera.h: against the scene's own cameras, as
+// `capture` would; a bad choice throws UsageError).
 scene::Scene load_captured_scene(const capture::ReplayInfo& info, const Settings& settings,
-                                 bool force);
+                                 const Options& o);
 
 // The camera a capture folder's report.json recorded (its "replay" object); throws ds::Error
 // "PATH: …" like read_capture_source. Its scene, version and settings are not checked.

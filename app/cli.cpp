@@ -17,6 +17,7 @@ namespace {
 struct Subcommands {
     CLI::App* view = nullptr;
     CLI::App* info = nullptr;
+    CLI::App* cameras = nullptr;
     CLI::App* capture = nullptr;
     CLI::App* export_cmd = nullptr;
     CLI::App* bench = nullptr;
@@ -33,19 +34,8 @@ struct SizeTexts {
     std::optional<std::string> render;
     std::optional<std::string> window;
     std::optional<std::string> at;       // pixel --at
-    std::optional<std::string> look_at;  // diagnose --look-at
+    std::optional<std::string> look_at;  // --look-at (the view)
 };
-
-// Digits only, read without wrapping: no sign, space, hex, octal or exponent (CLI11 alone
-// takes "0x10", reads "010" as 8 and skips leading spaces). nullopt when `text` is not that.
-std::optional<uint32_t> parse_digits(std::string_view text) {
-    if (text.empty() || text.find_first_not_of("0123456789") != std::string_view::npos)
-        return std::nullopt;
-    uint32_t value = 0;
-    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || ptr != text.data() + text.size()) return std::nullopt;
-    return value;
-}
 
 // A whole-number option's value in min..max; throws UsageError naming the option.
 int parse_count(const std::string& option, const std::string& text, int min, int max) {
@@ -103,9 +93,45 @@ void add_render_options(CLI::App& cmd, Options& o, bool with_scene) {
         ->type_name("NAME=VALUE");
 }
 
+// --camera NAME|INDEX and --look-at, which exclude each other: the view a command renders
+// (app/view_camera.h). `what` says what the view replaces ("the scene's camera").
+struct ViewChoice {
+    CLI::Option* camera = nullptr;
+    CLI::Option* look_at = nullptr;
+};
+
+ViewChoice add_view_choice(CLI::App& cmd, Options& o, std::optional<std::string>& look_at_text,
+                           const std::string& what) {
+    ViewChoice v;
+    v.camera = cmd.add_option_function<std::string>(
+                      "--camera",
+                      [&o](const std::string& text) {
+                          if (text.empty())
+                              throw UsageError(
+                                  "--camera expects a camera node's name or index (see "
+                                  "`depthscope cameras SCENE`), got ''");
+                          o.camera = text;
+                      },
+                      "instead of " + what +
+                          ": the scene's camera node NAME (exact) or INDEX, as `depthscope "
+                          "cameras SCENE` lists them (perspective ones)")
+                   ->type_name("NAME|INDEX");
+    v.look_at = add_text_option(cmd, "--look-at", look_at_text,
+                                "instead of " + what +
+                                    ": a camera at EX,EY,EZ looking at TX,TY,TZ, up +Y, with a "
+                                    "vertical field of view of FOV degrees (10..120; default the "
+                                    "scene camera's); the scene camera's near plane, the far "
+                                    "plane holding the whole scene")
+                    ->type_name("EX,EY,EZ:TX,TY,TZ[:FOV]");
+    v.camera->excludes(v.look_at);
+    return v;
+}
+
 // The inspector: `depthscope [view] [--scene NAME|PATH] [--set k=v]... [--frames N]`.
-void add_view_options(CLI::App& cmd, Options& o, std::optional<std::string>& window_text) {
+void add_view_options(CLI::App& cmd, Options& o, std::optional<std::string>& window_text,
+                      std::optional<std::string>& look_at_text) {
     add_render_options(cmd, o, /*with_scene=*/true);
+    add_view_choice(cmd, o, look_at_text, "the scene's (or --capture's) camera at the start");
     add_count_option(cmd, "--frames", o.view_frames, 0, 100000000,
                      "close the window after N frames (0: never)");
     add_text_option(cmd, "--size", window_text, "window size WIDTHxHEIGHT (default 1600x900)")
@@ -121,14 +147,15 @@ void add_view_options(CLI::App& cmd, Options& o, std::optional<std::string>& win
         ->needs(capture);
 }
 
-CLI::App* add_capture_command(CLI::App& app, Options& o, std::optional<std::string>& size_text) {
+CLI::App* add_capture_command(CLI::App& app, Options& o, SizeTexts& texts) {
     auto* capture = app.add_subcommand(
         "capture",
         "render one frame headless; write DIR/final.png, DIR/report.json and every graph "
         "image in DIR/resources/");
     add_render_options(*capture, o, /*with_scene=*/true);
-    add_text_option(*capture, "--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)")
+    add_text_option(*capture, "--size", texts.render, "render size WIDTHxHEIGHT (default 1280x720)")
         ->type_name("WxH");
+    add_view_choice(*capture, o, texts.look_at, "the scene's camera");
     add_path_option(*capture, "--out", o.out,
                     "output folder (default captures/YYYYmmdd-HHMMSS-SCENE/); an existing one "
                     "holding only a capture's files is replaced whole");
@@ -158,6 +185,18 @@ CLI::App* add_capture_command(CLI::App& app, Options& o, std::optional<std::stri
     return capture;
 }
 
+CLI::App* add_cameras_command(CLI::App& app, Options& o) {
+    auto* cameras = app.add_subcommand(
+        "cameras",
+        "list a scene's camera nodes, one line each: index, node name, type, vertical field of "
+        "view, near and far planes (what --camera picks)");
+    cameras->add_option("SCENE", o.scene, "built-in scene name (see `scenes`) or .gltf/.glb path")
+        ->required();
+    cameras->add_option("--set", o.sets, "scene setting as name=value, repeatable")
+        ->type_name("NAME=VALUE");
+    return cameras;
+}
+
 CLI::App* add_export_scene_command(CLI::App& app, Options& o) {
     auto* export_cmd = app.add_subcommand(
         "export-scene", "write a built-in scene as OUT.gltf + OUT.bin + PNG textures");
@@ -167,12 +206,13 @@ CLI::App* add_export_scene_command(CLI::App& app, Options& o) {
     return export_cmd;
 }
 
-CLI::App* add_bench_command(CLI::App& app, Options& o, std::optional<std::string>& size_text) {
+CLI::App* add_bench_command(CLI::App& app, Options& o, SizeTexts& texts) {
     auto* bench = app.add_subcommand(
         "bench", "render frames headless for each settings combination; per-pass GPU medians");
     add_render_options(*bench, o, /*with_scene=*/true);
-    add_text_option(*bench, "--size", size_text, "render size WIDTHxHEIGHT (default 1280x720)")
+    add_text_option(*bench, "--size", texts.render, "render size WIDTHxHEIGHT (default 1280x720)")
         ->type_name("WxH");
+    add_view_choice(*bench, o, texts.look_at, "the scene's camera");
     add_count_option(*bench, "--frames", o.bench_frames, 1, 100000,
                      "measured frames per combination (default 20)");
     add_count_option(*bench, "--warmup", o.bench_warmup, 0, 100000,
@@ -209,6 +249,7 @@ CLI::App* add_pixel_command(CLI::App& app, Options& o, SizeTexts& texts) {
     add_render_options(*pixel, o, /*with_scene=*/true);
     add_text_option(*pixel, "--size", texts.render, "render size WIDTHxHEIGHT (default 1280x720)")
         ->type_name("WxH");
+    add_view_choice(*pixel, o, texts.look_at, "the scene's camera");
     add_text_option(*pixel, "--at", texts.at, "the pixel X,Y (0,0 = top left)")
         ->type_name("X,Y")
         ->required();
@@ -217,13 +258,14 @@ CLI::App* add_pixel_command(CLI::App& app, Options& o, SizeTexts& texts) {
     return pixel;
 }
 
-CLI::App* add_replay_command(CLI::App& app, Options& o) {
+CLI::App* add_replay_command(CLI::App& app, Options& o, SizeTexts& texts) {
     auto* replay = app.add_subcommand(
         "replay",
         "render a capture again from its report.json (scene, camera, settings, size) "
         "into a new capture folder, and say whether final.png is bit-identical");
     replay->add_option("DIR", o.capture_in, "the capture folder")->required();
     add_render_options(*replay, o, /*with_scene=*/false);
+    add_view_choice(*replay, o, texts.look_at, "the captured camera");
     add_path_option(*replay, "--out", o.out, "output folder (default DIR-replay)");
     replay
         ->add_option("--resources", o.resources,
@@ -278,15 +320,13 @@ CLI::App* add_diagnose_command(CLI::App& app, Options& o, SizeTexts& texts) {
     add_text_option(*diagnose, "--size", texts.render,
                     "render size WIDTHxHEIGHT (default 1280x720)")
         ->type_name("WxH");
-    CLI::Option* look_at =
-        add_text_option(*diagnose, "--look-at", texts.look_at,
-                        "the view: a camera at EX,EY,EZ looking at TX,TY,TZ (the scene camera's "
-                        "field of view and near plane)")
-            ->type_name("EX,EY,EZ:TX,TY,TZ");
-    add_path_option(*diagnose, "--camera", o.camera_capture,
-                    "the view: the camera of a capture folder (its report.json)")
+    const ViewChoice view = add_view_choice(*diagnose, o, texts.look_at, "the scene's camera");
+    add_path_option(*diagnose, "--camera-of", o.camera_of,
+                    "instead of the scene's camera: the camera of a capture folder (its "
+                    "report.json)")
         ->type_name("DIR")
-        ->excludes(look_at);
+        ->excludes(view.camera)
+        ->excludes(view.look_at);
     add_path_option(*diagnose, "--json", o.out,
                     "also write the findings as JSON to FILE (a new file or a regular one)");
     diagnose
@@ -306,20 +346,21 @@ CLI::App* add_diagnose_command(CLI::App& app, Options& o, SizeTexts& texts) {
 // Every subcommand in help order; the top level takes the inspector's options too.
 Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     Subcommands c;
-    add_view_options(app, o, sizes.window);
+    add_view_options(app, o, sizes.window, sizes.look_at);
     c.view = app.add_subcommand("view", "the inspector in a window (the default command)");
-    add_view_options(*c.view, o, sizes.window);
+    add_view_options(*c.view, o, sizes.window, sizes.look_at);
 
     c.info = app.add_subcommand("info", "list Vulkan devices and their capabilities");
     c.info->add_option("--device", o.device, "mark this device as selected (index or name)");
     app.add_subcommand("scenes", "list the built-in scenes, one line each");
+    c.cameras = add_cameras_command(app, o);
     app.add_subcommand("settings", "list every setting: name, type, default, range, help");
 
-    c.capture = add_capture_command(app, o, sizes.render);
+    c.capture = add_capture_command(app, o, sizes);
     c.export_cmd = add_export_scene_command(app, o);
-    c.bench = add_bench_command(app, o, sizes.render);
+    c.bench = add_bench_command(app, o, sizes);
     c.pixel = add_pixel_command(app, o, sizes);
-    c.replay = add_replay_command(app, o);
+    c.replay = add_replay_command(app, o, sizes);
     c.diff = add_diff_command(app, o);
     c.diagnose = add_diagnose_command(app, o, sizes);
     return c;
@@ -330,7 +371,7 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
 void reject_options_before_command(const CLI::App& app) {
     if (app.get_subcommands().size() != 1) return;
     for (const char* name : {"--validate", "--device", "--scene", "--set", "--frames", "--size",
-                             "--capture", "--force"})
+                             "--capture", "--force", "--camera", "--look-at"})
         if (app.count(name))
             throw UsageError(std::string(name) + " before the command '" +
                              app.get_subcommands().front()->get_name() +
@@ -341,6 +382,7 @@ void reject_options_before_command(const CLI::App& app) {
 void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Options& o) {
     if (c.view->parsed()) o.command = Command::View;
     if (c.info->parsed()) o.command = Command::Info;
+    if (c.cameras->parsed()) o.command = Command::Cameras;
     if (app.got_subcommand("scenes")) o.command = Command::Scenes;
     if (app.got_subcommand("settings")) o.command = Command::Settings;
     if (c.capture->parsed()) o.command = Command::Capture;
@@ -365,82 +407,6 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
 }
 
 }  // namespace
-
-// Syntax and the tool's own bound only: whether the device can make images this large (and
-// has the memory) is checked when rendering.
-Size parse_size(const std::string& text) {
-    const size_t x = text.find('x');
-    const std::optional<uint32_t> w =
-        x == std::string::npos ? std::nullopt : parse_digits(std::string_view(text).substr(0, x));
-    const std::optional<uint32_t> h =
-        x == std::string::npos ? std::nullopt : parse_digits(std::string_view(text).substr(x + 1));
-    if (!w || !h || *w < 1 || *h < 1 || *w > kMaxSize || *h > kMaxSize) {
-        throw UsageError("--size expects WIDTHxHEIGHT between 1x1 and " + std::to_string(kMaxSize) +
-                         "x" + std::to_string(kMaxSize) + ", got " + quote(text));
-    }
-    return {*w, *h};
-}
-
-void parse_at(const std::string& text, uint32_t& x, uint32_t& y) {
-    const size_t comma = text.find(',');
-    const std::optional<uint32_t> px = comma == std::string::npos
-                                           ? std::nullopt
-                                           : parse_digits(std::string_view(text).substr(0, comma));
-    const std::optional<uint32_t> py = comma == std::string::npos
-                                           ? std::nullopt
-                                           : parse_digits(std::string_view(text).substr(comma + 1));
-    if (!px || !py || *px >= kMaxSize || *py >= kMaxSize) {
-        throw UsageError("--at expects X,Y (two whole numbers below " + std::to_string(kMaxSize) +
-                         ", 0,0 = top left), got " + quote(text));
-    }
-    x = *px;
-    y = *py;
-}
-
-namespace {
-
-// One decimal number of a --look-at text (minus, digits, point, exponent), finite; none else.
-std::optional<float> parse_coordinate(std::string_view text) {
-    float value = 0;
-    const bool plain =
-        !text.empty() && text.find_first_not_of("-0123456789.eE") == std::string_view::npos;
-    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (!plain || ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(value))
-        return std::nullopt;
-    return value;
-}
-
-// "x,y,z" into out[3]; false when it is not three numbers.
-bool parse_point(std::string_view text, float out[3]) {
-    for (int i = 0; i < 3; ++i) {
-        const size_t end = i < 2 ? text.find(',') : text.size();
-        if (end == std::string_view::npos) return false;
-        const std::optional<float> v = parse_coordinate(text.substr(0, end));
-        if (!v) return false;
-        out[i] = *v;
-        if (i < 2) text.remove_prefix(end + 1);
-    }
-    return true;
-}
-
-}  // namespace
-
-LookAt parse_look_at(const std::string& text) {
-    LookAt l;
-    const size_t colon = text.find(':');
-    const bool ok = colon != std::string::npos && text.find(':', colon + 1) == std::string::npos &&
-                    parse_point(std::string_view(text).substr(0, colon), l.eye) &&
-                    parse_point(std::string_view(text).substr(colon + 1), l.target);
-    if (!ok)
-        throw UsageError(
-            "--look-at expects EX,EY,EZ:TX,TY,TZ (six numbers: the eye, then the "
-            "point it looks at), got " +
-            quote(text));
-    if (l.eye[0] == l.target[0] && l.eye[1] == l.target[1] && l.eye[2] == l.target[2])
-        throw UsageError("--look-at: the eye and the point it looks at are the same, got " +
-                         quote(text));
-    return l;
-}
 
 std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
     CLI::App app{

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ds::app {
@@ -12,6 +13,7 @@ enum class Command {
     View,
     Info,
     Scenes,
+    Cameras,
     Settings,
     Capture,
     ExportScene,
@@ -27,10 +29,11 @@ struct Size {
     uint32_t height = 720;
 };
 
-// --look-at EX,EY,EZ:TX,TY,TZ: a camera at E looking at T (scene units).
+// --look-at EX,EY,EZ:TX,TY,TZ[:FOV]: a camera at E looking at T (scene units), up +Y.
 struct LookAt {
     float eye[3] = {0, 0, 0};
     float target[3] = {0, 0, 0};
+    std::optional<float> fov;  // vertical, degrees (kMinFov..kMaxFov); none: the scene camera's
 };
 
 struct Options {
@@ -65,10 +68,12 @@ struct Options {
     std::string diff_a, diff_b;
     int diff_threshold = 8;         // of 255, 1..255
     double diff_max_percent = 0.1;  // 0..100
-    // The view a command renders (app/view_camera.h; diagnose): --look-at, or --camera DIR (a
-    // capture folder's camera); neither: the scene's camera.
+    // The view a command renders (app/view_camera.h): --camera NAME|INDEX (a camera node of
+    // the scene, "" = not given), --look-at, or diagnose's --camera-of DIR (a capture folder's
+    // camera); none: the scene's camera (replay: the captured one).
+    std::string camera;
     std::optional<LookAt> look_at;
-    std::string camera_capture;
+    std::string camera_of;
     std::string fail_on;  // diagnose --fail-on: "", "error" or "warning"
 };
 
@@ -79,12 +84,19 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& options);
 // The largest --size side (WIDTH and HEIGHT each 1..kMaxSize).
 constexpr uint32_t kMaxSize = 16384;
 
+// Decimal digits only, read without wrapping: no sign, space, hex, octal or exponent (CLI11
+// alone takes "0x10", reads "010" as 8 and skips leading spaces). nullopt when `text` is not.
+std::optional<uint32_t> parse_digits(std::string_view text);
 // "640x360" -> Size: digits only, each side 1..kMaxSize; throws UsageError.
 Size parse_size(const std::string& text);
 // "12,34" -> (12, 34) into x, y: digits only, each below kMaxSize; throws UsageError.
 void parse_at(const std::string& text, uint32_t& x, uint32_t& y);
-// "0,1.5,8:0,1,0" -> a LookAt: six finite decimal numbers, eye and target apart; throws
-// UsageError.
+// --look-at's field of view, vertical degrees (the fov knob's range).
+constexpr float kMinFov = 10.0f;
+constexpr float kMaxFov = 120.0f;
+// "0,1.5,8:0,1,0" or "0,1.5,8:0,1,0:60" -> a LookAt: six finite decimal numbers, eye and target
+// apart, the direction between them more than 1 degree from straight up or down, and an optional
+// field of view in kMinFov..kMaxFov; throws UsageError.
 LookAt parse_look_at(const std::string& text);
 
 }  // namespace ds::app

@@ -11,6 +11,7 @@
 #include "app/bench.h"
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "app/view_camera.h"
 #include "capture/advice.h"
 #include "capture/file_output.h"
 #include "capture/report.h"
@@ -334,7 +335,8 @@ int run_bench(const Options& o) {
     // not after the whole benchmark.
     if (!o.out.empty()) capture::check_output_file("--json", o.out);
     if (!o.trace.empty()) capture::check_output_file("--trace", o.trace);
-    const scene::Scene scene = scene::load_scene(o.scene, base);
+    scene::Scene scene = scene::load_scene(o.scene, base);
+    scene.camera = view_camera(o, scene);  // --camera, --look-at
     RendererOptions renderer_options;
     renderer_options.validate = o.validate;
     renderer_options.device = o.device;

@@ -7,6 +7,7 @@
 #include "app/capture_job.h"
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "app/view_camera.h"
 #include "capture/capture_writer.h"
 #include "capture/file_output.h"
 #include "capture/image_writer.h"
@@ -196,6 +197,7 @@ int run_capture(const Options& o) {
     for (const auto& w : job.scene.warnings) {
         std::fprintf(stderr, "depthscope: warning: %s: %s\n", job.scene.source.c_str(), w.c_str());
     }
+    job.scene.camera = view_camera(o, job.scene);  // --camera, --look-at: refused before output
     return write_capture(o, job);
 }
 

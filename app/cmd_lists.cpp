@@ -1,11 +1,15 @@
-// The listing commands: info, scenes, settings.
+// The listing commands: info, scenes, cameras, settings.
 #include <algorithm>
 #include <cstdio>
+#include <glm/glm.hpp>
 #include <string>
+#include <vector>
 
 #include "app/commands.h"
+#include "renderer/common/quoted.h"
 #include "renderer/device_info.h"
 #include "renderer/scene/builtin/builtin.h"
+#include "renderer/scene/loader.h"
 #include "renderer/settings/settings.h"
 
 namespace ds::app {
@@ -20,6 +24,51 @@ int run_info(const Options& options) {
 int run_scenes() {
     for (const auto& s : scene::builtin::list()) {
         std::printf("%-10s %s\n", s.name.c_str(), s.description.c_str());
+    }
+    return 0;
+}
+
+namespace {
+
+// "0.1", "1000", "infinite" (a perspective camera without zfar)
+std::string plane_text(float value, bool infinite) {
+    if (infinite) return "infinite";
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(value));
+    return text;
+}
+
+}  // namespace
+
+int run_cameras(const Options& o) {
+    Settings settings;
+    for (const auto& assignment : o.sets) settings.apply(assignment);
+    const scene::Scene scene = scene::load_scene(o.scene, settings);
+    for (const auto& w : scene.warnings)
+        std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
+    if (scene.cameras.empty()) {
+        std::printf("%s has no camera nodes (its view is framed from the scene's bounds)\n",
+                    scene.name.c_str());
+        return 0;
+    }
+    std::vector<std::string> names;  // one line each, whatever the file holds
+    size_t name_w = 4;
+    for (const scene::SceneCamera& c : scene.cameras) {
+        names.push_back(c.name.empty() ? "-" : escaped(c.name));
+        name_w = std::max(name_w, names.back().size());
+    }
+    std::printf("%-5s  %-*s  %-12s  %6s  %-10s  %-10s  %s\n", "INDEX", int(name_w), "NAME", "TYPE",
+                "YFOV", "ZNEAR", "ZFAR", "NODE");
+    for (size_t i = 0; i < scene.cameras.size(); ++i) {
+        const scene::SceneCamera& c = scene.cameras[i];
+        const bool perspective = c.type == scene::SceneCamera::Type::Perspective;
+        char fov[32] = "-";
+        if (perspective) std::snprintf(fov, sizeof fov, "%.2f", double(glm::degrees(c.yfov)));
+        std::printf("%-5zu  %-*s  %-12s  %6s  %-10s  %-10s  %d%s\n", i, int(name_w),
+                    names[i].c_str(), scene::to_string(c.type), fov,
+                    plane_text(c.znear, false).c_str(),
+                    plane_text(c.zfar, perspective && c.zfar == 0.0f).c_str(), c.gltf_node,
+                    perspective && !c.camera ? " (no view direction)" : "");
     }
     return 0;
 }

@@ -5,6 +5,7 @@
 
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "app/view_camera.h"
 #include "capture/file_output.h"
 #include "capture/pixel_report.h"
 #include "capture/report.h"
@@ -33,9 +34,10 @@ int run_pixel(const Options& o) {
     Settings settings;
     for (const auto& assignment : o.sets) settings.apply(assignment);
     check_input(o);
-    const scene::Scene scene = scene::load_scene(o.scene, settings);
+    scene::Scene scene = scene::load_scene(o.scene, settings);
     for (const auto& w : scene.warnings)
         std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
+    scene.camera = view_camera(o, scene);
 
     RendererOptions renderer_options;
     renderer_options.validate = o.validate;

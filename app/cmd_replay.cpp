@@ -17,6 +17,14 @@ fs::path default_out(const fs::path& dir) {
     return d.string() + "-replay";
 }
 
+// What the command line changed of the captured frame, said beside "differs".
+const char* changed_by(const Options& o) {
+    const bool view = o.look_at || !o.camera.empty();
+    if (view && !o.sets.empty()) return " (--set and the view changed the frame)";
+    if (view) return o.look_at ? " (--look-at changed the view)" : " (--camera changed the view)";
+    return o.sets.empty() ? "" : " (--set changed the frame)";
+}
+
 }  // namespace
 
 int run_replay(const Options& o) {
@@ -27,7 +35,7 @@ int run_replay(const Options& o) {
     job.settings = source.settings;  // recorded, then the A/B overrides
     job.resources = capture::parse_resource_selection(o.resources);
     job.out = o.out.empty() ? default_out(dir) : fs::path(o.out);
-    job.scene = load_captured_scene(info, job.settings, o.force);  // with its camera
+    job.scene = load_captured_scene(info, job.settings, o);  // its camera, or --camera's
 
     Options replay = o;
     replay.size = {info.width, info.height};
@@ -37,8 +45,7 @@ int run_replay(const Options& o) {
         std::printf("depthscope: replay: final.png is bit-identical to %s\n", dir.c_str());
     else
         std::printf("depthscope: replay: final.png differs from %s%s (depthscope diff %s %s)\n",
-                    dir.c_str(), o.sets.empty() ? "" : " (--set changed the frame)", dir.c_str(),
-                    job.out.c_str());
+                    dir.c_str(), changed_by(o), dir.c_str(), job.out.c_str());
     return code;
 }
 

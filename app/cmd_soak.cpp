@@ -36,6 +36,10 @@ double seconds_since(Clock::time_point start) {
 void check_soak_usage(const Options& o) {
     if (!o.matrix.empty() || o.ui || o.advise)
         throw UsageError("--soak picks its own combinations: drop --matrix, --ui and --advise");
+    if (!o.camera.empty() || o.look_at)
+        throw UsageError(
+            "--soak renders every scene from its own camera: drop --camera and "
+            "--look-at");
 }
 
 // Every built-in scene, then --scene when it names a file (or a built-in: already there).

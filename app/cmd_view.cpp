@@ -15,6 +15,7 @@
 #include "app/capture_source.h"
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "app/view_camera.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 #include "renderer/renderer.h"
@@ -69,7 +70,7 @@ OpenedCapture open_capture(const Options& o) {
                     std::to_string(shot.width) + "x" + std::to_string(shot.height) +
                     ", but report.json says " + std::to_string(source.info.width) + "x" +
                     std::to_string(source.info.height));
-    scene::Scene scene = load_captured_scene(source.info, source.settings, o.force);
+    scene::Scene scene = load_captured_scene(source.info, source.settings, o);
     return {source.dir, source.settings, std::move(scene), std::move(pinned)};
 }
 
@@ -293,6 +294,7 @@ int run_view(const Options& o) {
     } else {
         start = start_state(o, load_saved_state(files.state_file));
         scene = load_start_scene(o, start);
+        scene.camera = view_camera(o, scene);  // --camera, --look-at: the start camera
     }
 
     RendererOptions renderer_options;
@@ -320,6 +322,7 @@ int run_view(const Options& o) {
         options.threaded = true;
         ui::Inspector inspector(renderer, start.settings, std::move(scene), options);
         inspector.worker().on_finished(&ui::Window::wake);
+        if (persist) inspector.use_bookmarks(ui::bookmarks_file(files.dir));
         if (opened) open_in(inspector, *opened);
         const uint64_t frames = run_frames(o, *window, presenter, inspector);
         presenter.wait_idle();

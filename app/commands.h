@@ -6,6 +6,7 @@ namespace ds::app {
 
 int run_info(const Options& options);
 int run_scenes();
+int run_cameras(const Options& options);  // the scene's camera nodes (--camera's choices)
 int run_settings();
 int run_capture(const Options& options);
 int run_export_scene(const Options& options);

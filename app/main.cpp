@@ -18,6 +18,8 @@ int dispatch(const ds::app::Options& o) {
             return ds::app::run_info(o);
         case Command::Scenes:
             return ds::app::run_scenes();
+        case Command::Cameras:
+            return ds::app::run_cameras(o);
         case Command::Settings:
             return ds::app::run_settings();
         case Command::ExportScene:

@@ -17,6 +17,10 @@ std::filesystem::path config_dir() {
     return {};
 }
 
+std::filesystem::path bookmarks_file(const std::filesystem::path& dir) {
+    return dir.empty() ? dir : dir / "cameras.json";
+}
+
 SavedState load_state(const std::filesystem::path& file) {
     SavedState state;
     std::ifstream in(file);

@@ -3,6 +3,7 @@
 // ($DEPTHSCOPE_CONFIG_DIR, else $XDG_CONFIG_HOME/depthscope, else ~/.config/depthscope):
 //   imgui.ini     the window layout (ImGui's own)
 //   settings.ini  the scene and every setting that differs from its default, name=value
+//   cameras.json  named camera bookmarks per scene (ui/camera_bookmarks.h), written at each change
 // The command line wins over the file (--scene, --set).
 #include <filesystem>
 #include <string>
@@ -13,6 +14,8 @@
 namespace ds::ui {
 
 std::filesystem::path config_dir();  // empty when no folder can be named
+// The camera bookmarks' file in `dir` (empty when `dir` is).
+std::filesystem::path bookmarks_file(const std::filesystem::path& dir);
 
 struct SavedState {
     std::string scene;                 // "" = none saved

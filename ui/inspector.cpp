@@ -161,38 +161,47 @@ void Inspector::draw() {
 }
 
 void Inspector::apply(const Action& action) {
-    std::visit(Overloaded{
-                   [&](const SetSetting& a) { set_setting(a.name, a.value); },
-                   [&](const SelectResource& a) {
-                       viewer_.resource = a.name;
-                       viewer_.sample = 0;
-                       viewer_.hover.reset();
-                   },
-                   [&](const SelectPass& a) { selected_pass_ = a.name; },
-                   [&](const LoadScene& a) { load_named_scene(a.name_or_path); },
-                   [&](const ReloadShaders&) { reload_shaders(); },
-                   [&](const SetAutoReload& a) { auto_reload_ = a.on; },
-                   [&](const ResetSettings&) { set_settings_or_say(Settings()); },
-                   [&](const MeasureAdvice&) { measure_advice(); },
-                   [&](const SceneCamera&) { camera_.reset(scene_.camera); },
-                   [&](const Diagnose&) { start_diagnosis(); },
-                   [&](const SelectFinding& a) { select_finding(a.index); },
-                   [&](const AddOverlay& a) { viewer_.overlays.push_back({a.resource}); },
-                   [&](const RemoveOverlay& a) {
-                       if (a.index < viewer_.overlays.size())
-                           viewer_.overlays.erase(viewer_.overlays.begin() + long(a.index));
-                   },
-                   [&](const MoveOverlay& a) {
-                       const long to = long(a.index) + a.by;
-                       if (a.index < viewer_.overlays.size() && to >= 0 &&
-                           size_t(to) < viewer_.overlays.size())
-                           std::swap(viewer_.overlays[a.index], viewer_.overlays[size_t(to)]);
-                   },
-                   [&](const PickPixel& a) { pick_pixel(a); },
-                   [&](const CaptureFrame&) { request_capture(); },
-                   [&](const PinCapture& a) { pin_capture(a.dir); },
-               },
-               action);
+    std::visit(
+        Overloaded{
+            [&](const SetSetting& a) { set_setting(a.name, a.value); },
+            [&](const SelectResource& a) {
+                viewer_.resource = a.name;
+                viewer_.sample = 0;
+                viewer_.hover.reset();
+            },
+            [&](const SelectPass& a) { selected_pass_ = a.name; },
+            [&](const LoadScene& a) { load_named_scene(a.name_or_path); },
+            [&](const ReloadShaders&) { reload_shaders(); },
+            [&](const SetAutoReload& a) { auto_reload_ = a.on; },
+            [&](const ResetSettings&) { set_settings_or_say(Settings()); },
+            [&](const MeasureAdvice&) { measure_advice(); },
+            [&](const SceneCamera&) { camera_.reset(scene_.camera); },
+            [&](const GoToCamera& a) { go_to_camera(a.index); },
+            [&](const FitInside&) { fit_inside(); },
+            [&](const AddBookmark& a) { add_bookmark(a.name); },
+            [&](const GoToBookmark& a) {
+                if (const auto* c = bookmarks_.find(bookmark_key(scene_), a.name))
+                    camera_.reset(*c);
+            },
+            [&](const DeleteBookmark& a) { bookmarks_.remove(bookmark_key(scene_), a.name); },
+            [&](const Diagnose&) { start_diagnosis(); },
+            [&](const SelectFinding& a) { select_finding(a.index); },
+            [&](const AddOverlay& a) { viewer_.overlays.push_back({a.resource}); },
+            [&](const RemoveOverlay& a) {
+                if (a.index < viewer_.overlays.size())
+                    viewer_.overlays.erase(viewer_.overlays.begin() + long(a.index));
+            },
+            [&](const MoveOverlay& a) {
+                const long to = long(a.index) + a.by;
+                if (a.index < viewer_.overlays.size() && to >= 0 &&
+                    size_t(to) < viewer_.overlays.size())
+                    std::swap(viewer_.overlays[a.index], viewer_.overlays[size_t(to)]);
+            },
+            [&](const PickPixel& a) { pick_pixel(a); },
+            [&](const CaptureFrame&) { request_capture(); },
+            [&](const PinCapture& a) { pin_capture(a.dir); },
+        },
+        action);
 }
 
 void Inspector::set_setting(const std::string& name, const std::string& value) {

@@ -35,6 +35,7 @@
 #include "renderer/settings/settings.h"
 #include "renderer/view/decode.h"
 #include "renderer/view/readout.h"
+#include "ui/camera_bookmarks.h"
 #include "ui/camera_controller.h"
 #include "ui/compare.h"
 #include "ui/panels/workspace.h"
@@ -71,8 +72,26 @@ struct SetAutoReload {
 struct ResetSettings {};
 // The Advisor panel's "measure": the prepass advisor over the current camera and settings.
 struct MeasureAdvice {};
-// Back to the scene's own camera (the file's, or the framed view of a scene without one).
+// Back to the scene's own camera (the file's, or the framed view of a scene without one; the
+// command line's --camera or --look-at when it chose one).
 struct SceneCamera {};
+// The Camera panel: one of the scene's camera nodes (scene().cameras[index], perspective); the
+// view "fit inside" finds for interiors (scene/fit_inside.h); named bookmarks of this scene's
+// views (ui/camera_bookmarks.h): the current camera added under a name (replacing one of that
+// name), gone to, deleted.
+struct GoToCamera {
+    size_t index = 0;
+};
+struct FitInside {};
+struct AddBookmark {
+    std::string name;
+};
+struct GoToBookmark {
+    std::string name;
+};
+struct DeleteBookmark {
+    std::string name;
+};
 // The Diagnose button: every detector that applies, on the current view, off the UI thread
 // (capture/diagnose/diagnose_run.h); its findings list in the Diagnose panel.
 struct Diagnose {};
@@ -107,8 +126,9 @@ struct PinCapture {
 };
 using Action =
     std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders, SetAutoReload,
-                 ResetSettings, MeasureAdvice, SceneCamera, Diagnose, SelectFinding, AddOverlay,
-                 RemoveOverlay, MoveOverlay, PickPixel, CaptureFrame, PinCapture>;
+                 ResetSettings, MeasureAdvice, SceneCamera, GoToCamera, FitInside, AddBookmark,
+                 GoToBookmark, DeleteBookmark, Diagnose, SelectFinding, AddOverlay, RemoveOverlay,
+                 MoveOverlay, PickPixel, CaptureFrame, PinCapture>;
 
 enum class MouseTarget : uint8_t { Camera, Image, Pick };
 
@@ -272,6 +292,14 @@ class Inspector {
     // Renderer::describe_surface (safe from the UI thread: see RenderWorker).
     std::optional<SurfaceInfo> describe_surface(uint32_t id) const;
     const scene::Camera& camera() const { return camera_.camera(); }
+    // This scene's camera bookmarks (and their file's trouble: bookmarks().error()).
+    const std::vector<CameraBookmark>& scene_bookmarks() const {
+        return bookmarks_.of(bookmark_key(scene_));
+    }
+    const CameraBookmarks& bookmarks() const { return bookmarks_; }
+    // Reads and from now on keeps the bookmarks in `file` (the window: the config folder's
+    // cameras.json, ui/config.h); until then they last the session (capture --ui, bench --ui).
+    void use_bookmarks(const std::filesystem::path& file) { bookmarks_ = CameraBookmarks(file); }
     CameraInput& camera_input() { return camera_input_; }
     // The render size the next frame uses: the viewer's area times render_scale (the pinned
     // capture's size with compare.match_size).
@@ -299,11 +327,12 @@ class Inspector {
     // Panel state that outlives a frame (text fields).
     struct PanelState {
         std::array<char, 512> scene_path{};
-        std::array<char, 128> draw_filter{};  // the Draws panel's filter (mesh/material/node)
-        std::array<char, 512> pin_path{};     // the Compare panel's capture folder field
-        std::vector<size_t> draw_rows;        // the Draws panel's rows as last drawn
-        uint64_t pixel_picks_shown = 0;       // the Pixel panel opens on a new pick
-        uint64_t diagnoses_shown = 0;         // the Diagnose panel opens on a new diagnosis
+        std::array<char, 128> draw_filter{};    // the Draws panel's filter (mesh/material/node)
+        std::array<char, 512> pin_path{};       // the Compare panel's capture folder field
+        std::array<char, 128> bookmark_name{};  // the Camera panel's name for a new bookmark
+        std::vector<size_t> draw_rows;          // the Draws panel's rows as last drawn
+        uint64_t pixel_picks_shown = 0;         // the Pixel panel opens on a new pick
+        uint64_t diagnoses_shown = 0;           // the Diagnose panel opens on a new diagnosis
     };
     PanelState& panel_state() const { return panel_state_; }
     // The panels' layout: regions, tabs, splits (ui/panels/workspace.h); workspace().select(
@@ -365,6 +394,10 @@ class Inspector {
     void capture_when_shown();
     void capture_frame(const PendingCapture& request);
     void pin_capture(const std::filesystem::path& dir);
+    // inspector_camera.cpp: the Camera panel's actions.
+    void go_to_camera(size_t index);
+    void fit_inside();
+    void add_bookmark(const std::string& name);
 
     Renderer& renderer_;  // through worker_ (exclusive()) once it exists
     DeviceInfo device_;   // what the panels say of the device's counters
@@ -374,6 +407,7 @@ class Inspector {
     SceneSummary summary_;
     Options options_;
     CameraController camera_;
+    CameraBookmarks bookmarks_;
     CameraInput camera_input_;
     ViewerState viewer_;
     std::string selected_pass_;

@@ -1,5 +1,6 @@
 #include "renderer/scene/gltf_nodes.h"
 
+#include <cfloat>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -49,6 +50,13 @@ Camera camera_params(const tinygltf::Camera& source, size_t index) {
     return c;
 }
 
+// An orthographic camera's planes, as the file gives them: nothing renders through them, so a
+// value beyond float range is shown as 0 rather than refusing the file.
+float ortho_plane(double value) {
+    return std::isfinite(value) && std::fabs(value) <= double{FLT_MAX} ? static_cast<float>(value)
+                                                                       : 0.0f;
+}
+
 // Places `params` at a node: glTF cameras look down their local -Z with +Y up. Nothing when
 // the node's transform collapses the view direction (e.g. zero scale).
 std::optional<Camera> place_camera(Camera params, const glm::mat4& world) {
@@ -83,6 +91,29 @@ std::vector<glm::mat4> check_nodes(const tinygltf::Model& model) {
         locals.push_back(local_transform(node, i));
     }
     return locals;
+}
+
+// Camera node `index` placed by `world` into the walk's list (and as its camera when it is the
+// first perspective one placed).
+void add_camera(const tinygltf::Model& model, const std::vector<Camera>& params,
+                const tinygltf::Node& node, int index, const glm::mat4& world, SceneWalk& walk) {
+    const auto which = static_cast<size_t>(node.camera);
+    const tinygltf::Camera& source = model.cameras[which];
+    SceneCamera c;
+    c.gltf_node = index;
+    c.name = node.name;
+    if (source.type == "perspective") {
+        c.yfov = params[which].yfov;
+        c.znear = params[which].znear;
+        c.zfar = params[which].zfar;
+        c.camera = place_camera(params[which], world);
+        if (!walk.camera) walk.camera = c.camera;
+    } else {
+        c.type = SceneCamera::Type::Orthographic;
+        c.znear = ortho_plane(source.orthographic.znear);
+        c.zfar = ortho_plane(source.orthographic.zfar);
+    }
+    walk.cameras.push_back(std::move(c));
 }
 
 }  // namespace
@@ -176,9 +207,7 @@ SceneWalk walk_scene(const tinygltf::Model& model, int scene_index) {
         if (node.mesh >= 0)
             walk.placements.push_back(
                 {node.mesh, world, node.name.empty() ? what : node.name, item.node});
-        if (node.camera >= 0 && !walk.camera &&
-            model.cameras[static_cast<size_t>(node.camera)].type == "perspective")
-            walk.camera = place_camera(cameras[static_cast<size_t>(node.camera)], world);
+        if (node.camera >= 0) add_camera(model, cameras, node, item.node, world, walk);
         stack.push_back({item.node, glm::mat4(1.0f), true, item.depth});
         push_children(node.children, world, what, item.depth + 1);
     }

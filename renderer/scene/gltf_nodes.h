@@ -1,6 +1,6 @@
 #pragma once
-// The node hierarchy of one glTF scene -> world transforms of mesh nodes and the first
-// perspective camera. Internal to renderer/scene; errors are InputError with a WHAT only.
+// The node hierarchy of one glTF scene -> world transforms of mesh nodes, every camera node and
+// the first perspective camera. Internal to renderer/scene; errors are InputError with a WHAT only.
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,7 +20,8 @@ struct MeshPlacement {
 
 struct SceneWalk {
     std::vector<MeshPlacement> placements;  // depth-first, authored order
-    std::optional<Camera> camera;           // first perspective camera met on the way
+    std::vector<SceneCamera> cameras;       // every camera node met, in the same order
+    std::optional<Camera> camera;           // first perspective camera placed on the way
 };
 
 // The scene to show: model.defaultScene, or scene 0 when none is set. Throws "no scene".

@@ -79,18 +79,26 @@ void build_draw_groups(Scene& scene, std::vector<Instance> placed) {
 
 // A file camera without zfar asks for an infinite projection; the renderer wants a finite
 // range, so reach past the far side of the scene instead.
-void set_camera(Scene& scene, std::optional<Camera> file_camera) {
-    if (!file_camera) {
+void finite_far(Camera& camera, const Bounds& bounds) {
+    if (camera.zfar != 0.0f) return;
+    const float reach =
+        glm::length(bounds.center() - camera.position) + glm::length(bounds.extent());
+    camera.zfar = std::max(2.0f * reach, 1000.0f * camera.znear);
+}
+
+// Every camera node (placed ones with a finite far plane), the first perspective one as the
+// scene's camera, else a view framed from the bounds.
+void set_cameras(Scene& scene, SceneWalk walk) {
+    for (SceneCamera& c : walk.cameras)
+        if (c.camera) finite_far(*c.camera, scene.bounds);
+    scene.cameras = std::move(walk.cameras);
+    if (!walk.camera) {
         scene.camera = frame_bounds(scene.bounds);
         return;
     }
-    if (file_camera->zfar == 0.0f) {
-        const float reach = glm::length(scene.bounds.center() - file_camera->position) +
-                            glm::length(scene.bounds.extent());
-        file_camera->zfar = std::max(2.0f * reach, 1000.0f * file_camera->znear);
-    }
-    scene.file_camera = file_camera;
-    scene.camera = *file_camera;
+    finite_far(*walk.camera, scene.bounds);
+    scene.file_camera = walk.camera;
+    scene.camera = *walk.camera;
 }
 
 void add_warnings(const tinygltf::Model& model, Scene& scene, const MeshImport& meshes) {
@@ -152,7 +160,7 @@ Scene import_checked(const tinygltf::Model& model, std::string name, std::string
         scene.materials.push_back(fallback);
     }
 
-    const SceneWalk walk = walk_scene(model, scene_index);
+    SceneWalk walk = walk_scene(model, scene_index);
     build_draw_groups(scene, place_instances(walk.placements, meshes));
     if (scene.instances.empty()) fail(nothing_to_draw(scene_index, meshes));
     for (const Instance& instance : scene.instances)
@@ -160,7 +168,7 @@ Scene import_checked(const tinygltf::Model& model, std::string name, std::string
     if (!bounds_finite(scene.bounds)) fail("scene bounds are not finite");
 
     mark_srgb_images(scene.materials, scene.textures, scene.images);
-    set_camera(scene, walk.camera);
+    set_cameras(scene, std::move(walk));
     add_warnings(model, scene, meshes);
     return scene;
 }

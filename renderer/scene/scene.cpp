@@ -19,6 +19,10 @@ const char* to_string(AlphaMode mode) {
     return "unknown";
 }
 
+const char* to_string(SceneCamera::Type type) {
+    return type == SceneCamera::Type::Orthographic ? "orthographic" : "perspective";
+}
+
 glm::mat4 Camera::view() const {
     return glm::lookAt(position, position + forward, up);
 }

@@ -146,6 +146,22 @@ struct Camera {
     bool operator==(const Camera&) const = default;  // the same view, bit for bit
 };
 
+// A camera node of the glTF scene shown (every one the node walk meets, in its depth-first
+// authored order): what `depthscope cameras` lists and `--camera NAME|INDEX` picks.
+struct SceneCamera {
+    enum class Type : uint8_t { Perspective, Orthographic };
+    int gltf_node = -1;  // its index in the file's nodes (built-ins: in export-scene's file)
+    std::string name;    // the node's name, "" when it has none
+    Type type = Type::Perspective;
+    float yfov = 0.0f;  // radians (perspective; 0 for an orthographic camera)
+    float znear = 0.0f;
+    float zfar = 0.0f;  // 0: none given (a perspective camera's infinite far plane)
+    // Placed at its node, perspective only (zfar then finite, as Scene::camera's); none for an
+    // orthographic camera or a node whose transform leaves no view direction (zero scale).
+    std::optional<Camera> camera;
+};
+const char* to_string(SceneCamera::Type type);
+
 struct DirectionalLight {
     glm::vec3 direction{-0.3f, -1.0f, -0.4f};  // direction the light travels (unit)
     glm::vec3 color{1.0f};
@@ -165,7 +181,8 @@ struct Scene {
     std::vector<DrawGroup> draw_groups;
     std::vector<Decal> decals;          // sorted by instance; exactly the instances of decal groups
     Bounds bounds;                      // world space
-    std::optional<Camera> file_camera;  // the file's first camera, when it has one
+    std::vector<SceneCamera> cameras;   // every camera node, in walk order
+    std::optional<Camera> file_camera;  // the first perspective one placed, when there is one
     Camera camera;                      // file_camera, or framed from the bounds
     DirectionalLight sun;
     std::vector<std::string> warnings;  // import notes, one line each (skipped primitives ...)

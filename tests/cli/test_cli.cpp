@@ -14,13 +14,15 @@ using ds::test::run_depthscope;
 TEST(Cli, HelpDescribesEveryCommand) {
     auto r = run_depthscope("--help");
     EXPECT_EQ(r.exit_code, 0);
-    for (const char* cmd : {"info", "scenes", "settings", "capture", "export-scene", "bench"}) {
+    for (const char* cmd :
+         {"info", "scenes", "cameras", "settings", "capture", "export-scene", "bench"}) {
         EXPECT_NE(r.out.find(cmd), std::string::npos) << cmd;
     }
     EXPECT_NE(r.out.find("Exit codes"), std::string::npos);
     auto c = run_depthscope("capture --help");
     EXPECT_EQ(c.exit_code, 0);
-    for (const char* opt : {"--scene", "--size", "--out", "--set", "--validate", "--renderdoc"}) {
+    for (const char* opt : {"--scene", "--size", "--out", "--set", "--validate", "--renderdoc",
+                            "--camera", "--look-at"}) {
         EXPECT_NE(c.out.find(opt), std::string::npos) << opt;
     }
 }

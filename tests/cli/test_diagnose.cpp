@@ -258,7 +258,8 @@ TEST(Diagnose, BadInputIsOneLineAndWritesNothing) {
         {"--look-at 1,2,3", 2, "--look-at"},
         {"--look-at 1,2,3:1,2,3", 2, "--look-at"},
         {"--look-at 1,2,x:0,0,0", 2, "--look-at"},
-        {"--camera " + (dir / "no_capture").string(), 1, "report.json"},
+        {"--camera-of " + (dir / "no_capture").string(), 1, "report.json"},
+        {"--camera no_such_camera", 2, "no_such_camera"},
     };
     for (const Case& c : cases) {
         const auto r = run_depthscope("diagnose --size 32x18 " + c.args + json_arg);

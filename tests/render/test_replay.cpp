@@ -85,6 +85,51 @@ TEST(Replay, SetOverridesMakeAnABPairFromOneCamera) {
     EXPECT_EQ(report["replay"]["camera"], c.report["replay"]["camera"]);
 }
 
+// A view chosen on the command line replays exactly: report.json holds the camera node's or
+// the --look-at's camera, and replay renders the same bytes from it (issue 27 part 3).
+TEST(Replay, ACaptureFromACameraNodeOrALookAtReplaysBitIdentical) {
+    const std::string cameras = std::string(DS_TEST_DATA) + "/cameras.gltf";
+    const Capture side = capture("replay-camera", cameras, "96x54", "--camera Side");
+    ASSERT_FALSE(side.report.is_discarded());
+    EXPECT_EQ(side.report["replay"]["camera"]["position"], nlohmann::json({8.0, 1.0, 0.0}));
+    expect_identical_replay(side.dir);
+    const Capture look =
+        capture("replay-look-at", "atrium", "96x54", "--look-at 0,1.7,-9:0,4,12:70");
+    ASSERT_FALSE(look.report.is_discarded());
+    const nlohmann::json& c = look.report["replay"]["camera"];
+    EXPECT_EQ(c["position"], nlohmann::json({0.0, 1.7f, -9.0}));
+    EXPECT_NEAR(c["yfov"].get<double>(), 70.0 * 3.14159265358979 / 180.0, 1e-6);
+    expect_identical_replay(look.dir);
+}
+
+// replay --camera / --look-at replaces the captured camera: the frame is the one capture
+// renders from that view (the same bytes), and its report holds the new camera.
+TEST(Replay, CameraOrLookAtOverridesTheCapturedCamera) {
+    const std::string cameras = std::string(DS_TEST_DATA) + "/cameras.gltf";
+    const Capture base = capture("replay-override", cameras, "96x54");
+    const Capture side = capture("replay-override-side", cameras, "96x54", "--camera Side");
+    const fs::path out = fresh_dir("replay-override-out") / "r";
+    const ProcessResult r = replay(base.dir, "--camera Side --out " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("differs from " + base.dir.string() + " (--camera changed the view)"),
+              std::string::npos)
+        << r.out;
+    EXPECT_EQ(read_file(out / "final.png"), read_file(side.dir / "final.png"));
+    const auto report = nlohmann::json::parse(read_file(out / "report.json"));
+    EXPECT_EQ(report["replay"]["camera"], side.report["replay"]["camera"]);
+
+    const Capture look =
+        capture("replay-override-look", cameras, "96x54", "--look-at 2,3,7:0,0.5,-3");
+    const fs::path out2 = fresh_dir("replay-override-out2") / "r";
+    ASSERT_EQ(replay(base.dir, "--look-at 2,3,7:0,0.5,-3 --out " + out2.string()).exit_code, 0);
+    EXPECT_EQ(read_file(out2 / "final.png"), read_file(look.dir / "final.png"));
+    // A bad choice is refused before anything is written.
+    const fs::path out3 = fresh_dir("replay-override-out3") / "r";
+    const ProcessResult bad = replay(base.dir, "--camera Top --out " + out3.string());
+    expect_one_error_line(bad, 2, "is orthographic: not supported");
+    EXPECT_FALSE(fs::exists(out3));
+}
+
 // Seed 004's acceptance from one capture: replay it without the prepass and diff the pair.
 TEST(Replay, ThenDiffShowsWhatChanged) {
     const Capture c = capture("replay-diff", "atrium", "160x90",

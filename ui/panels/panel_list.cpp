@@ -8,6 +8,7 @@ const std::vector<PanelEntry>& panel_list() {
     static const std::vector<PanelEntry> panels = {
         {"Settings", Region::Left, settings_panel},
         {"Scene", Region::Left, scene_panel},
+        {"Camera", Region::Left, camera_panel},
         {"Shaders", Region::Left, shaders_panel},
         {"Passes", Region::Right, passes_panel},
         {"Resources", Region::Right, resources_panel},

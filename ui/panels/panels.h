@@ -34,6 +34,7 @@ void resources_panel(PanelIo& io);
 void viewer_panel(PanelIo& io);
 void settings_panel(PanelIo& io);
 void scene_panel(PanelIo& io);
+void camera_panel(PanelIo& io);
 void shaders_panel(PanelIo& io);
 void depth_panel(PanelIo& io);
 void advisor_panel(PanelIo& io);
@@ -95,6 +96,9 @@ ImVec2 scrolling_table_size(int rows = 8);
 void draw_samples(const PanelIo& io, ImVec2 scale, std::optional<std::array<uint32_t, 2>> hover);
 void sample_table(const PixelSampleList& list);
 void sample_tooltip(const PanelIo& io, uint32_t x, uint32_t y);
+// This scene's camera bookmarks: a name field and "add", each bookmark with "go" and
+// "delete" (the Camera panel and the viewer's "bookmarks" popup).
+void bookmark_list(PanelIo& io);
 // The last capture's folder (or its error) and, with the compare view on, what it shows: the
 // viewer's status line and the Compare panel's.
 void capture_status(const Inspector& inspector);

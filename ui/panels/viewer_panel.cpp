@@ -148,14 +148,44 @@ bool tool_button(const char* label, const char* tip) {
     return clicked;
 }
 
-// The decode controls above the image, a row each: the resource, its range and channel, the
-// zoom and mouse mode.
+// The camera's views, on the first row after the resource: frame (F), fit inside, the scene's
+// camera and this scene's bookmarks (a popup; the Camera panel has them, and the scene's
+// camera nodes, too).
+void camera_controls(PanelIo& io) {
+    ImGui::SameLine();
+    ImGui::TextUnformatted("  camera:");
+    if (tool_button("frame",
+                    "The camera frames the scene's content (F): what a ground plane, "
+                    "backdrop or sky dome many times larger than the rest leaves."))
+        io.camera.frame = true;
+    if (tool_button("fit inside",
+                    "For interiors: the camera at an open spot inside the scene's bounds, "
+                    "looking along their longest horizontal axis."))
+        io.actions.push_back(FitInside{});
+    if (tool_button("scene camera",
+                    "Back to the scene's own camera (the file's first camera, "
+                    "or the view depthscope framed when it has none; the command line's "
+                    "--camera or --look-at when it chose one)."))
+        io.actions.push_back(SceneCamera{});
+    if (tool_button("bookmarks",
+                    "Named views of this scene: add the current one, go to one, delete one "
+                    "(kept between sessions; the Camera panel has them too)."))
+        ImGui::OpenPopup("bookmarks");
+    if (ImGui::BeginPopup("bookmarks")) {
+        bookmark_list(io);
+        ImGui::EndPopup();
+    }
+}
+
+// The decode controls above the image, a row each: the resource (and the camera's views), its
+// range and channel, the zoom and mouse mode.
 void controls(PanelIo& io) {
     ViewerState& v = io.viewer;
     const InspectedImage* image = io.inspector.shown();
     const DecodedView& view = io.inspector.view();
     resource_picker(io, image);
     image_options(v, image);
+    camera_controls(io);
     range_controls(v, view);
     channel_controls(v, image);
     zoom_controls(v, view);
@@ -167,14 +197,6 @@ void controls(PanelIo& io) {
                     "What is wrong with this view: every detector that applies, "
                     "ranked findings in the Diagnose panel."))
         io.actions.push_back(Diagnose{});
-    if (tool_button("frame",
-                    "The camera frames the scene's content (F): what a ground plane, "
-                    "backdrop or sky dome many times larger than the rest leaves."))
-        io.camera.frame = true;
-    if (tool_button("scene camera",
-                    "Back to the scene's own camera (the file's first camera, "
-                    "or the view depthscope framed when it has none)."))
-        io.actions.push_back(SceneCamera{});
 }
 
 // A Scalar image's legend: its title over a colour bar (decode's colours from black to
