@@ -86,6 +86,9 @@ void add_render_options(CLI::App& cmd, Options& o, bool with_scene) {
                  "enable VK_LAYER_KHRONOS_validation; any validation message makes the exit "
                  "code 3");
     cmd.add_option("--device", o.device, "Vulkan device: index or name substring (see `info`)");
+    cmd.add_flag("--strict", o.strict,
+                 "refuse a scene file whose texture is missing, does not decode or is in an "
+                 "unsupported format (one error) instead of dropping that texture with a warning");
     if (with_scene) {
         cmd.add_option("--scene", o.scene, "built-in scene name (see `scenes`) or .gltf/.glb path");
     }
@@ -370,8 +373,8 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
 // command they would be lost or merged by surprise, so they must follow it.
 void reject_options_before_command(const CLI::App& app) {
     if (app.get_subcommands().size() != 1) return;
-    for (const char* name : {"--validate", "--device", "--scene", "--set", "--frames", "--size",
-                             "--capture", "--force", "--camera", "--look-at"})
+    for (const char* name : {"--validate", "--strict", "--device", "--scene", "--set", "--frames",
+                             "--size", "--capture", "--force", "--camera", "--look-at"})
         if (app.count(name))
             throw UsageError(std::string(name) + " before the command '" +
                              app.get_subcommands().front()->get_name() +

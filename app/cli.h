@@ -39,6 +39,7 @@ struct LookAt {
 struct Options {
     Command command = Command::Default;
     bool validate = false;  // VK_LAYER_KHRONOS_validation; any message -> exit code 3
+    bool strict = false;    // a missing or undecodable texture is an error, not a warning
     std::string device;     // "N" or a name substring; "" = first suitable
     std::string scene = "atrium";
     bool scene_given = false;  // --scene on the command line (over the inspector's saved one)

@@ -335,7 +335,7 @@ int run_bench(const Options& o) {
     // not after the whole benchmark.
     if (!o.out.empty()) capture::check_output_file("--json", o.out);
     if (!o.trace.empty()) capture::check_output_file("--trace", o.trace);
-    scene::Scene scene = scene::load_scene(o.scene, base);
+    scene::Scene scene = scene::load_scene(o.scene, base, {o.strict});
     scene.camera = view_camera(o, scene);  // --camera, --look-at
     RendererOptions renderer_options;
     renderer_options.validate = o.validate;

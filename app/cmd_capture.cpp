@@ -193,7 +193,7 @@ int run_capture(const Options& o) {
     job.resources = capture::parse_resource_selection(o.resources);
     job.out = o.out;
     // Input first: a bad file fails before any Vulkan work, and before output exists.
-    job.scene = scene::load_scene(o.scene, job.settings);
+    job.scene = scene::load_scene(o.scene, job.settings, {o.strict});
     for (const auto& w : job.scene.warnings) {
         std::fprintf(stderr, "depthscope: warning: %s: %s\n", job.scene.source.c_str(), w.c_str());
     }

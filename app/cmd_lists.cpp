@@ -43,7 +43,7 @@ std::string plane_text(float value, bool infinite) {
 int run_cameras(const Options& o) {
     Settings settings;
     for (const auto& assignment : o.sets) settings.apply(assignment);
-    const scene::Scene scene = scene::load_scene(o.scene, settings);
+    const scene::Scene scene = scene::load_scene(o.scene, settings, {o.strict});
     for (const auto& w : scene.warnings)
         std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
     if (scene.cameras.empty()) {

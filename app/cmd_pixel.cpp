@@ -34,7 +34,7 @@ int run_pixel(const Options& o) {
     Settings settings;
     for (const auto& assignment : o.sets) settings.apply(assignment);
     check_input(o);
-    scene::Scene scene = scene::load_scene(o.scene, settings);
+    scene::Scene scene = scene::load_scene(o.scene, settings, {o.strict});
     for (const auto& w : scene.warnings)
         std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
     scene.camera = view_camera(o, scene);

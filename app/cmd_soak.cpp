@@ -46,8 +46,9 @@ void check_soak_usage(const Options& o) {
 std::vector<scene::Scene> soak_scenes(const Options& o, const Settings& base) {
     std::vector<scene::Scene> scenes;
     for (const auto& info : scene::builtin::list())
-        scenes.push_back(scene::load_scene(info.name, base));
-    if (!scene::builtin::exists(o.scene)) scenes.push_back(scene::load_scene(o.scene, base));
+        scenes.push_back(scene::load_scene(info.name, base, {o.strict}));
+    if (!scene::builtin::exists(o.scene))
+        scenes.push_back(scene::load_scene(o.scene, base, {o.strict}));
     return scenes;
 }
 

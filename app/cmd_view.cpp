@@ -107,11 +107,11 @@ ui::SavedState load_saved_state(const std::filesystem::path& state_file) {
 // A saved scene that no longer loads falls back to the default; a --scene does not.
 scene::Scene load_start_scene(const Options& o, const Start& start) {
     try {
-        return scene::load_scene(start.scene, start.settings);
+        return scene::load_scene(start.scene, start.settings, {o.strict});
     } catch (const std::exception& e) {
         if (o.scene_given) throw;
         std::fprintf(stderr, "depthscope: warning: saved scene: %s\n", e.what());
-        return scene::load_scene(o.scene, start.settings);
+        return scene::load_scene(o.scene, start.settings, {o.strict});
     }
 }
 

@@ -65,7 +65,7 @@ vec4 load_gbuffer() {
 
 void main() {
     count_fragment();
-    vec4 base = texture(base_color_texture, in_uv0) * material.base_color_factor;
+    vec4 base = texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)) * material.base_color_factor;
     float coverage = 1.0;  // output alpha: the sample mask with alpha-to-coverage
 #if ALPHA_MASK && ALPHA_TO_COVERAGE
     coverage = coverage_alpha(base.a, alpha_cutoff());

@@ -22,7 +22,7 @@ layout(location = 0) in vec2 in_uv0;
 void main() {
     count_fragment();
 #if ALPHA_MASK
-    float alpha = texture(base_color_texture, in_uv0).a * material.base_color_factor.a;
+    float alpha = texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)).a * material.base_color_factor.a;
     if (alpha < alpha_cutoff()) {
         count_discarded_fragment();
         discard;

@@ -30,7 +30,7 @@ layout(location = 0) out vec4 out_color;
 
 void main() {
     count_fragment();
-    vec4 base = texture(base_color_texture, in_uv0) * material.base_color_factor;
+    vec4 base = texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)) * material.base_color_factor;
 #if ALPHA_MODE == 1
     if (base.a < alpha_cutoff()) {
         count_discarded_fragment();

@@ -75,6 +75,15 @@ GpuMaterial gpu_material(const scene::Material& m, bool has_normal_map) {
     g.alpha_cutoff = m.alpha_cutoff;
     g.flags = (has_normal_map ? kMaterialHasNormalMap : 0u) |
               (m.alpha_mode == scene::AlphaMode::Mask ? kMaterialAlphaMask : 0u);
+    // The binding order of the material set: base colour, metallic-roughness, normal,
+    // occlusion, emissive (shaders/common/bindings.glsl, kTexture*).
+    const scene::TextureRef* refs[] = {&m.base_color, &m.metallic_roughness, &m.normal,
+                                       &m.occlusion, &m.emissive};
+    for (size_t i = 0; i < 5; ++i) {
+        const std::array<glm::vec3, 2> rows = refs[i]->uv_rows();
+        g.uv_rows[2 * i] = glm::vec4(rows[0], 0.0f);
+        g.uv_rows[2 * i + 1] = glm::vec4(rows[1], 0.0f);
+    }
     return g;
 }
 

@@ -40,8 +40,13 @@ struct GpuMaterial {
     uint32_t flags = 0;
     float alpha_cutoff_override = -1.0f;  // material_alpha_cutoff, < 0: none
     float pad = 0.0f;
+    // Per texture (kTexture* order), KHR_texture_transform as two rows (a, b, tx, 0) and
+    // (c, d, ty, 0): u' = a u + b v + tx, v' = c u + d v + ty. Identity without the extension.
+    glm::vec4 uv_rows[10] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}, {1, 0, 0, 0},
+                             {0, 1, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}};
 };
-static_assert(sizeof(GpuMaterial) == 64);
+static_assert(sizeof(GpuMaterial) == 224);
+static_assert(offsetof(GpuMaterial, uv_rows) == 64);
 static_assert(offsetof(GpuMaterial, alpha_cutoff_override) == 56);
 inline constexpr uint32_t kMaterialHasNormalMap = 1u;
 inline constexpr uint32_t kMaterialAlphaMask = 2u;  // alphaMode MASK (one-pipeline prepass)

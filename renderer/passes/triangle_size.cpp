@@ -200,7 +200,8 @@ void TriangleSizePass::record(graph::PassContext& ctx, const Bound& bound, const
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     vk::DescriptorWriter writer;
     writer
-        .image(kSizeSurfaceIds, ctx.view(bound.surfaces), nearest_.handle(), ctx.layout(bound.surfaces))
+        .image(kSizeSurfaceIds, ctx.view(bound.surfaces), nearest_.handle(),
+               ctx.layout(bound.surfaces))
         .storage_image(kSizeImage, ctx.view(bound.sizes), ctx.layout(bound.sizes))
         .buffer(kSizeVertices, storage, scene.vertex_buffer())
         .buffer(kSizeIndices, storage, scene.index_buffer())

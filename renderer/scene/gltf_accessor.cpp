@@ -8,7 +8,6 @@
 #include "renderer/scene/import_util.h"
 
 namespace ds::scene::detail {
-namespace {
 
 using limits::kMaxAccessorElements;
 using limits::kMaxZeroAccessorElements;
@@ -28,6 +27,8 @@ size_t component_size(int component_type) {
             return 0;
     }
 }
+
+namespace {
 
 std::string component_name(int component_type) {
     switch (component_type) {
@@ -80,6 +81,42 @@ size_t element_size(int component_type, int type) {
     if (type == TINYGLTF_TYPE_MAT3 && size == 1) return 12;
     if (type == TINYGLTF_TYPE_MAT3 && size == 2) return 24;
     return size * static_cast<size_t>(component_count(type));
+}
+
+bool is_8_or_16_bit(int type) {
+    return type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+           type == TINYGLTF_COMPONENT_TYPE_SHORT || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+}
+
+bool allowed(Components allowed, int type, bool normalized) {
+    if (type == TINYGLTF_COMPONENT_TYPE_FLOAT) return true;
+    const bool is_unsigned = type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                             type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    switch (allowed) {
+        case Components::Float:
+            return false;
+        case Components::FloatOrUnorm:
+            return normalized && is_unsigned;
+        case Components::AnyInteger:
+            return is_8_or_16_bit(type);
+        case Components::Snorm:
+            return normalized && is_8_or_16_bit(type) && !is_unsigned;
+    }
+    return false;
+}
+
+std::string allowed_text(Components allowed) {
+    switch (allowed) {
+        case Components::Float:
+            return "float";
+        case Components::FloatOrUnorm:
+            return "float or normalized unsigned byte/short";
+        case Components::AnyInteger:
+            return "float or (unsigned) byte/short, KHR_mesh_quantization";
+        case Components::Snorm:
+            return "float or normalized byte/short, KHR_mesh_quantization";
+    }
+    return "float";
 }
 
 // offset + length <= size, without overflow.
@@ -283,12 +320,10 @@ std::vector<float> read_floats(const tinygltf::Model& model, int index, const Fl
              (spec.components == 1 ? std::string("SCALAR")
                                    : "VEC" + std::to_string(spec.components)));
     const int type = accessor.componentType;
-    const bool int_ok = spec.allow_normalized_ints && accessor.normalized &&
-                        (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                         type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
-    if (type != TINYGLTF_COMPONENT_TYPE_FLOAT && !int_ok)
-        fail(name + ": component type " + component_name(type) + " is not allowed (need float" +
-             (spec.allow_normalized_ints ? " or normalized unsigned byte/short)" : ")"));
+    if (!allowed(spec.allowed, type, accessor.normalized))
+        fail(name + ": component type " + component_name(type) +
+             (accessor.normalized ? " normalized" : "") + " is not allowed (need " +
+             allowed_text(spec.allowed) + ")");
 
     const size_t n = static_cast<size_t>(span.components);
     std::vector<float> out(accessor.count * n, 0.0f);

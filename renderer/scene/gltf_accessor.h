@@ -11,13 +11,25 @@
 
 namespace ds::scene::detail {
 
+// Bytes of one component (BYTE ... FLOAT); 0 for anything else.
+size_t component_size(int component_type);
+
 // Checks every buffer view and every accessor of the model, used or not.
 void validate_buffer_views(const tinygltf::Model& model);
 void validate_accessors(const tinygltf::Model& model);
 
+// The component types an attribute may have, as (type, normalized) pairs.
+enum class Components {
+    Float,         // POSITION, NORMAL, TANGENT in core glTF
+    FloatOrUnorm,  // TEXCOORD_n in core glTF: float, unsigned byte/short normalized
+    // KHR_mesh_quantization (the file lists it in extensionsUsed):
+    AnyInteger,  // POSITION, TEXCOORD_n: float, (unsigned) byte/short, normalized or not
+    Snorm,       // NORMAL, TANGENT: float, byte/short normalized
+};
+
 struct FloatRead {
-    int components = 3;                  // accessor type must have exactly this many
-    bool allow_normalized_ints = false;  // unsigned byte/short normalized (TEXCOORD_n)
+    int components = 3;  // accessor type must have exactly this many
+    Components allowed = Components::Float;
 };
 
 // Accessor `index` as count × components floats (sparse substitutions applied); any NaN/Inf

@@ -1,7 +1,9 @@
 // load_gltf: a .gltf / .glb file -> Scene. Kept apart from loader.cpp so that tools linking only
 // the importer (the ASan check binary, the fuzzer) need no built-in scenes.
+#include "renderer/scene/gltf_decode.h"
 #include "renderer/scene/gltf_image.h"
 #include "renderer/scene/gltf_precheck.h"
+#include "renderer/scene/gltf_prepare.h"
 #include "renderer/scene/gltf_source.h"
 #include "renderer/scene/import_limits.h"
 #include "renderer/scene/import_util.h"
@@ -17,11 +19,17 @@ using detail::one_line;
 // tinygltf reports problems in `err` even when it returns true (e.g. a texture info without
 // its required index), and puts undecodable or missing images in `warn`: all are errors here.
 // The file and image checks' own messages come first: they name the JSON path.
-tinygltf::Model parse(const std::string& bytes, bool binary, const detail::FileSource& source) {
+// The model, and (lenient) the images that could not be used, by index.
+struct Parsed {
+    tinygltf::Model model;
+    std::map<size_t, std::string> image_problems;
+};
+
+tinygltf::Model parse(const std::string& bytes, bool binary, const detail::FileSource& source,
+                      detail::ImageBudget& images) {
     tinygltf::TinyGLTF loader;
     detail::FsBridge bridge{&source, {}};
     loader.SetFsCallbacks(bridge.callbacks());
-    detail::ImageBudget images;
     loader.SetImageLoader(&detail::load_image_checked, &images);
     tinygltf::Model model;
     std::string err;
@@ -49,52 +57,69 @@ tinygltf::Model parse(const std::string& bytes, bool binary, const detail::FileS
 }
 
 // Every file the document names is checked (exists, regular file, size bound) before tinygltf
-// reads any; the reads themselves go through the same source.
-tinygltf::Model parse_checked(const std::string& bytes, const detail::FileSource& source) {
+// reads any; the reads themselves go through the same source. Lenient, an image file that is
+// not there is read as a one-byte placeholder that the image loader records as its problem.
+Parsed parse_checked(const std::string& bytes, const detail::FileSource& source, bool strict) {
     if (bytes.empty()) fail("empty file");
     static_assert(limits::kMaxFileBytes <= 0xffffffffu);
     if (bytes.size() > limits::kMaxFileBytes) fail("file larger than the limit");
     const bool binary = bytes.starts_with("glTF");
+    detail::ImageBudget images;
+    images.lenient = !strict;
     for (const detail::FileRef& ref : detail::precheck_gltf(bytes, binary)) {
         const std::string what = ref.json_path + " " + detail::quote_value(ref.uri) + ": ";
         uint64_t size = 0;
         try {
             size = source.check(ref.decoded);
+            if (size == 0) fail("empty file");
         } catch (const InputError& e) {
-            fail(what + e.what());
+            if (strict || ref.is_buffer) fail(what + e.what());
+            images.missing[ref.decoded] = e.what();
+            continue;
         }
-        if (size == 0) fail(what + "empty file");
         if (ref.is_buffer && size != ref.byte_length)
             fail(what + "the file is " + std::to_string(size) + " bytes, the buffer's byteLength " +
                  std::to_string(ref.byte_length));
     }
-    return parse(bytes, binary, source);
+    // Compressed data: placeholders tinygltf reads as zeros, filled by decoding.
+    const detail::Prepared prepared = detail::prepare_compressed(bytes, binary);
+    std::map<std::string, uint64_t> served = prepared.placeholders;
+    for (const auto& [uri, why] : images.missing) served.emplace(uri, 1);
+    const detail::PlaceholderSource with_placeholders(source, served);
+    Parsed out;
+    out.model =
+        parse(prepared.bytes.empty() ? bytes : prepared.bytes, binary, with_placeholders, images);
+    detail::decode_meshopt(out.model, prepared.placeholders);
+    detail::decode_draco(out.model, prepared.placeholders);
+    out.image_problems = std::move(images.problems);
+    return out;
 }
 
 }  // namespace
 
-Scene load_gltf(const fs::path& path) {
+Scene load_gltf(const fs::path& path, const ImportOptions& options) {
     const std::string shown = detail::printable(path.string());
-    tinygltf::Model model;
+    Parsed parsed;
     try {
         const std::string bytes = detail::read_regular_file(path);
-        model = parse_checked(bytes, detail::DiskSource(path.parent_path()));
+        parsed = parse_checked(bytes, detail::DiskSource(path.parent_path()), options.strict);
     } catch (const InputError& e) {
         throw InputError(shown + ": " + one_line(e.what()));
     }
-    return import_model(model, detail::printable(path.stem().string()), shown);
+    return detail::import_parsed(parsed.model, detail::printable(path.stem().string()), shown,
+                                 options, parsed.image_problems);
 }
 
 Scene load_gltf_memory(const std::string& bytes, const std::map<std::string, std::string>& files,
-                       const std::string& name) {
-    tinygltf::Model model;
+                       const std::string& name, const ImportOptions& options) {
+    Parsed parsed;
     try {
-        model = parse_checked(bytes, detail::MemorySource(files));
+        parsed = parse_checked(bytes, detail::MemorySource(files), options.strict);
     } catch (const InputError& e) {
         throw InputError(detail::printable(name) + ": " + one_line(e.what()));
     }
-    return import_model(model, detail::printable(fs::path(name).stem().string()),
-                        detail::printable(name));
+    return detail::import_parsed(parsed.model, detail::printable(fs::path(name).stem().string()),
+                                 detail::printable(name), options, parsed.image_problems);
 }
 
 }  // namespace ds::scene

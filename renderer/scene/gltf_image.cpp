@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/scene/gltf_source.h"
 #include "renderer/scene/image_checks.h"
 #include "renderer/scene/import_limits.h"
 #include "renderer/scene/import_util.h"
@@ -94,13 +95,19 @@ bool load_image_checked(tinygltf::Image* image, int index, std::string* err, std
                         int req_width, int req_height, const unsigned char* bytes, int size,
                         void* user) {
     auto& budget = *static_cast<ImageBudget*>(user);
+    std::string what = "images[" + std::to_string(index) + "]";
+    if (!image->uri.empty()) what += " (" + quote_value(image->uri) + ")";
     try {
+        const auto missing = budget.missing.find(decode_uri(image->uri));
+        if (!image->uri.empty() && missing != budget.missing.end()) fail(missing->second);
         decode(*image, req_width, req_height, bytes, size, budget);
         return true;
     } catch (const InputError& e) {
-        std::string what = "images[" + std::to_string(index) + "]";
-        if (!image->uri.empty()) what += " (" + quote_value(image->uri) + ")";
         what += ": " + std::string(e.what());
+        if (budget.lenient) {
+            budget.problems[size_t(index)] = what;
+            return true;  // no pixels: the importer drops its textures
+        }
         if (budget.error.empty()) budget.error = what;
         if (err) *err += what;
         return false;

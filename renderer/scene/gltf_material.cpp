@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 
 #include "renderer/scene/import_util.h"
 
@@ -139,12 +140,54 @@ glm::vec<N, float> factor_vector(const std::vector<double>& values, float fallba
     return out;
 }
 
-TextureRef texture_ref(int index, int tex_coord, size_t texture_count, const std::string& what) {
-    if (index < 0) return {};
-    if (static_cast<size_t>(index) >= texture_count)
-        fail(what + ": texture " + std::to_string(index) + " out of range");
-    if (tex_coord < 0) fail(what + ": invalid texCoord " + std::to_string(tex_coord));
-    return {index, static_cast<uint32_t>(tex_coord)};
+// KHR_texture_transform's numbers: `count` finite numbers (1: a number, else an array).
+std::vector<float> transform_numbers(const tinygltf::Value& t, const char* key, size_t count,
+                                     const std::string& what) {
+    const std::string name = what + ".KHR_texture_transform." + key;
+    const tinygltf::Value& v = t.Get(key);
+    std::vector<float> out;
+    if (count == 1 && v.IsNumber()) out.push_back(to_float(v.GetNumberAsDouble(), name));
+    if (count > 1 && v.IsArray() && v.ArrayLen() == count)
+        for (size_t i = 0; i < count; ++i)
+            if (v.Get(int(i)).IsNumber())
+                out.push_back(to_float(v.Get(int(i)).GetNumberAsDouble(), name));
+    if (out.size() != count)
+        fail(name + " must be " + (count == 1 ? "a number" : std::to_string(count) + " numbers"));
+    return out;
+}
+
+void apply_transform(TextureRef& ref, const tinygltf::ExtensionMap& extensions,
+                     const std::string& what) {
+    const auto found = extensions.find("KHR_texture_transform");
+    if (found == extensions.end()) return;
+    const tinygltf::Value& t = found->second;
+    if (!t.IsObject()) fail(what + ".KHR_texture_transform must be an object");
+    if (t.Has("offset")) {
+        const std::vector<float> o = transform_numbers(t, "offset", 2, what);
+        ref.offset = {o[0], o[1]};
+    }
+    if (t.Has("rotation")) ref.rotation = transform_numbers(t, "rotation", 1, what)[0];
+    if (t.Has("scale")) {
+        const std::vector<float> sc = transform_numbers(t, "scale", 2, what);
+        ref.scale = {sc[0], sc[1]};
+    }
+    if (t.Has("texCoord")) {  // overrides the textureInfo's
+        const tinygltf::Value& v = t.Get("texCoord");
+        if (!v.IsInt() || v.GetNumberAsInt() < 0)
+            fail(what + ".KHR_texture_transform.texCoord must be a non-negative integer");
+        ref.uv_set = uint32_t(v.GetNumberAsInt());
+    }
+}
+
+template <typename Info>
+TextureRef texture_ref(const Info& info, size_t texture_count, const std::string& what) {
+    if (info.index < 0) return {};
+    if (static_cast<size_t>(info.index) >= texture_count)
+        fail(what + ": texture " + std::to_string(info.index) + " out of range");
+    if (info.texCoord < 0) fail(what + ": invalid texCoord " + std::to_string(info.texCoord));
+    TextureRef ref{info.index, static_cast<uint32_t>(info.texCoord)};
+    apply_transform(ref, info.extensions, what);
+    return ref;
 }
 
 AlphaMode alpha_mode(const std::string& mode, const std::string& what) {
@@ -170,17 +213,12 @@ Material import_material(const tinygltf::Material& source, size_t index, size_t 
     m.occlusion_strength = std::clamp(
         finite_factor(source.occlusionTexture.strength, what + " occlusionTexture.strength"), 0.0f,
         1.0f);
-    m.base_color = texture_ref(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                               texture_count, what + " baseColorTexture");
-    m.metallic_roughness =
-        texture_ref(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                    texture_count, what + " metallicRoughnessTexture");
-    m.normal = texture_ref(source.normalTexture.index, source.normalTexture.texCoord, texture_count,
-                           what + " normalTexture");
-    m.occlusion = texture_ref(source.occlusionTexture.index, source.occlusionTexture.texCoord,
-                              texture_count, what + " occlusionTexture");
-    m.emissive = texture_ref(source.emissiveTexture.index, source.emissiveTexture.texCoord,
-                             texture_count, what + " emissiveTexture");
+    m.base_color = texture_ref(pbr.baseColorTexture, texture_count, what + " baseColorTexture");
+    m.metallic_roughness = texture_ref(pbr.metallicRoughnessTexture, texture_count,
+                                       what + " metallicRoughnessTexture");
+    m.normal = texture_ref(source.normalTexture, texture_count, what + " normalTexture");
+    m.occlusion = texture_ref(source.occlusionTexture, texture_count, what + " occlusionTexture");
+    m.emissive = texture_ref(source.emissiveTexture, texture_count, what + " emissiveTexture");
     m.alpha_mode = alpha_mode(source.alphaMode, what);
     m.alpha_cutoff = finite_factor(source.alphaCutoff, what + " alphaCutoff");
     if (m.alpha_cutoff < 0.0f) fail(what + ": negative alphaCutoff");
@@ -190,12 +228,22 @@ Material import_material(const tinygltf::Material& source, size_t index, size_t 
 
 }  // namespace
 
-std::vector<Image> import_images(const tinygltf::Model& model) {
+std::vector<Image> import_images(const tinygltf::Model& model,
+                                 const std::map<size_t, std::string>& problems) {
     std::vector<Image> images;
     images.reserve(model.images.size());
     for (size_t i = 0; i < model.images.size(); ++i)
-        images.push_back(import_image(model.images[i], i));
+        images.push_back(problems.contains(i) ? placeholder_image(image_label(model.images[i], i))
+                                              : import_image(model.images[i], i));
     return images;
+}
+
+Image placeholder_image(std::string name) {
+    Image image;
+    image.name = std::move(name);
+    image.width = image.height = 1;
+    image.rgba8 = {255, 255, 255, 255};
+    return image;
 }
 
 std::vector<Sampler> import_samplers(const tinygltf::Model& model) {
@@ -214,16 +262,28 @@ std::vector<Sampler> import_samplers(const tinygltf::Model& model) {
     return samplers;
 }
 
-std::vector<Texture> import_textures(const tinygltf::Model& model, uint32_t default_sampler) {
+std::vector<Texture> import_textures(const tinygltf::Model& model, uint32_t default_sampler,
+                                     const TextureInput& in, std::vector<Image>& images,
+                                     UnusableTextures& unusable) {
     std::vector<Texture> textures;
     for (size_t i = 0; i < model.textures.size(); ++i) {
         const tinygltf::Texture& source = model.textures[i];
         const std::string what = "texture " + std::to_string(i);
-        if (source.source < 0)
+        if (source.source < 0 && (in.strict || source.extensions.empty()))
             fail(what + " has no image source" +
                  (source.extensions.empty() ? std::string()
                                             : " (its image is only in extension " +
                                                   source.extensions.begin()->first + ")"));
+        if (source.source < 0) {  // KHR_texture_basisu, EXT_texture_webp ...: not decoded
+            unusable[i] = what + ": its image is only in extension " +
+                          source.extensions.begin()->first + ", which is not supported";
+            images.push_back(placeholder_image(what + " (no image)"));
+            textures.push_back({uint32_t(images.size() - 1), default_sampler});
+            continue;
+        }
+        if (const auto problem = in.image_problems.find(size_t(source.source));
+            problem != in.image_problems.end())
+            unusable[i] = problem->second;
         if (static_cast<size_t>(source.source) >= model.images.size())
             fail(what + ": image " + std::to_string(source.source) + " out of range");
         if (source.sampler >= 0 && static_cast<size_t>(source.sampler) >= model.samplers.size())

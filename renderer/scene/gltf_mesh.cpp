@@ -1,5 +1,7 @@
 #include "renderer/scene/gltf_mesh.h"
 
+#include <algorithm>
+
 #include "renderer/scene/gltf_accessor.h"
 #include "renderer/scene/import_util.h"
 #include "renderer/scene/mesh_ops.h"
@@ -59,7 +61,13 @@ Attributes read_attributes(const tinygltf::Model& model, const tinygltf::Primiti
     const int position = find_attribute(primitive, "POSITION");
     if (position < 0) fail(what + ": no POSITION attribute");
     Attributes a;
-    a.positions = read_floats(model, position, {3, false}, what + " POSITION");
+    // KHR_mesh_quantization widens the component types each attribute may have.
+    const bool quantized = std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                                     "KHR_mesh_quantization") != model.extensionsUsed.end();
+    const Components any = quantized ? Components::AnyInteger : Components::Float;
+    const Components direction = quantized ? Components::Snorm : Components::Float;
+    const Components uv = quantized ? Components::AnyInteger : Components::FloatOrUnorm;
+    a.positions = read_floats(model, position, {3, any}, what + " POSITION");
     a.count = a.positions.size() / 3;
     auto optional = [&](const char* name, FloatRead spec, std::vector<float>& out) {
         const int index = find_attribute(primitive, name);
@@ -70,9 +78,9 @@ Attributes read_attributes(const tinygltf::Model& model, const tinygltf::Primiti
             fail(what + " " + name + " has " + std::to_string(count) +
                  " elements but POSITION has " + std::to_string(a.count));
     };
-    optional("NORMAL", {3, false}, a.normals);
-    optional("TEXCOORD_0", {2, true}, a.uvs);
-    optional("TANGENT", {4, false}, a.tangents);
+    optional("NORMAL", {3, direction}, a.normals);
+    optional("TEXCOORD_0", {2, uv}, a.uvs);
+    optional("TANGENT", {4, direction}, a.tangents);
     return a;
 }
 

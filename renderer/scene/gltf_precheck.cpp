@@ -28,18 +28,6 @@ uint32_t read_u32(std::string_view bytes, size_t offset) {
     return uint32_t{p[0]} | uint32_t{p[1]} << 8 | uint32_t{p[2]} << 16 | uint32_t{p[3]} << 24;
 }
 
-std::string_view glb_json(std::string_view bytes) {
-    if (bytes.size() < 12) fail("truncated GLB header");
-    const uint32_t version = read_u32(bytes, 4);
-    if (version == 1) fail(version_message("1.0"));  // binary glTF 1.0 (KHR_binary_glTF)
-    if (version != 2) fail("unsupported GLB container version " + std::to_string(version));
-    if (bytes.size() < 20) fail("truncated GLB: no JSON chunk");
-    const uint32_t length = read_u32(bytes, 12);
-    if (read_u32(bytes, 16) != kGlbChunkJson) fail("GLB: the first chunk is not JSON");
-    if (length > bytes.size() - 20) fail("GLB: JSON chunk runs past the end of the file");
-    return bytes.substr(kGlbJsonOffset, length);
-}
-
 json parse_json(std::string_view text, size_t base) {
     // GLB pads the JSON chunk with spaces; some writers pad with NULs.
     while (!text.empty() && (text.back() == '\0' || text.back() == ' ')) text.remove_suffix(1);
@@ -82,12 +70,24 @@ void check_required_extensions(const json& doc) {
     for (const json& name : *required) {
         if (!name.is_string()) fail("extensionsRequired must hold strings");
         const auto text = name.get<std::string>();
-        if (!is_ignorable_extension(text))
-            fail("required extension " + one_line(text) + " is not supported");
+        if (!is_supported_required_extension(text)) fail(unsupported_extension_message(text));
     }
 }
 
-enum class Kind { String, Uint, Number, Bool, Object, Array, UintArray, NumberArray, ObjectArray };
+enum class Kind {
+    String,
+    Uint,
+    Number,
+    Bool,
+    Object,
+    Array,
+    UintArray,
+    NumberArray,
+    ObjectArray,
+    // An accessor's min and max: numbers, or null where a writer had none (gltf-pipeline's
+    // Draco output without position quantization). The importer reads the data, never these.
+    BoundsArray,
+};
 
 // The JSON kind of a core property, from its key and the key its object sits under (array
 // elements inherit the array's key). Unknown keys are not checked.
@@ -96,6 +96,7 @@ std::optional<Kind> expected_kind(std::string_view parent, std::string_view key)
     if (parent == "sparse" && (key == "indices" || key == "values")) return Kind::Object;
     if (parent == "channels" && key == "target") return Kind::Object;
     if (parent == "nodes" && key == "scale") return Kind::NumberArray;
+    if (parent == "accessors" && (key == "min" || key == "max")) return Kind::BoundsArray;
     if (key == "nodes") return parent.empty() ? Kind::ObjectArray : Kind::UintArray;
     static const std::unordered_map<std::string_view, Kind> kRules = [] {
         std::unordered_map<std::string_view, Kind> rules;
@@ -167,6 +168,9 @@ bool matches(const json& v, Kind kind) {
             return v.is_array() && all_of(v, [](const json& e) { return e.is_number(); });
         case Kind::ObjectArray:
             return v.is_array() && all_of(v, [](const json& e) { return e.is_object(); });
+        case Kind::BoundsArray:
+            return v.is_array() &&
+                   all_of(v, [](const json& e) { return e.is_number() || e.is_null(); });
     }
     return false;
 }
@@ -188,6 +192,7 @@ const char* kind_text(Kind kind) {
         case Kind::UintArray:
             return "an array of non-negative integers";
         case Kind::NumberArray:
+        case Kind::BoundsArray:
             return "an array of numbers";
         case Kind::ObjectArray:
             return "an array of objects";
@@ -232,8 +237,20 @@ void check_value(const json& value, std::string_view key, const std::string& pat
 
 }  // namespace
 
+std::string_view glb_json_chunk(std::string_view bytes) {
+    if (bytes.size() < 12) fail("truncated GLB header");
+    const uint32_t version = read_u32(bytes, 4);
+    if (version == 1) fail(version_message("1.0"));  // binary glTF 1.0 (KHR_binary_glTF)
+    if (version != 2) fail("unsupported GLB container version " + std::to_string(version));
+    if (bytes.size() < 20) fail("truncated GLB: no JSON chunk");
+    const uint32_t length = read_u32(bytes, 12);
+    if (read_u32(bytes, 16) != kGlbChunkJson) fail("GLB: the first chunk is not JSON");
+    if (length > bytes.size() - 20) fail("GLB: JSON chunk runs past the end of the file");
+    return bytes.substr(kGlbJsonOffset, length);
+}
+
 std::vector<FileRef> precheck_gltf(std::string_view bytes, bool binary) {
-    const std::string_view text = binary ? glb_json(bytes) : bytes;
+    const std::string_view text = binary ? glb_json_chunk(bytes) : bytes;
     scan_json_limits(text, binary ? kGlbJsonOffset : 0);
     const json doc = parse_json(text, binary ? kGlbJsonOffset : 0);
     if (!doc.is_object()) fail("not a glTF file: the JSON top level is not an object");

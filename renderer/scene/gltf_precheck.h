@@ -27,4 +27,7 @@ struct FileRef {
 // Returns the files the document references, for the caller to check before tinygltf reads.
 std::vector<FileRef> precheck_gltf(std::string_view bytes, bool binary);
 
+// A GLB container's JSON chunk (header and first chunk checked).
+std::string_view glb_json_chunk(std::string_view bytes);
+
 }  // namespace ds::scene::detail

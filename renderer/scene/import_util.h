@@ -58,11 +58,35 @@ inline std::string quote_value(std::string_view text) {
     return "\"" + line + "\"";
 }
 
-// Extensions that may appear in `extensionsRequired` although we ignore them: they only add
-// shading detail (the base PBR material stays a faithful approximation).
-inline bool is_ignorable_extension(std::string_view name) {
+// The compression extensions decoded (gltf_prepare.h, gltf_decode.h).
+inline constexpr const char* kMeshoptExtension = "EXT_meshopt_compression";
+inline constexpr const char* kDracoExtension = "KHR_draco_mesh_compression";
+
+// Extensions the importer implements (no "is ignored" warning).
+inline bool is_decoded_extension(std::string_view name) {
+    return name == "KHR_mesh_quantization" || name == kMeshoptExtension ||
+           name == kDracoExtension || name == "KHR_texture_transform";
+}
+
+// Extensions that may appear in `extensionsRequired`: the ones decoded (mesh quantization,
+// meshopt and Draco compression, texture transforms) and the ones ignored because they only
+// add shading detail (the base PBR material stays a faithful approximation) or name texture
+// formats whose textures are dropped with a warning (gltf_material.cpp).
+inline bool is_supported_required_extension(std::string_view name) {
     return name.starts_with("KHR_materials_") || name == "KHR_texture_transform" ||
-           name == "KHR_lights_punctual";
+           name == "KHR_lights_punctual" || name == "KHR_mesh_quantization" ||
+           name == "EXT_meshopt_compression" || name == "KHR_draco_mesh_compression" ||
+           name == "KHR_texture_basisu" || name == "EXT_texture_webp";
+}
+
+// Why a required extension is refused, named where a reason is known.
+inline std::string unsupported_extension_message(std::string_view name) {
+    std::string message = "required extension " + one_line(name) + " is not supported";
+    if (name == "KHR_meshopt_compression")
+        message +=
+            " (Debian's meshoptimizer 0.18 decodes EXT_meshopt_compression only; "
+            "gltfpack -c writes that, -cz this)";
+    return message;
 }
 
 // glTF 2.x only; an absent version means a glTF 1.0 file (2.0 made `asset.version` required).

@@ -6,6 +6,7 @@
 
 #include "renderer/scene/decals.h"
 #include "renderer/scene/gltf_accessor.h"
+#include "renderer/scene/gltf_dropped.h"
 #include "renderer/scene/gltf_material.h"
 #include "renderer/scene/gltf_mesh.h"
 #include "renderer/scene/gltf_nodes.h"
@@ -20,8 +21,8 @@ using namespace detail;
 void check_header(const tinygltf::Model& model) {
     if (!is_supported_version(model.asset.version)) fail(version_message(model.asset.version));
     for (const std::string& extension : model.extensionsRequired)
-        if (!is_ignorable_extension(extension))
-            fail("required extension " + one_line(extension) + " is not supported");
+        if (!is_supported_required_extension(extension))
+            fail(unsupported_extension_message(extension));
 }
 
 // Every (placement, primitive) as an instance, in traversal order.
@@ -102,10 +103,11 @@ void set_cameras(Scene& scene, SceneWalk walk) {
 }
 
 void add_warnings(const tinygltf::Model& model, Scene& scene, const MeshImport& meshes) {
-    // No extension is implemented: the file still draws (required ones were refused earlier),
-    // but the user should know what is missing from the picture.
+    // What is not implemented: the file still draws (required ones were refused earlier), but
+    // the user should know what is missing from the picture.
     for (const std::string& extension : model.extensionsUsed)
-        scene.warnings.push_back("extension " + one_line(extension) + " is ignored");
+        if (!is_decoded_extension(extension))
+            scene.warnings.push_back("extension " + one_line(extension) + " is ignored");
     for (const auto& [mode, count] : meshes.skipped_modes)
         scene.warnings.push_back("skipped " + std::to_string(count) + " " + mode +
                                  " primitive(s): only TRIANGLES are drawn");
@@ -138,7 +140,9 @@ std::string nothing_to_draw(int scene_index, const MeshImport& meshes) {
     return what;
 }
 
-Scene import_checked(const tinygltf::Model& model, std::string name, std::string source) {
+Scene import_checked(const tinygltf::Model& model, std::string name, std::string source,
+                     const ImportOptions& options,
+                     const std::map<size_t, std::string>& image_problems) {
     check_header(model);
     const int scene_index = pick_scene(model);
     validate_buffer_views(model);
@@ -148,10 +152,13 @@ Scene import_checked(const tinygltf::Model& model, std::string name, std::string
     scene.name = std::move(name);
     scene.source = std::move(source);
     scene.gltf_mesh_count = static_cast<uint32_t>(model.meshes.size());
-    scene.images = import_images(model);
+    scene.images = import_images(model, image_problems);
     scene.samplers = import_samplers(model);
-    scene.textures = import_textures(model, static_cast<uint32_t>(scene.samplers.size() - 1));
+    UnusableTextures unusable;
+    scene.textures = import_textures(model, static_cast<uint32_t>(scene.samplers.size() - 1),
+                                     {image_problems, options.strict}, scene.images, unusable);
     scene.materials = import_materials(model);
+    const std::vector<std::string> dropped = drop_unusable_textures(scene.materials, unusable);
     const auto default_material = static_cast<uint32_t>(scene.materials.size());
     const MeshImport meshes = import_meshes(model, default_material, scene.meshes);
     if (meshes.uses_default_material) {
@@ -169,16 +176,24 @@ Scene import_checked(const tinygltf::Model& model, std::string name, std::string
 
     mark_srgb_images(scene.materials, scene.textures, scene.images);
     set_cameras(scene, std::move(walk));
+    scene.warnings = dropped;
     add_warnings(model, scene, meshes);
     return scene;
 }
 
 }  // namespace
 
-Scene import_model(const tinygltf::Model& model, std::string name, std::string source) {
+Scene import_model(const tinygltf::Model& model, std::string name, std::string source,
+                   const ImportOptions& options) {
+    return detail::import_parsed(model, std::move(name), std::move(source), options, {});
+}
+
+Scene detail::import_parsed(const tinygltf::Model& model, std::string name, std::string source,
+                            const ImportOptions& options,
+                            const std::map<size_t, std::string>& image_problems) {
     const std::string prefix = source;
     try {
-        return import_checked(model, std::move(name), std::move(source));
+        return import_checked(model, std::move(name), std::move(source), options, image_problems);
     } catch (const InputError& e) {
         throw InputError(prefix + ": " + one_line(e.what()));
     }

@@ -8,6 +8,7 @@
 
 #include <tiny_gltf.h>
 
+#include "renderer/scene/import_options.h"
 #include "renderer/scene/scene.h"
 
 namespace ds::scene {
@@ -15,18 +16,26 @@ namespace ds::scene {
 // Converts a parsed model. `name` becomes Scene::name, `source` Scene::source and the prefix
 // of error messages ("builtin:atrium", or the file path). Images must already be decoded
 // (tinygltf::Image::image; 1-4 components of 8 or 16 bits).
-Scene import_model(const tinygltf::Model& model, std::string name, std::string source);
+Scene import_model(const tinygltf::Model& model, std::string name, std::string source,
+                   const ImportOptions& options = {});
 
 // Loads a .gltf or .glb file (detected by content, not by extension) and imports it.
 // Scene::name is the file's stem, Scene::source the path as given.
 // Every limit of import_limits.h applies; the file and each file it references must be a
 // regular file (checked before anything opens it).
-Scene load_gltf(const std::filesystem::path& path);
+Scene load_gltf(const std::filesystem::path& path, const ImportOptions& options = {});
 
 // The same from memory: `bytes` is the .gltf text or the .glb container, `files` the files its
 // uris name (keys as written in the uris, decoded). `name` stands for the path in messages.
 // For tests and the fuzzer; nothing touches the disk.
 Scene load_gltf_memory(const std::string& bytes, const std::map<std::string, std::string>& files,
-                       const std::string& name);
+                       const std::string& name, const ImportOptions& options = {});
+
+namespace detail {
+// import_model with the images the file loader could not use (index -> why).
+Scene import_parsed(const tinygltf::Model& model, std::string name, std::string source,
+                    const ImportOptions& options,
+                    const std::map<size_t, std::string>& image_problems);
+}  // namespace detail
 
 }  // namespace ds::scene

@@ -10,7 +10,8 @@
 
 namespace ds::scene {
 
-Scene load_scene(std::string_view name_or_path, const Settings& settings) {
+Scene load_scene(std::string_view name_or_path, const Settings& settings,
+                 const ImportOptions& options) {
     const std::string name(name_or_path);
     if (builtin::exists(name))
         return import_model(builtin::build(name, settings), name, "builtin:" + name);
@@ -27,7 +28,7 @@ Scene load_scene(std::string_view name_or_path, const Settings& settings) {
         }
         throw InputError(detail::printable(name) + ": no such file" + hint);
     }
-    return load_gltf(path);
+    return load_gltf(path, options);
 }
 
 }  // namespace ds::scene

@@ -67,4 +67,13 @@ Camera frame_bounds(const Bounds& bounds, float yfov) {
     return camera;
 }
 
+// KHR_texture_transform's matrix, translation * rotation * scale, with the rotation the
+// extension's example pins down (offset [0, 1], rotation pi/2, scale 0.5 shows the lower-left
+// quadrant turned clockwise): u' = cos*u + sin*v, v' = -sin*u + cos*v.
+std::array<glm::vec3, 2> TextureRef::uv_rows() const {
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    return {glm::vec3(c * scale.x, s * scale.y, offset.x),
+            glm::vec3(-s * scale.x, c * scale.y, offset.y)};
+}
+
 }  // namespace ds::scene

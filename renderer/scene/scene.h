@@ -1,6 +1,7 @@
 #pragma once
 // The scene model: what the renderer draws. Produced only by the glTF importer (files and
 // built-in scenes both go through it), consumed by the renderer. No Vulkan here.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -84,7 +85,13 @@ struct Texture {
 struct TextureRef {
     int32_t texture = -1;  // -1: none
     uint32_t uv_set = 0;   // only set 0 is supported by the renderer
+    // KHR_texture_transform: uv' = offset + rotate(rotation) * (scale * uv).
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f;  // radians, counter-clockwise in UV space
+    glm::vec2 scale{1.0f};
     bool present() const { return texture >= 0; }
+    // The transform as two rows (a, b, tx) and (c, d, ty): u' = a u + b v + tx, ...
+    std::array<glm::vec3, 2> uv_rows() const;
 };
 
 struct Material {

@@ -33,7 +33,22 @@ layout(set = 1, binding = 0, std140) uniform MaterialUniforms {
     float alpha_cutoff;           // the glTF material's own
     uint flags;                   // kMaterial* bits
     float alpha_cutoff_override;  // material_alpha_cutoff for this material, < 0: none
+    // KHR_texture_transform per texture (kTexture*): rows (a, b, tx) and (c, d, ty).
+    vec4 uv_rows[10];
 } material;
+
+const uint kTextureBaseColor = 0u;
+const uint kTextureMetallicRoughness = 1u;
+const uint kTextureNormal = 2u;
+const uint kTextureOcclusion = 3u;
+const uint kTextureEmissive = 4u;
+
+// The UV a material texture is sampled at: TEXCOORD_0 through its KHR_texture_transform.
+vec2 texture_uv(uint texture_index, vec2 uv) {
+    const vec3 p = vec3(uv, 1.0);
+    return vec2(dot(material.uv_rows[2u * texture_index].xyz, p),
+                dot(material.uv_rows[2u * texture_index + 1u].xyz, p));
+}
 
 layout(set = 1, binding = 1) uniform sampler2D base_color_texture;
 layout(set = 1, binding = 2) uniform sampler2D metallic_roughness_texture;  // G rough, B metal

@@ -75,10 +75,10 @@ vec3 shade(Surface s, vec3 world, float sun_visibility) {
 Surface material_surface(vec4 base, vec2 uv) {
     Surface s;
     s.base_color = base.rgb;
-    s.metallic = clamp(texture(metallic_roughness_texture, uv).b * material.metallic_factor,
+    s.metallic = clamp(texture(metallic_roughness_texture, texture_uv(kTextureMetallicRoughness, uv)).b * material.metallic_factor,
                        0.0, 1.0);
-    s.occlusion = 1.0 + material.occlusion_strength * (texture(occlusion_texture, uv).r - 1.0);
-    s.emissive = texture(emissive_texture, uv).rgb * material.emissive_factor.rgb;
+    s.occlusion = 1.0 + material.occlusion_strength * (texture(occlusion_texture, texture_uv(kTextureOcclusion, uv)).r - 1.0);
+    s.emissive = texture(emissive_texture, texture_uv(kTextureEmissive, uv)).rgb * material.emissive_factor.rgb;
     return s;
 }
 

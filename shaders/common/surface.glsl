@@ -23,7 +23,7 @@ vec3 facing(vec3 n) {
 // tangents (missing, zero, parallel to n, NaN) by keeping the vertex normal.
 vec3 shading_normal(vec3 n, vec4 tangent, vec2 uv) {
     if ((material.flags & kMaterialHasNormalMap) != 0u) {
-        vec3 texel = texture(normal_texture, uv).xyz;
+        vec3 texel = texture(normal_texture, texture_uv(kTextureNormal, uv)).xyz;
         n = perturb_normal(n, tangent, texel, material.normal_scale);
     }
     return facing(n);
@@ -31,7 +31,7 @@ vec3 shading_normal(vec3 n, vec4 tangent, vec2 uv) {
 
 // Metallic-roughness texture G x factor (perceptual roughness).
 float material_roughness(vec2 uv) {
-    return clamp(texture(metallic_roughness_texture, uv).g * material.roughness_factor, 0.0, 1.0);
+    return clamp(texture(metallic_roughness_texture, texture_uv(kTextureMetallicRoughness, uv)).g * material.roughness_factor, 0.0, 1.0);
 }
 
 // [-1, 1] <-> [0, 1] per axis (A2B10G10R10_UNORM): a linear encoding, so an MSAA AVERAGE

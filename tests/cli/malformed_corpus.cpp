@@ -80,6 +80,7 @@ size_t Workspace::accessor_offset(const json& doc, int index) const {
 std::vector<Case> all_cases() {
     std::vector<Case> cases = json_cases();
     for (Case& c : binary_cases()) cases.push_back(std::move(c));
+    for (Case& c : compressed_cases()) cases.push_back(std::move(c));
     return cases;
 }
 

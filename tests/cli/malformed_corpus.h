@@ -46,8 +46,9 @@ inline void PrintTo(const Case& c, std::ostream* os) {
     *os << c.name << " (" << c.reason << ")";
 }
 
-std::vector<Case> json_cases();    // malformed_cases_json.cpp
-std::vector<Case> binary_cases();  // malformed_cases_binary.cpp
+std::vector<Case> json_cases();        // malformed_cases_json.cpp
+std::vector<Case> binary_cases();      // malformed_cases_binary.cpp
+std::vector<Case> compressed_cases();  // malformed_cases_compressed.cpp
 std::vector<Case> all_cases();
 
 }  // namespace ds::test::corpus

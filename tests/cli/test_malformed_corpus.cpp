@@ -1,5 +1,6 @@
 // The malformed-file corpus through the real executable: `depthscope capture --scene FILE` on
-// each file of malformed_corpus.h must print exactly one line `depthscope: error: FILE: ...`
+// each file of malformed_corpus.h (with --strict: a broken texture is otherwise a warning, see
+// test_missing_textures.cpp) must print exactly one line `depthscope: error: FILE: ...`
 // (naming the JSON path, byte offset or uri the case expects), exit 1 within 10 s, peak under
 // 2 GiB, write no output folder and print no sanitizer report. One ctest test per file:
 // MalformedCorpus/... (the sanitizer stage selects them by that name).
@@ -95,9 +96,9 @@ TEST_P(MalformedCorpus, RefusedWithOneErrorLine) {
     const Workspace w(fs::path(DS_TEST_WORK_DIR) / "malformed" / c.name, base_export());
     const fs::path scene = c.make(w);
     const fs::path out = w.dir() / "out";
-    const Measured r = run_measured(
-        {"capture", "--scene", scene.string(), "--out", out.string(), "--size", "32x32"},
-        w.dir().string() + "-io");
+    const Measured r = run_measured({"capture", "--strict", "--scene", scene.string(), "--out",
+                                     out.string(), "--size", "32x32"},
+                                    w.dir().string() + "-io");
 
     std::printf("%s: exit %d, %.2f s, peak %ld MiB: %s", c.name.c_str(), r.exit_code, r.seconds,
                 r.max_rss_kb / 1024, r.err.c_str());

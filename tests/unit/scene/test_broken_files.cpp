@@ -50,9 +50,6 @@ constexpr Broken kBroken[] = {
     // Buffer views 2-4 reach past the 514-byte buffer (and meshes 1/5 have 35 vertices or
     // indices: not whole triangles).
     {"glTF2/IncorrectVertexArrays/Cube.gltf", "bufferView 2 out of buffer range"},
-    // Draco-compressed meshes.
-    {"glTF2/draco/2CylinderEngine.gltf",
-     "required extension KHR_draco_mesh_compression is not supported"},
 };
 
 std::string file_load_error(const fs::path& path) {
@@ -107,7 +104,7 @@ TEST(BrokenFiles, Coverage) {
     for (const Broken& b : kBroken) listed.insert(kBrokenModels / b.file);
     for (const char* dir : {"IndexOutOfRange", "MissingBin", "SchemaFailures", "wrongTypes",
                             "BoxWithInfinites-glTF-Binary", "RecursiveNodes", "TestNoRootNode",
-                            "IncorrectVertexArrays", "draco"})
+                            "IncorrectVertexArrays"})
         for (const fs::path& file : gltf_files_under(kBrokenModels / "glTF2" / dir))
             EXPECT_TRUE(listed.count(file)) << file << " is not in the table";
 }

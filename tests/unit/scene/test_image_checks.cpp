@@ -83,7 +83,8 @@ TEST(PngChunks, NoImageDataIsRefusedWithOneLine) {
     for (const std::string& idats :
          {std::string(), chunk("IDAT", ""), chunk("IDAT", "") + chunk("IDAT", "")}) {
         try {
-            load_gltf_memory(kDocument, {{"a.bin", buffer()}, {"a.png", png(idats)}}, "m.gltf");
+            load_gltf_memory(kDocument, {{"a.bin", buffer()}, {"a.png", png(idats)}}, "m.gltf",
+                             {.strict = true});
             FAIL() << "loaded";
         } catch (const InputError& e) {
             EXPECT_STREQ(e.what(),
@@ -99,13 +100,20 @@ TEST(JpegSegments, AHuffmanTableOfMoreThan256CodesIsRefused) {
     const std::string length = {char((dht.size() + 2) >> 8), char((dht.size() + 2) & 0xff)};
     const std::string jpeg = std::string("\xff\xd8\xff\xc4", 4) + length + dht + "\xff\xd9";
     try {
-        load_gltf_memory(kDocument, {{"a.bin", buffer()}, {"a.png", jpeg}}, "m.gltf");
+        load_gltf_memory(kDocument, {{"a.bin", buffer()}, {"a.png", jpeg}}, "m.gltf",
+                         {.strict = true});
         FAIL() << "loaded";
     } catch (const InputError& e) {
         EXPECT_STREQ(e.what(),
                      "m.gltf: images[0] (\"a.png\"): JPEG Huffman table declares 300 "
                      "codes (at most 256)");
     }
+    // Lenient (the default), the same text is a warning and the texture is dropped.
+    const Scene s = load_gltf_memory(kDocument, {{"a.bin", buffer()}, {"a.png", jpeg}}, "m.gltf");
+    ASSERT_FALSE(s.warnings.empty());
+    EXPECT_EQ(s.warnings[0].rfind("images[0] (\"a.png\"): JPEG Huffman table declares 300", 0), 0u)
+        << s.warnings[0];
+    for (const Material& m : s.materials) EXPECT_FALSE(m.base_color.present());
 }
 
 }  // namespace

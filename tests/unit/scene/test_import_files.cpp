@@ -53,6 +53,23 @@ INSTANTIATE_TEST_SUITE_P(Containers, BoxTextured,
                                            "BoxTextured-glTF-Binary/BoxTextured.glb",
                                            "BoxTextured-glTF-Embedded/BoxTextured.gltf"));
 
+// The same engine with KHR_draco_mesh_compression (assimp's test model, a Draco encoder that
+// is not gltf-pipeline): the same meshes and instances, positions within Draco's quantization
+// of the uncompressed GLB's. Draco's encoder drops degenerate triangles (110,336 are left).
+TEST(ImportFiles, TwoCylinderEngineDraco) {
+    REQUIRE_MODELS();
+    const Scene plain = load_gltf(model_path("2CylinderEngine-glTF-Binary/2CylinderEngine.glb"));
+    const Scene draco = load_gltf(model_path("draco/2CylinderEngine.gltf"));
+    EXPECT_EQ(draco.meshes.size(), plain.meshes.size());
+    EXPECT_EQ(draco.instances.size(), plain.instances.size());
+    EXPECT_EQ(draco.triangle_count(), 110336u);
+    const glm::vec3 size = plain.bounds.extent();
+    EXPECT_LT(glm::length(draco.bounds.min - plain.bounds.min), 0.01f * glm::length(size));
+    EXPECT_LT(glm::length(draco.bounds.max - plain.bounds.max), 0.01f * glm::length(size));
+    for (const std::string& w : draco.warnings)
+        EXPECT_EQ(w.find("KHR_draco_mesh_compression"), std::string::npos) << w;
+}
+
 // 29 glTF meshes with 34 primitives placed by 67 mesh nodes: 115 primitive instances in 34
 // groups (one per primitive: each has its own material), 121,496 triangles.
 TEST(ImportFiles, TwoCylinderEngine) {

@@ -47,7 +47,7 @@ std::string triangle(const std::string& extra = "", const std::string& nodes = "
 
 std::string doc_load_error(const std::string& doc) {
     try {
-        load_gltf_memory(doc, {}, "mem.gltf");
+        load_gltf_memory(doc, {}, "mem.gltf", {.strict = true});
     } catch (const InputError& e) {
         return e.what();
     }

@@ -207,8 +207,13 @@ TEST(ImportValidation, VersionAndRequiredExtensions) {
     b.add_node(b.add_quad_mesh());
     b.model.extensionsRequired = {"KHR_materials_clearcoat", "KHR_texture_transform"};
     EXPECT_NO_THROW(import_model(b.model, "t", "mem:t"));  // shading-only: ignored
-    b.model.extensionsRequired = {"KHR_texture_basisu"};
-    EXPECT_IMPORT_ERROR(b.model, "required extension KHR_texture_basisu is not supported");
+    b.model.extensionsRequired = {"KHR_mesh_quantization", "EXT_meshopt_compression",
+                                  "KHR_draco_mesh_compression", "KHR_texture_basisu"};
+    EXPECT_NO_THROW(import_model(b.model, "t", "mem:t"));  // decoded, or textures dropped
+    b.model.extensionsRequired = {"EXT_no_such_extension"};
+    EXPECT_IMPORT_ERROR(b.model, "required extension EXT_no_such_extension is not supported");
+    b.model.extensionsRequired = {"KHR_meshopt_compression"};
+    EXPECT_IMPORT_ERROR(b.model, "decodes EXT_meshopt_compression only");
     b.model.extensionsRequired.clear();
     b.model.asset.version = "1.0";
     EXPECT_IMPORT_ERROR(b.model, "glTF 1.0 is not supported (need 2.0)");
