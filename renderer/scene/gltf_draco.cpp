@@ -1,7 +1,6 @@
 // KHR_draco_mesh_compression: a primitive's Draco stream decoded into the placeholder
 // bufferViews of its accessors (gltf_prepare.cpp made them, sized from each accessor).
 #include <cstring>
-#include <limits>
 #include <memory>
 #include <vector>
 
@@ -50,8 +49,7 @@ std::optional<Target> placeholder_target(tinygltf::Model& model, int index,
 }
 
 template <typename T>
-void write_values(const draco::PointAttribute& attribute, const draco::Mesh& mesh, Target& t,
-                  const std::string& what) {
+void write_values(const draco::PointAttribute& attribute, Target& t, const std::string& what) {
     T value[4];
     for (size_t i = 0; i < t.count; ++i) {
         const draco::AttributeValueIndex v = attribute.mapped_index(draco::PointIndex(uint32_t(i)));
@@ -60,7 +58,6 @@ void write_values(const draco::PointAttribute& attribute, const draco::Mesh& mes
             fail(what + ": point " + std::to_string(i) + " has no value of this type");
         std::memcpy(t.data + i * t.stride, value, sizeof(T) * t.components);
     }
-    (void)mesh;
 }
 
 void write_attribute(const draco::PointAttribute& attribute, const draco::Mesh& mesh, Target& t,
@@ -73,17 +70,17 @@ void write_attribute(const draco::PointAttribute& attribute, const draco::Mesh& 
              " components, the Draco attribute " + std::to_string(attribute.num_components()));
     switch (t.type) {
         case TINYGLTF_COMPONENT_TYPE_FLOAT:
-            return write_values<float>(attribute, mesh, t, what);
+            return write_values<float>(attribute, t, what);
         case TINYGLTF_COMPONENT_TYPE_BYTE:
-            return write_values<int8_t>(attribute, mesh, t, what);
+            return write_values<int8_t>(attribute, t, what);
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return write_values<uint8_t>(attribute, mesh, t, what);
+            return write_values<uint8_t>(attribute, t, what);
         case TINYGLTF_COMPONENT_TYPE_SHORT:
-            return write_values<int16_t>(attribute, mesh, t, what);
+            return write_values<int16_t>(attribute, t, what);
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-            return write_values<uint16_t>(attribute, mesh, t, what);
+            return write_values<uint16_t>(attribute, t, what);
         default:
-            return write_values<uint32_t>(attribute, mesh, t, what);
+            return write_values<uint32_t>(attribute, t, what);
     }
 }
 

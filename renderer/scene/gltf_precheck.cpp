@@ -29,8 +29,7 @@ uint32_t read_u32(std::string_view bytes, size_t offset) {
 }
 
 json parse_json(std::string_view text, size_t base) {
-    // GLB pads the JSON chunk with spaces; some writers pad with NULs.
-    while (!text.empty() && (text.back() == '\0' || text.back() == ' ')) text.remove_suffix(1);
+    text = without_padding(text);
     try {
         return json::parse(text);
     } catch (const json::exception& e) {
@@ -247,6 +246,11 @@ std::string_view glb_json_chunk(std::string_view bytes) {
     if (read_u32(bytes, 16) != kGlbChunkJson) fail("GLB: the first chunk is not JSON");
     if (length > bytes.size() - 20) fail("GLB: JSON chunk runs past the end of the file");
     return bytes.substr(kGlbJsonOffset, length);
+}
+
+std::string_view without_padding(std::string_view text) {
+    while (!text.empty() && (text.back() == '\0' || text.back() == ' ')) text.remove_suffix(1);
+    return text;
 }
 
 std::vector<FileRef> precheck_gltf(std::string_view bytes, bool binary) {

@@ -30,4 +30,7 @@ std::vector<FileRef> precheck_gltf(std::string_view bytes, bool binary);
 // A GLB container's JSON chunk (header and first chunk checked).
 std::string_view glb_json_chunk(std::string_view bytes);
 
+// The JSON text without a GLB chunk's padding (spaces; some writers pad with NULs).
+std::string_view without_padding(std::string_view text);
+
 }  // namespace ds::scene::detail

@@ -162,10 +162,8 @@ Prepared prepare_compressed(std::string_view bytes, bool binary) {
     const std::string_view text = binary ? glb_json_chunk(bytes) : bytes;
     if (text.find(kMeshoptExtension) == text.npos && text.find(kDracoExtension) == text.npos)
         return {};
-    std::string_view trimmed = text;
-    while (!trimmed.empty() && (trimmed.back() == '\0' || trimmed.back() == ' '))
-        trimmed.remove_suffix(1);
-    json doc = json::parse(trimmed);  // precheck_gltf parsed it already
+    // Parsed a second time (precheck_gltf parsed it), only for files that name a compression.
+    json doc = json::parse(without_padding(text));
     Prepared out;
     Placeholders placeholders(out);
     const bool meshopt = fill_meshopt_fallbacks(doc, binary, placeholders);
