@@ -25,19 +25,45 @@ nlohmann::json shaping_knobs(const Settings& settings) {
     throw Error(escaped(path.string()) + ": " + why);
 }
 
-glm::vec3 read_vec3(const nlohmann::json& j, const std::filesystem::path& path, const char* what) {
-    if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() ||
-        !j[2].is_number())
-        bad(path, std::string("replay.camera.") + what + " is not three numbers");
-    return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
-}
-
-float read_float(const nlohmann::json& j, const std::filesystem::path& path, const char* what) {
-    if (!j.is_number()) bad(path, std::string("replay.camera.") + what + " is not a number");
-    return j.get<float>();
+// `field` of `c` into `out`; false when it is not `N` numbers (N = 1: a number).
+template <int N>
+bool read_numbers(const nlohmann::json& c, const char* field, float* out) {
+    const nlohmann::json& j = c.value(field, nlohmann::json());
+    if (N == 1) {
+        if (!j.is_number()) return false;
+        *out = j.get<float>();
+        return true;
+    }
+    if (!j.is_array() || j.size() != N) return false;
+    for (size_t i = 0; i < N; ++i) {
+        if (!j[i].is_number()) return false;
+        out[i] = j[i].get<float>();
+    }
+    return true;
 }
 
 }  // namespace
+
+nlohmann::json camera_json(const scene::Camera& camera) {
+    return {{"position", vec3(camera.position)},
+            {"forward", vec3(camera.forward)},
+            {"up", vec3(camera.up)},
+            {"yfov", double(camera.yfov)},
+            {"znear", double(camera.znear)},
+            {"zfar", double(camera.zfar)}};
+}
+
+std::optional<std::string> read_camera(const nlohmann::json& c, scene::Camera& out) {
+    if (!c.is_object()) return "is not an object";
+    for (auto [field, target] :
+         {std::pair{"position", &out.position}, {"forward", &out.forward}, {"up", &out.up}})
+        if (!read_numbers<3>(c, field, &(*target)[0]))
+            return std::string(field) + " is not three numbers";
+    for (auto [field, target] :
+         {std::pair{"yfov", &out.yfov}, {"znear", &out.znear}, {"zfar", &out.zfar}})
+        if (!read_numbers<1>(c, field, target)) return std::string(field) + " is not a number";
+    return std::nullopt;
+}
 
 nlohmann::json replay_json(const scene::Scene& scene, const scene::Camera& camera,
                            const Settings& settings) {
@@ -49,14 +75,7 @@ nlohmann::json replay_json(const scene::Scene& scene, const scene::Camera& camer
         const std::filesystem::path file = std::filesystem::absolute(scene.source);
         source = {{"file", file.string()}, {"sha256", sha256_file(file)}};
     }
-    return {{"scene", source},
-            {"camera",
-             {{"position", vec3(camera.position)},
-              {"forward", vec3(camera.forward)},
-              {"up", vec3(camera.up)},
-              {"yfov", double(camera.yfov)},
-              {"znear", double(camera.znear)},
-              {"zfar", double(camera.zfar)}}}};
+    return {{"scene", source}, {"camera", camera_json(camera)}};
 }
 
 ReplayInfo parse_replay(const nlohmann::json& report, const std::filesystem::path& path) {
@@ -80,12 +99,8 @@ ReplayInfo parse_replay(const nlohmann::json& report, const std::filesystem::pat
     }
     const nlohmann::json& c = replay->value("camera", nlohmann::json());
     if (!c.is_object()) bad(path, "replay.camera is missing");
-    info.camera.position = read_vec3(c.value("position", nlohmann::json()), path, "position");
-    info.camera.forward = read_vec3(c.value("forward", nlohmann::json()), path, "forward");
-    info.camera.up = read_vec3(c.value("up", nlohmann::json()), path, "up");
-    info.camera.yfov = read_float(c.value("yfov", nlohmann::json()), path, "yfov");
-    info.camera.znear = read_float(c.value("znear", nlohmann::json()), path, "znear");
-    info.camera.zfar = read_float(c.value("zfar", nlohmann::json()), path, "zfar");
+    if (const std::optional<std::string> why = read_camera(c, info.camera))
+        bad(path, "replay.camera." + *why);
     const nlohmann::json& size = report.value("size", nlohmann::json());
     if (!size.is_object() || !size.value("width", nlohmann::json()).is_number_unsigned() ||
         !size.value("height", nlohmann::json()).is_number_unsigned())

@@ -15,6 +15,11 @@
 
 namespace ds::capture {
 
+// A camera as report.json's replay.camera holds it (floats survive the JSON round trip), and
+// back: nothing, or what is wrong ("position is not three numbers"). Camera bookmarks share it.
+nlohmann::json camera_json(const scene::Camera& camera);
+std::optional<std::string> read_camera(const nlohmann::json& c, scene::Camera& out);
+
 // report.json's "replay" object for a frame of `scene` seen by `camera`.
 nlohmann::json replay_json(const scene::Scene& scene, const scene::Camera& camera,
                            const Settings& settings);

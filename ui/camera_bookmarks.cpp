@@ -6,6 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "capture/file_output.h"
+#include "capture/replay_info.h"
+#include "renderer/common/error.h"
+
 namespace ds::ui {
 namespace {
 
@@ -13,46 +17,12 @@ using nlohmann::json;
 
 constexpr const char* kFormat = "depthscope camera bookmarks";
 
-json bookmark_vec3(const glm::vec3& v) {
-    return {double(v.x), double(v.y), double(v.z)};
-}
-
-json bookmark_camera_json(const scene::Camera& c) {
-    return {{"position", bookmark_vec3(c.position)},
-            {"forward", bookmark_vec3(c.forward)},
-            {"up", bookmark_vec3(c.up)},
-            {"yfov", double(c.yfov)},
-            {"znear", double(c.znear)},
-            {"zfar", double(c.zfar)}};
-}
-
-bool read_bookmark_vec3(const json& j, glm::vec3& out) {
-    if (!j.is_array() || j.size() != 3) return false;
-    for (int i = 0; i < 3; ++i) {
-        if (!j[size_t(i)].is_number()) return false;
-        out[i] = j[size_t(i)].get<float>();
-    }
-    return true;
-}
-
-bool read_bookmark_float(const json& j, float& out) {
-    if (!j.is_number()) return false;
-    out = j.get<float>();
-    return true;
-}
-
 // A bookmark from the file; false when it is not one (skipped, the rest kept).
 bool read_bookmark(const json& j, CameraBookmark& out) {
     if (!j.is_object() || !j.contains("name") || !j["name"].is_string() || !j.contains("camera"))
         return false;
     out.name = j["name"].get<std::string>();
-    const json& c = j["camera"];
-    return c.is_object() && read_bookmark_vec3(c.value("position", json()), out.camera.position) &&
-           read_bookmark_vec3(c.value("forward", json()), out.camera.forward) &&
-           read_bookmark_vec3(c.value("up", json()), out.camera.up) &&
-           read_bookmark_float(c.value("yfov", json()), out.camera.yfov) &&
-           read_bookmark_float(c.value("znear", json()), out.camera.znear) &&
-           read_bookmark_float(c.value("zfar", json()), out.camera.zfar);
+    return !capture::read_camera(j["camera"], out.camera).has_value();
 }
 
 }  // namespace
@@ -89,23 +59,18 @@ void CameraBookmarks::save() {
         if (list.empty()) continue;
         json entries = json::array();
         for (const CameraBookmark& b : list)
-            entries.push_back({{"name", b.name}, {"camera", bookmark_camera_json(b.camera)}});
+            entries.push_back({{"name", b.name}, {"camera", capture::camera_json(b.camera)}});
         scenes[scene] = entries;
     }
     const json out = {{"format", kFormat}, {"scenes", scenes}};
     std::error_code ec;
     std::filesystem::create_directories(file_.parent_path(), ec);
-    const std::filesystem::path temp = file_.string() + ".tmp";
-    {
-        std::ofstream f(temp, std::ios::trunc);
-        f << out.dump(2) << '\n';
-        if (!f.flush()) {
-            error_ = temp.string() + ": cannot write";
-            return;
-        }
+    try {
+        capture::write_file_atomically("camera bookmarks", file_, out.dump(2) + "\n");
+        error_.clear();
+    } catch (const Error& e) {
+        error_ = e.what();
     }
-    std::filesystem::rename(temp, file_, ec);
-    error_ = ec ? file_.string() + ": " + ec.message() : std::string();
 }
 
 const std::vector<CameraBookmark>& CameraBookmarks::of(const std::string& scene) const {
