@@ -81,14 +81,19 @@ CLI::Option* add_text_option(CLI::App& cmd, const std::string& name,
 }
 
 // Options every rendering subcommand shares.
+// Every command that loads a scene takes it (scene::ImportOptions::strict).
+void add_strict_flag(CLI::App& cmd, Options& o) {
+    cmd.add_flag("--strict", o.strict,
+                 "refuse a scene file whose texture is missing, does not decode or is in an "
+                 "unsupported format (one error) instead of dropping that texture with a warning");
+}
+
 void add_render_options(CLI::App& cmd, Options& o, bool with_scene) {
     cmd.add_flag("--validate", o.validate,
                  "enable VK_LAYER_KHRONOS_validation; any validation message makes the exit "
                  "code 3");
     cmd.add_option("--device", o.device, "Vulkan device: index or name substring (see `info`)");
-    cmd.add_flag("--strict", o.strict,
-                 "refuse a scene file whose texture is missing, does not decode or is in an "
-                 "unsupported format (one error) instead of dropping that texture with a warning");
+    add_strict_flag(cmd, o);
     if (with_scene) {
         cmd.add_option("--scene", o.scene, "built-in scene name (see `scenes`) or .gltf/.glb path");
     }
@@ -197,6 +202,7 @@ CLI::App* add_cameras_command(CLI::App& app, Options& o) {
         ->required();
     cameras->add_option("--set", o.sets, "scene setting as name=value, repeatable")
         ->type_name("NAME=VALUE");
+    add_strict_flag(*cameras, o);
     return cameras;
 }
 

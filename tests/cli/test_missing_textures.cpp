@@ -70,6 +70,15 @@ TEST(MissingTextures, StrictRefusesWithOneLineAndWritesNothing) {
                                            gltf.string() + " --out " + out.string());
     expect_one_error_line(r, 1, "no such file");
     EXPECT_FALSE(fs::exists(out));
+    // Every other command that loads a scene (view needs a window: the same load_scene call).
+    const std::string scene = gltf.string();
+    for (const std::string& args :
+         {"cameras --strict " + scene, "diagnose --strict --size 32x18 --scene " + scene,
+          "bench --strict --frames 1 --warmup 0 --size 32x18 --scene " + scene,
+          "pixel --strict --size 32x18 --at 1,1 --scene " + scene}) {
+        SCOPED_TRACE(args);
+        expect_one_error_line(run_depthscope(args), 1, "no such file");
+    }
 }
 
 // An image that does not decode and a texture whose image only KHR_texture_basisu holds.

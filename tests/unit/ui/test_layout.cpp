@@ -97,7 +97,7 @@ TEST(PanelLayoutGeometry, RegionsNeverOverlapTheViewerAtAnySplit) {
 // that reached the viewer would move the camera or pick a pixel.
 TEST_F(PanelLayout, EveryTabHeaderIsClickableAndNoPanelCoversTheImage) {
     for (const VkExtent2D size : {VkExtent2D{1600, 900}, VkExtent2D{1280, 720}}) {
-        auto ui = open("atrium", {}, size);
+        auto ui = open("edges", {}, size);
         ui::Inspector& in = ui->inspector();
         const bool pick_mode = size.width == 1280;
         if (pick_mode) in.viewer().mouse = ui::MouseTarget::Pick;
