@@ -1,4 +1,5 @@
 #include "app/capture_source.h"
+#include "app/scene_load.h"
 
 #include <fstream>
 #include <sstream>
@@ -75,7 +76,7 @@ scene::Scene load_captured_scene(const capture::ReplayInfo& info, const Settings
     const bool force = o.force;
     scene::Scene scene;
     if (!info.builtin.empty()) {
-        scene = scene::load_scene(info.builtin, settings, {o.strict});
+        scene = load_command_scene(o, info.builtin, settings);
     } else {
         std::error_code ec;
         if (!fs::is_regular_file(info.file, ec))
@@ -85,7 +86,7 @@ scene::Scene load_captured_scene(const capture::ReplayInfo& info, const Settings
             throw Error(escaped(info.file.string()) + ": changed since the capture (sha256 " +
                         digest.substr(0, 12) + "…, captured " + info.sha256.substr(0, 12) +
                         "…); --force uses it anyway");
-        scene = scene::load_scene(info.file.string(), settings, {o.strict});
+        scene = load_command_scene(o, info.file.string(), settings);
     }
     scene.camera = chosen_camera(o, scene).value_or(info.camera);
     return scene;

@@ -11,6 +11,7 @@
 #include "app/bench.h"
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "app/scene_load.h"
 #include "app/view_camera.h"
 #include "capture/advice.h"
 #include "capture/file_output.h"
@@ -335,7 +336,7 @@ int run_bench(const Options& o) {
     // not after the whole benchmark.
     if (!o.out.empty()) capture::check_output_file("--json", o.out);
     if (!o.trace.empty()) capture::check_output_file("--trace", o.trace);
-    scene::Scene scene = scene::load_scene(o.scene, base, {o.strict});
+    scene::Scene scene = load_command_scene(o, o.scene, base);
     scene.camera = view_camera(o, scene);  // --camera, --look-at
     RendererOptions renderer_options;
     renderer_options.validate = o.validate;

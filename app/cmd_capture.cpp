@@ -7,6 +7,7 @@
 #include "app/capture_job.h"
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "app/scene_load.h"
 #include "app/view_camera.h"
 #include "capture/capture_writer.h"
 #include "capture/file_output.h"
@@ -193,10 +194,7 @@ int run_capture(const Options& o) {
     job.resources = capture::parse_resource_selection(o.resources);
     job.out = o.out;
     // Input first: a bad file fails before any Vulkan work, and before output exists.
-    job.scene = scene::load_scene(o.scene, job.settings, {o.strict});
-    for (const auto& w : job.scene.warnings) {
-        std::fprintf(stderr, "depthscope: warning: %s: %s\n", job.scene.source.c_str(), w.c_str());
-    }
+    job.scene = load_command_scene(o, o.scene, job.settings);
     job.scene.camera = view_camera(o, job.scene);  // --camera, --look-at: refused before output
     return write_capture(o, job);
 }

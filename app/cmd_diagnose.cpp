@@ -5,6 +5,7 @@
 
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "app/scene_load.h"
 #include "app/view_camera.h"
 #include "capture/diagnose/diagnose_run.h"
 #include "capture/diagnose/finding_json.h"
@@ -20,9 +21,7 @@ int run_diagnose(const Options& o) {
     for (const auto& assignment : o.sets) settings.apply(assignment);
     // Before any Vulkan work: the --json target, the scene and the view.
     if (!o.out.empty()) capture::check_output_file("--json", o.out);
-    const scene::Scene scene = scene::load_scene(o.scene, settings, {o.strict});
-    for (const auto& w : scene.warnings)
-        std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
+    const scene::Scene scene = load_command_scene(o, o.scene, settings);
     const scene::Camera camera = view_camera(o, scene);
 
     RendererOptions renderer_options;

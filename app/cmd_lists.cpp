@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/scene_load.h"
 #include "renderer/common/quoted.h"
 #include "renderer/device_info.h"
 #include "renderer/scene/builtin/builtin.h"
@@ -43,9 +44,7 @@ std::string plane_text(float value, bool infinite) {
 int run_cameras(const Options& o) {
     Settings settings;
     for (const auto& assignment : o.sets) settings.apply(assignment);
-    const scene::Scene scene = scene::load_scene(o.scene, settings, {o.strict});
-    for (const auto& w : scene.warnings)
-        std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
+    const scene::Scene scene = load_command_scene(o, o.scene, settings);
     if (scene.cameras.empty()) {
         std::printf("%s has no camera nodes (its view is framed from the scene's bounds)\n",
                     scene.name.c_str());

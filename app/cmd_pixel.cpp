@@ -5,6 +5,7 @@
 
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "app/scene_load.h"
 #include "app/view_camera.h"
 #include "capture/file_output.h"
 #include "capture/pixel_report.h"
@@ -34,9 +35,7 @@ int run_pixel(const Options& o) {
     Settings settings;
     for (const auto& assignment : o.sets) settings.apply(assignment);
     check_input(o);
-    scene::Scene scene = scene::load_scene(o.scene, settings, {o.strict});
-    for (const auto& w : scene.warnings)
-        std::fprintf(stderr, "depthscope: warning: %s: %s\n", scene.source.c_str(), w.c_str());
+    scene::Scene scene = load_command_scene(o, o.scene, settings);
     scene.camera = view_camera(o, scene);
 
     RendererOptions renderer_options;

@@ -14,6 +14,7 @@
 
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "app/scene_load.h"
 #include "app/soak.h"
 #include "capture/file_output.h"
 #include "capture/report.h"
@@ -46,9 +47,8 @@ void check_soak_usage(const Options& o) {
 std::vector<scene::Scene> soak_scenes(const Options& o, const Settings& base) {
     std::vector<scene::Scene> scenes;
     for (const auto& info : scene::builtin::list())
-        scenes.push_back(scene::load_scene(info.name, base, {o.strict}));
-    if (!scene::builtin::exists(o.scene))
-        scenes.push_back(scene::load_scene(o.scene, base, {o.strict}));
+        scenes.push_back(load_command_scene(o, info.name, base));
+    if (!scene::builtin::exists(o.scene)) scenes.push_back(load_command_scene(o, o.scene, base));
     return scenes;
 }
 

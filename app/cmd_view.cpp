@@ -15,6 +15,7 @@
 #include "app/capture_source.h"
 #include "app/commands.h"
 #include "app/exit_code.h"
+#include "app/scene_load.h"
 #include "app/view_camera.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
@@ -107,11 +108,11 @@ ui::SavedState load_saved_state(const std::filesystem::path& state_file) {
 // A saved scene that no longer loads falls back to the default; a --scene does not.
 scene::Scene load_start_scene(const Options& o, const Start& start) {
     try {
-        return scene::load_scene(start.scene, start.settings, {o.strict});
+        return load_command_scene(o, start.scene, start.settings);
     } catch (const std::exception& e) {
         if (o.scene_given) throw;
         std::fprintf(stderr, "depthscope: warning: saved scene: %s\n", e.what());
-        return scene::load_scene(o.scene, start.settings, {o.strict});
+        return load_command_scene(o, o.scene, start.settings);
     }
 }
 

@@ -140,9 +140,14 @@ nlohmann::json decals_json(const scene::Scene& s, const FrameResult& f) {
             {{"overlay", surface_json(s.instance_name(d.instance))},
              {"base", surface_json(s.instance_name(d.base))},
              {"alpha_mode", scene::to_string(s.instance_material(d.instance).alpha_mode)}});
+    nlohmann::json buried = nlohmann::json::array();
+    for (const scene::BuriedOverlay& b : s.buried)
+        buried.push_back({{"overlay", surface_json(s.instance_name(b.instance))},
+                          {"base", surface_json(s.instance_name(b.base))},
+                          {"gap", b.gap}});
     const bool pass = std::any_of(f.passes.begin(), f.passes.end(),
                                   [](const PassResult& p) { return p.name == "decals"; });
-    return {{"overlays", overlays}, {"decals_pass", pass}};
+    return {{"overlays", overlays}, {"buried", buried}, {"decals_pass", pass}};
 }
 
 nlohmann::json depth_json(const DepthResult& depth) {

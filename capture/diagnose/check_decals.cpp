@@ -3,6 +3,10 @@
 // overlay fights its base (DECAL_ZFIGHT, error, from the zfight pass's pairs); without the
 // zfight pass to say so, the overlays that would fight are listed (DECAL_PASS_OFF, warning).
 // With decal_pass=on there is nothing to report: the decals pass draws them once, after forward.
+// Whatever the settings, a surface buried just behind another that faces the same way (scene/
+// decals.h; a decal a compressor moved off its wall) is DECAL_BURIED, error: it never shows.
+#include <cstdio>
+
 #include "capture/diagnose/checks.h"
 #include "capture/diagnose/finding_json.h"
 #include "renderer/passes/decals.h"
@@ -62,11 +66,52 @@ void unmeasured_overlays(const CheckInput& in, CheckOutput& out) {
     out.findings.push_back(std::move(f));
 }
 
+// "1.22 mm" below a centimetre, else "3.4 cm" or "2.5 m" (scene units read as metres).
+std::string gap_text(double gap) {
+    char text[32];
+    if (gap < 0.01)
+        std::snprintf(text, sizeof text, "%.3g mm", gap * 1000.0);
+    else if (gap < 1.0)
+        std::snprintf(text, sizeof text, "%.3g cm", gap * 100.0);
+    else
+        std::snprintf(text, sizeof text, "%.3g m", gap);
+    return text;
+}
+
+// An overlay hidden just behind a surface facing the same way (scene/decals.h: buried): no
+// depth setting brings it back.
+void buried_overlays(const CheckInput& in, CheckOutput& out) {
+    for (const scene::BuriedOverlay& b : in.scene.buried) {
+        const FindingSurface overlay = surface_of(in.scene, b.instance);
+        const FindingSurface base = surface_of(in.scene, b.base);
+        Finding f;
+        f.code = "DECAL_BURIED";
+        f.severity = Severity::Error;
+        f.detector = "decals";
+        f.magnitude = {b.gap, "scene units"};
+        f.message = label(overlay) + " lies " + gap_text(b.gap) + " behind " + label(base) +
+                    ", facing the same way: hidden wherever " + label(base) +
+                    " is drawn (an overlay moved off its surface, by a lossy compressor's "
+                    "quantization or in modelling)";
+        f.fix =
+            "put it back on its surface or in front of it (export without position "
+            "quantization, or with more position bits)";
+        f.surfaces = {overlay, base};
+        f.pointer = overlay.pointer;
+        out.findings.push_back(std::move(f));
+    }
+}
+
 }  // namespace
 
 void check_decals(const CheckInput& in, CheckOutput& out) {
+    buried_overlays(in, out);
     if (in.scene.decals.empty()) {
-        out.skip("decals", "the scene has no coplanar overlays: the decal classifier found none");
+        if (in.scene.buried.empty())
+            out.skip("decals",
+                     "the scene has no coplanar overlays: the decal classifier found none");
+        else
+            out.ran.push_back("decals");
         return;
     }
     out.ran.push_back("decals");

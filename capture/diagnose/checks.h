@@ -42,8 +42,9 @@ struct CheckOutput {
     }
 };
 
-void check_zfight(const CheckInput& in, CheckOutput& out);          // ZFIGHT
-void check_decals(const CheckInput& in, CheckOutput& out);          // DECAL_ZFIGHT, DECAL_PASS_OFF
+void check_zfight(const CheckInput& in, CheckOutput& out);  // ZFIGHT
+void check_decals(const CheckInput& in,
+                  CheckOutput& out);  // DECAL_ZFIGHT, DECAL_PASS_OFF, DECAL_BURIED
 void check_equal(const CheckInput& in, CheckOutput& out);           // EQUAL_HOLES, EQUAL_TIES
 void check_early_z(const CheckInput& in, CheckOutput& out);         // EARLY_Z_LOST
 void check_draws(const CheckInput& in, CheckOutput& out);           // OCCLUDED_DRAW, WASTED_...

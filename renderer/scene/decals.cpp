@@ -222,16 +222,20 @@ class Overlays {
   public:
     Overlays(const std::vector<Mesh>& meshes, const std::vector<Instance>& instances);
     std::vector<int32_t> bases();
+    std::vector<BuriedOverlay> buried(const std::vector<int32_t>& decal_base);
 
   private:
     struct Geometry {
         std::vector<Tri> tris;
-        std::optional<BoxGrid> grid;  // built when it is first a candidate base
+        std::optional<BoxGrid> grid;   // built when it is first a candidate base
+        std::optional<BoxGrid> loose;  // the same, grown by kBuriedTolerance (buried())
     };
     Geometry& geometry(uint32_t i);
     bool covers(uint32_t base, uint32_t top);
     bool covers_uncached(uint32_t base, uint32_t top);
     bool strictly_on(uint32_t top, uint32_t base);
+    std::optional<double> buried_gap(uint32_t base, uint32_t top);
+    const BoxGrid& triangle_grid(uint32_t base, double tolerance, std::optional<BoxGrid>& grid);
 
     const std::vector<Mesh>& meshes_;
     const std::vector<Instance>& instances_;
@@ -280,18 +284,26 @@ bool Overlays::covers(uint32_t base, uint32_t top) {
     return result;
 }
 
-// Every sample point of every triangle of `top` lies on a triangle of `base`.
-bool Overlays::covers_uncached(uint32_t base, uint32_t top) {
-    Geometry& under = geometry(base);
-    if (!under.grid) {
+// A grid over `base`'s triangles for query points whose eps is `tolerance` relative (made once).
+const BoxGrid& Overlays::triangle_grid(uint32_t base, double tolerance,
+                                       std::optional<BoxGrid>& grid) {
+    if (!grid) {
+        const Geometry& under = geometry(base);
         std::vector<Box> boxes(under.tris.size());
         for (size_t t = 0; t < boxes.size(); ++t)
             for (const dvec3& p : under.tris[t].p) boxes[t].extend(p);
         // Any eps a query point gets: its magnitude and its triangle's edge are bounded by
         // the base's bounds (the candidate test saw to it).
         const Box& b = summary_[base].box;
-        under.grid.emplace(boxes, 2.0 * kOverlayTolerance * (b.magnitude() + b.diagonal()));
+        grid.emplace(boxes, 2.0 * tolerance * (b.magnitude() + b.diagonal()));
     }
+    return *grid;
+}
+
+// Every sample point of every triangle of `top` lies on a triangle of `base`.
+bool Overlays::covers_uncached(uint32_t base, uint32_t top) {
+    Geometry& under = geometry(base);
+    const BoxGrid& grid = triangle_grid(base, kOverlayTolerance, under.grid);
     static const std::array<dvec3, 16> kWeights = sample_weights();
     uint32_t hint = 0;  // the last triangle that matched: neighbouring points usually share it
     for (const Tri& t : geometry(top).tris) {
@@ -299,7 +311,7 @@ bool Overlays::covers_uncached(uint32_t base, uint32_t top) {
             const dvec3 q = t.p[0] * w.x + t.p[1] * w.y + t.p[2] * w.z;
             const double eps = overlay_epsilon(q, t.longest);
             if (hint < under.tris.size() && on_triangle(under.tris[hint], q, eps)) continue;
-            const bool found = under.grid->find(q, [&](uint32_t id) {
+            const bool found = grid.find(q, [&](uint32_t id) {
                 if (!on_triangle(under.tris[id], q, eps)) return false;
                 hint = id;
                 return true;
@@ -317,6 +329,65 @@ bool Overlays::strictly_on(uint32_t top, uint32_t base) {
     if (top == base || b.triangles == 0 || !b.box.holds(t.box, t.max_eps)) return false;
     if (!covers(base, top)) return false;
     return !(t.box.holds(b.box, b.max_eps) && covers(top, base));
+}
+
+// How far behind `base` the farthest sample point of `top` lies, when `top` lies buried under
+// it (decals.h); none otherwise.
+std::optional<double> Overlays::buried_gap(uint32_t base, uint32_t top) {
+    const BoxGrid& grid = triangle_grid(base, kBuriedTolerance, geometry(base).loose);
+    const std::vector<Tri>& under = geometry(base).tris;
+    static const std::array<dvec3, 16> kWeights = sample_weights();
+    const double facing = std::cos(glm::radians(5.0));
+    double gap = 0.0;
+    for (const Tri& t : geometry(top).tris) {
+        for (const dvec3& w : kWeights) {
+            const dvec3 q = t.p[0] * w.x + t.p[1] * w.y + t.p[2] * w.z;
+            const double strict = overlay_epsilon(q, t.longest);
+            const double loose = strict * (kBuriedTolerance / kOverlayTolerance);
+            double behind = -1.0;
+            grid.find(q, [&](uint32_t id) {
+                const Tri& b = under[id];
+                const double d = glm::dot(q - b.p[0], b.n);  // > 0: in front of b
+                if (glm::dot(b.n, t.n) < facing || d >= -strict || d < -loose) return false;
+                if (!on_triangle(b, q - d * b.n, loose)) return false;  // its foot, inside b
+                behind = -d;
+                return true;
+            });
+            if (behind < 0.0) return std::nullopt;
+            gap = std::max(gap, behind);
+        }
+    }
+    return gap;
+}
+
+// Every non-decal with triangles against the instances whose bounds, grown by the loose
+// tolerance, hold its centre.
+std::vector<BuriedOverlay> Overlays::buried(const std::vector<int32_t>& decal_base) {
+    std::vector<Box> boxes(summary_.size());
+    Box all;
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        boxes[i] = summary_[i].box;
+        if (!boxes[i].empty()) all.extend(boxes[i].lo), all.extend(boxes[i].hi);
+    }
+    std::vector<BuriedOverlay> out;
+    if (all.empty()) return out;
+    const double margin = 2.0 * kBuriedTolerance * (all.magnitude() + all.diagonal());
+    const BoxGrid grid(boxes, margin);
+    for (uint32_t top = 0; top < summary_.size(); ++top) {
+        if (summary_[top].triangles == 0 || decal_base[top] >= 0) continue;
+        std::optional<BuriedOverlay> best;
+        grid.find(0.5 * (boxes[top].lo + boxes[top].hi), [&](uint32_t base) {
+            if (base == top || summary_[base].triangles == 0 ||
+                !boxes[base].holds(boxes[top], margin))
+                return false;
+            const std::optional<double> gap = buried_gap(base, top);
+            if (gap && (!best || *gap < best->gap || (*gap == best->gap && base < best->base)))
+                best = BuriedOverlay{top, base, *gap};
+            return false;
+        });
+        if (best) out.push_back(*best);
+    }
+    return out;
 }
 
 // One base per decal: the best non-decal reached through "lies on" links (see decals.h).
@@ -383,6 +454,15 @@ std::vector<int32_t> Overlays::bases() {
 std::vector<int32_t> find_decal_bases(const std::vector<Mesh>& meshes,
                                       const std::vector<Instance>& instances) {
     return Overlays(meshes, instances).bases();
+}
+
+OverlayClasses classify_overlays(const std::vector<Mesh>& meshes,
+                                 const std::vector<Instance>& instances) {
+    Overlays overlays(meshes, instances);
+    OverlayClasses out;
+    out.decal_base = overlays.bases();
+    out.buried = overlays.buried(out.decal_base);
+    return out;
 }
 
 }  // namespace ds::scene

@@ -37,6 +37,24 @@ namespace ds::scene {
 
 inline constexpr double kOverlayTolerance = 1e-5;
 
+// Buried overlays. Instance O (no decal) lies buried under instance B when each sample point
+// of each of O's triangles lies behind the plane of a triangle of B that faces the way O's
+// triangle does (normals within 5 degrees): more than eps behind it (so not on it) and at most
+// kBuriedTolerance * (max_i |p_i| + L) behind, inside that triangle grown by the same amount.
+// Wherever B is drawn, O is hidden by a gap a depth test resolves: no Z-fight, the overlay
+// is simply gone. A lossy compressor makes this (gltf-pipeline's default Draco positions move
+// a wall's face 1.2 mm towards the room, in front of the posters that lay on it); so does
+// a surface modelled just under another. The base is the candidate with the least gap, then
+// the lowest index.
+inline constexpr double kBuriedTolerance = 1e-3;
+
+struct OverlayClasses {
+    std::vector<int32_t> decal_base;    // per instance, as find_decal_bases
+    std::vector<BuriedOverlay> buried;  // indices into `instances`; gap: O's farthest sample
+};
+OverlayClasses classify_overlays(const std::vector<Mesh>& meshes,
+                                 const std::vector<Instance>& instances);
+
 // eps at world point `p` of a triangle whose longest edge is `longest_edge` (see above).
 double overlay_epsilon(const glm::dvec3& p, double longest_edge);
 

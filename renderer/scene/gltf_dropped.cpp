@@ -1,5 +1,6 @@
 #include "renderer/scene/gltf_dropped.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
@@ -10,6 +11,20 @@ std::string factor_text(float v) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", double(v));
     return text;
+}
+
+// "texture 3" or "textures 3, 4, 6".
+std::string texture_list(const std::vector<size_t>& textures) {
+    std::string out = textures.size() == 1 ? "texture" : "textures";
+    for (size_t i = 0; i < textures.size(); ++i)
+        out += (i ? ", " : " ") + std::to_string(textures[i]);
+    return out;
+}
+
+std::string joined(const std::vector<std::string>& items) {
+    std::string out;
+    for (size_t i = 0; i < items.size(); ++i) out += (i ? ", " : " ") + items[i];
+    return out;
 }
 
 }  // namespace
@@ -34,17 +49,30 @@ std::vector<std::string> drop_unusable_textures(std::vector<Material>& materials
             *ref = TextureRef{};
         }
     }
-    std::vector<std::string> lines;
+    // One line per cause (an image file, an extension): textures that share an image share it.
+    std::vector<std::pair<std::string, std::vector<size_t>>> causes;
     for (const auto& [texture, why] : unusable) {
-        std::string line = why + ": texture " + std::to_string(texture);
-        const auto found = uses.find(texture);
-        if (found == uses.end()) {
-            lines.push_back(line + " is used by no material");
-            continue;
+        auto it = std::find_if(causes.begin(), causes.end(),
+                               [&](const auto& c) { return c.first == why; });
+        if (it == causes.end()) it = causes.insert(causes.end(), {why, {}});
+        it->second.push_back(texture);
+    }
+    std::vector<std::string> lines;
+    for (const auto& [why, textures] : causes) {
+        std::vector<size_t> used, unused;
+        std::vector<std::string> lost;
+        for (const size_t t : textures) {
+            const auto found = uses.find(t);
+            (found == uses.end() ? unused : used).push_back(t);
+            if (found != uses.end())
+                lost.insert(lost.end(), found->second.begin(), found->second.end());
         }
-        line += " dropped, factors only for";
-        for (size_t i = 0; i < found->second.size(); ++i)
-            line += (i ? ", " : " ") + found->second[i];
+        std::string line = why + ":";
+        if (!used.empty())
+            line += " " + texture_list(used) + " dropped, factors only for" + joined(lost);
+        if (!unused.empty())
+            line += std::string(used.empty() ? " " : "; ") + texture_list(unused) +
+                    " used by no material";
         lines.push_back(line);
     }
     return lines;

@@ -2,7 +2,8 @@
 // Textures a scene cannot use (a missing or undecodable image file, an image only in an
 // extension that is not decoded) are dropped from the materials, which keep their factors:
 // for a depth tool a base colour matters only where a masked material tests its alpha. One
-// warning line per such texture says why and what each material that used it does now.
+// warning line per cause (an image file, an extension) names the textures it takes and what
+// each material that used them does now.
 // Internal to renderer/scene.
 #include <string>
 #include <vector>

@@ -40,7 +40,8 @@ std::vector<Instance> place_instances(const std::vector<MeshPlacement>& placemen
 // makes two groups. Groups keep first-use order; each group's instances are made contiguous,
 // in traversal order. Scene::decals names overlay and base by their final indices.
 void build_draw_groups(Scene& scene, std::vector<Instance> placed) {
-    const std::vector<int32_t> base = find_decal_bases(scene.meshes, placed);
+    const OverlayClasses classes = classify_overlays(scene.meshes, placed);
+    const std::vector<int32_t>& base = classes.decal_base;
     struct Key {
         uint32_t mesh;
         AlphaMode alpha_mode;
@@ -76,6 +77,11 @@ void build_draw_groups(Scene& scene, std::vector<Instance> placed) {
             scene.decals.push_back({final_index[i], final_index[static_cast<size_t>(base[i])]});
     std::sort(scene.decals.begin(), scene.decals.end(),
               [](const Decal& a, const Decal& b) { return a.instance < b.instance; });
+    for (const BuriedOverlay& b : classes.buried)
+        scene.buried.push_back({final_index[b.instance], final_index[b.base], b.gap});
+    std::sort(
+        scene.buried.begin(), scene.buried.end(),
+        [](const BuriedOverlay& a, const BuriedOverlay& b) { return a.instance < b.instance; });
 }
 
 // A file camera without zfar asks for an infinite projection; the renderer wants a finite

@@ -142,6 +142,15 @@ struct Decal {
     uint32_t base = 0;      // the instance it lies on (never itself a decal)
 };
 
+// A surface hidden just behind another that faces the same way, by a gap a depth test
+// resolves (decals.h: a buried overlay, such as a decal a compressor moved off its wall); both
+// indices into Scene::instances.
+struct BuriedOverlay {
+    uint32_t instance = 0;  // the hidden one
+    uint32_t base = 0;      // the surface in front of it
+    double gap = 0.0;       // scene units
+};
+
 struct Camera {
     glm::vec3 position{0.0f, 0.0f, 5.0f};
     glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit
@@ -187,6 +196,7 @@ struct Scene {
     std::vector<Instance> instances;
     std::vector<DrawGroup> draw_groups;
     std::vector<Decal> decals;          // sorted by instance; exactly the instances of decal groups
+    std::vector<BuriedOverlay> buried;  // sorted by instance
     Bounds bounds;                      // world space
     std::vector<SceneCamera> cameras;   // every camera node, in walk order
     std::optional<Camera> file_camera;  // the first perspective one placed, when there is one

@@ -103,5 +103,44 @@ TEST(Compressed, QuantizedVariantsRenderAsTheirOwnToolsDecodeThem) {
     }
 }
 
+// gltf-pipeline's default Draco (11-bit positions) moves the far wall's face 1.2 mm towards
+// the room, in front of the three posters that lay on it: they no longer show, no Z-fight says
+// so, and the report names each as buried under the wall. The plain export has none.
+TEST(Compressed, DracoBuriesTheFarWallsPostersAndTheReportNamesThem) {
+    const auto buried = [](const std::string& file) {
+        const fs::path dir = compressed_folder();
+        const fs::path out = dir / ("buried_" + fs::path(file).stem().string());
+        EXPECT_EQ(run_depthscope("capture --size 160x90 --scene " + (dir / file).string() +
+                                 " --out " + out.string())
+                      .exit_code,
+                  0);
+        std::set<std::string> names;
+        const json report = json::parse(read_file(out / "report.json"));
+        for (const json& b : report["decals"]["buried"])
+            names.insert(b["overlay"]["node"].get<std::string>() + " under " +
+                         b["base"]["node"].get<std::string>() + " by " +
+                         std::to_string(int(std::lround(b["gap"].get<double>() * 1e4))) + "e-4");
+        return names;
+    };
+    EXPECT_EQ(buried("atrium.gltf"), std::set<std::string>{});
+    // diagnose says it as an error, each naming the poster and the wall.
+    const fs::path dir = compressed_folder();
+    const ProcessResult d =
+        run_depthscope("diagnose --size 160x90 --scene " + (dir / "draco.gltf").string());
+    EXPECT_EQ(d.exit_code, 0) << d.err;
+    size_t lines = 0;
+    for (size_t at = 0; (at = d.out.find("DECAL_BURIED", at)) != std::string::npos; ++at) {
+        ++lines;
+        EXPECT_EQ(d.out.rfind("error", at), d.out.rfind('\n', at) + 1) << d.out;
+    }
+    EXPECT_EQ(lines, 3u) << d.out;
+    EXPECT_NE(d.out.find("decal_poster_far_left lies 1.22 mm behind far_wall"), std::string::npos)
+        << d.out;
+    EXPECT_EQ(buried("draco.gltf"),
+              (std::set<std::string>{"decal_poster_far_high under far_wall by 12e-4",
+                                     "decal_poster_far_left under far_wall by 12e-4",
+                                     "decal_poster_far_right under far_wall by 12e-4"}));
+}
+
 }  // namespace
 }  // namespace ds::test

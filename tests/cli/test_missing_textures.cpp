@@ -62,6 +62,34 @@ TEST(MissingTextures, AWarningEachAndTheCaptureIsWritten) {
     EXPECT_GE(report["scene"]["warnings"].size(), 3u);
 }
 
+// Every command that loads the scene says so, a line per texture, and goes on: the lists, the
+// diagnostics, the benchmark and the replay of a capture made without the textures.
+TEST(MissingTextures, EveryCommandThatLoadsTheScenePrintsTheWarnings) {
+    std::vector<std::string> removed;
+    const fs::path gltf = foliage_without_textures("missing-textures-commands", removed);
+    const fs::path dir = gltf.parent_path();
+    const std::string scene = gltf.string();
+    ASSERT_EQ(
+        run_depthscope("capture --size 32x18 --scene " + scene + " --out " + (dir / "cap").string())
+            .exit_code,
+        0);
+    for (const std::string& args :
+         {"cameras " + scene, "diagnose --size 32x18 --scene " + scene,
+          "bench --frames 1 --warmup 0 --size 32x18 --scene " + scene,
+          "pixel --size 32x18 --at 1,1 --scene " + scene,
+          "replay " + (dir / "cap").string() + " --out " + (dir / "again").string()}) {
+        SCOPED_TRACE(args);
+        const ProcessResult r = run_depthscope(args);
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        size_t warnings = 0;
+        for (const std::string& line : lines_of(r.err))
+            if (line.rfind("depthscope: warning: ", 0) == 0 &&
+                line.find("no such file") != std::string::npos)
+                ++warnings;
+        EXPECT_EQ(warnings, removed.size()) << r.err;
+    }
+}
+
 TEST(MissingTextures, StrictRefusesWithOneLineAndWritesNothing) {
     std::vector<std::string> removed;
     const fs::path gltf = foliage_without_textures("missing-textures-strict", removed);

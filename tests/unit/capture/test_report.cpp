@@ -55,8 +55,9 @@ TEST(Report, HasEveryFieldOfAFrameAndOnlyTheMeasuredOptionalOnes) {
                                      "frame", "validation_messages", "passes", "counters",
                                      "skipped", "msaa", "decals", "tiler"}));
     EXPECT_EQ(report["tiler"]["ran"], "dynamic");  // always there: why there is no render pass
-    EXPECT_EQ(report["decals"],
-              (nlohmann::json{{"overlays", nlohmann::json::array()}, {"decals_pass", false}}));
+    EXPECT_EQ(report["decals"], (nlohmann::json{{"overlays", nlohmann::json::array()},
+                                                {"buried", nlohmann::json::array()},
+                                                {"decals_pass", false}}));
     EXPECT_EQ(report["device"]["driver"], "driver 1");
     // The statistic is labelled with what it means on this device.
     EXPECT_NE(report["counters"]["stats"].get<std::string>().find("counts every other fragment"),
@@ -86,6 +87,7 @@ TEST(Report, DecalsNameOverlayAndBase) {
     scene.instances[0].node = "wall";
     scene.instances[1] = {.mesh = 1, .world = glm::mat4(1.0f), .node = "poster"};
     scene.decals = {{.instance = 1, .base = 0}};
+    scene.buried = {{.instance = 0, .base = 1, .gap = 0.002}};
     FrameResult frame = two_pass_frame();
     frame.passes.push_back({});
     frame.passes.back().name = "decals";
@@ -96,6 +98,10 @@ TEST(Report, DecalsNameOverlayAndBase) {
          {{{"overlay", {{"mesh", "poster_mesh"}, {"material", "poster"}, {"node", "poster"}}},
            {"base", {{"mesh", "wall_mesh"}, {"material", "plaster"}, {"node", "wall"}}},
            {"alpha_mode", "mask"}}}},
+        {"buried",
+         {{{"overlay", {{"mesh", "wall_mesh"}, {"material", "plaster"}, {"node", "wall"}}},
+           {"base", {{"mesh", "poster_mesh"}, {"material", "poster"}, {"node", "poster"}}},
+           {"gap", 0.002}}}},
         {"decals_pass", true}};
     EXPECT_EQ(report["decals"], expected);
 }
