@@ -60,6 +60,18 @@ void decal_list(const scene::Scene& s) {
     ImGui::TreePop();
 }
 
+// Overlays hidden just behind a surface facing the same way (scene/decals.h; diagnose's
+// DECAL_BURIED): open by default, they are what a user loading a compressed file needs to see.
+void buried_list(const scene::Scene& s) {
+    if (s.buried.empty()) return;
+    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+    if (!ImGui::TreeNode("buried", "%zu buried overlays (hidden)", s.buried.size())) return;
+    for (const scene::BuriedOverlay& b : s.buried)
+        ImGui::BulletText("%s %.3g mm behind %s", s.instances[b.instance].node.c_str(),
+                          b.gap * 1000.0, s.instances[b.base].node.c_str());
+    ImGui::TreePop();
+}
+
 }  // namespace
 
 void scene_panel(PanelIo& io) {
@@ -87,6 +99,7 @@ void scene_panel(PanelIo& io) {
     ImGui::TextUnformatted(counted(s.triangles, "triangle", "triangles").c_str());
     ImGui::Text("materials: %zu opaque, %zu masked, %zu blend", s.opaque, s.masked, s.blend);
     decal_list(io.inspector.scene());
+    buried_list(io.inspector.scene());
     masked_cutoffs(io, s);
 }
 
