@@ -222,6 +222,7 @@ class Overlays {
   public:
     Overlays(const std::vector<Mesh>& meshes, const std::vector<Instance>& instances);
     std::vector<int32_t> bases();
+    std::vector<Box> instance_boxes(Box& all) const;
     std::vector<BuriedOverlay> buried(const std::vector<int32_t>& decal_base);
 
   private:
@@ -363,12 +364,8 @@ std::optional<double> Overlays::buried_gap(uint32_t base, uint32_t top) {
 // Every non-decal with triangles against the instances whose bounds, grown by the loose
 // tolerance, hold its centre.
 std::vector<BuriedOverlay> Overlays::buried(const std::vector<int32_t>& decal_base) {
-    std::vector<Box> boxes(summary_.size());
     Box all;
-    for (size_t i = 0; i < boxes.size(); ++i) {
-        boxes[i] = summary_[i].box;
-        if (!boxes[i].empty()) all.extend(boxes[i].lo), all.extend(boxes[i].hi);
-    }
+    const std::vector<Box> boxes = instance_boxes(all);
     std::vector<BuriedOverlay> out;
     if (all.empty()) return out;
     const double margin = 2.0 * kBuriedTolerance * (all.magnitude() + all.diagonal());
@@ -423,9 +420,9 @@ std::vector<int32_t> resolve_bases(const std::vector<std::vector<uint32_t>>& on,
     return base;
 }
 
-std::vector<int32_t> Overlays::bases() {
+// Every instance's box (what a BoxGrid over the instances takes) and, in `all`, their union.
+std::vector<Box> Overlays::instance_boxes(Box& all) const {
     std::vector<Box> boxes(summary_.size());
-    Box all;
     for (size_t i = 0; i < boxes.size(); ++i) {
         boxes[i] = summary_[i].box;
         if (!boxes[i].empty()) {
@@ -433,6 +430,12 @@ std::vector<int32_t> Overlays::bases() {
             all.extend(boxes[i].hi);
         }
     }
+    return boxes;
+}
+
+std::vector<int32_t> Overlays::bases() {
+    Box all;
+    const std::vector<Box> boxes = instance_boxes(all);
     if (all.empty()) return std::vector<int32_t>(summary_.size(), -1);
     // A base must hold the centre of its overlay's box, give or take any overlay's eps.
     const BoxGrid grid(boxes, 2.0 * kOverlayTolerance * (all.magnitude() + all.diagonal()));

@@ -51,12 +51,11 @@ std::vector<std::string> drop_unusable_textures(std::vector<Material>& materials
     }
     // One line per cause (an image file, an extension): textures that share an image share it.
     std::vector<std::pair<std::string, std::vector<size_t>>> causes;
-    for (const auto& [texture, why] : unusable) {
-        const std::string& cause = why;  // (a structured binding: no lambda may capture it)
+    for (const auto& entry : unusable) {  // (not a structured binding: a lambda reads it)
         auto it = std::find_if(causes.begin(), causes.end(),
-                               [&](const auto& c) { return c.first == cause; });
-        if (it == causes.end()) it = causes.insert(causes.end(), {why, {}});
-        it->second.push_back(texture);
+                               [&](const auto& c) { return c.first == entry.second; });
+        if (it == causes.end()) it = causes.insert(causes.end(), {entry.second, {}});
+        it->second.push_back(entry.first);
     }
     std::vector<std::string> lines;
     for (const auto& [why, textures] : causes) {
