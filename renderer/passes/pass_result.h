@@ -10,7 +10,7 @@
 namespace ds {
 
 // A graphics pipeline a pass drew with this frame: its debug name, whether the depth test can
-// run before its fragment shader ("guaranteed" or "lost: <reasons>", shader::early_z_verdict,
+// run before its fragment shader ("guaranteed" or "lost: <reasons>", spirv::early_z_verdict,
 // decided once per pipeline variant from its fragment SPIR-V and state) and its draws.
 struct PipelineReport {
     std::string name;

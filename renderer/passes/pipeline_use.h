@@ -10,7 +10,7 @@
 
 #include "renderer/passes/frame_result.h"
 #include "renderer/passes/pipeline_variants.h"
-#include "renderer/shader/spirv_facts.h"
+#include "renderer/spirv/spirv_facts.h"
 
 namespace ds::passes {
 
@@ -18,7 +18,7 @@ namespace ds::passes {
 // was built from (none: depth only) and its alpha-to-coverage state.
 inline PipelineInfo describe_pipeline(std::string name, const ShaderStages& stages,
                                       bool alpha_to_coverage) {
-    return {std::move(name), shader::early_z_verdict(stages.frag, alpha_to_coverage),
+    return {std::move(name), spirv::early_z_verdict(stages.frag, alpha_to_coverage),
             !stages.frag.empty()};
 }
 

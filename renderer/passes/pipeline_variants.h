@@ -33,7 +33,7 @@ struct ShaderStages {
 // What a pass reports about one pipeline variant (PipelineReport without the frame's draws).
 struct PipelineInfo {
     std::string name;
-    std::string early_z;         // shader::early_z_verdict
+    std::string early_z;         // spirv::early_z_verdict
     bool fragment_stage = true;  // false: built without one (depth only)
 };
 

@@ -6,11 +6,15 @@
 #include <string>
 #include <vector>
 
-#include "renderer/shader/spirv_facts.h"
+#include "renderer/spirv/spirv_facts.h"
 #include "shader_test_fixture.h"
 
 namespace ds::shader {
 namespace {
+
+using spirv::early_z_verdict;
+using spirv::FragmentFacts;
+using spirv::read_fragment_facts;
 
 class SpirvFactsTest : public testing::ShaderTest {
   protected:

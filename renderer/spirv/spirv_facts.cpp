@@ -1,4 +1,4 @@
-#include "renderer/shader/spirv_facts.h"
+#include "renderer/spirv/spirv_facts.h"
 
 #include <optional>
 #include <unordered_map>
@@ -10,7 +10,7 @@
 
 #include "renderer/common/error.h"
 
-namespace ds::shader {
+namespace ds::spirv {
 
 namespace {
 
@@ -211,4 +211,4 @@ std::string early_z_verdict(std::span<const uint32_t> fragment, bool alpha_to_co
     return early_z_verdict(read_fragment_facts(fragment), alpha_to_coverage);
 }
 
-}  // namespace ds::shader
+}  // namespace ds::spirv

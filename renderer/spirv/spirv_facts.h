@@ -6,7 +6,7 @@
 #include <span>
 #include <string>
 
-namespace ds::shader {
+namespace ds::spirv {
 
 struct FragmentFacts {
     bool early_fragment_tests = false;  // OpExecutionMode EarlyFragmentTests
@@ -30,4 +30,4 @@ FragmentFacts read_fragment_facts(std::span<const uint32_t> spirv);
 std::string early_z_verdict(std::span<const uint32_t> fragment, bool alpha_to_coverage);
 std::string early_z_verdict(const FragmentFacts& facts, bool alpha_to_coverage);
 
-}  // namespace ds::shader
+}  // namespace ds::spirv
