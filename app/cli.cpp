@@ -23,6 +23,7 @@ struct Subcommands {
     CLI::App* bench = nullptr;
     CLI::App* pixel = nullptr;
     CLI::App* replay = nullptr;
+    CLI::App* layer = nullptr;
     CLI::App* diff = nullptr;
     CLI::App* diagnose = nullptr;
 };
@@ -352,6 +353,27 @@ CLI::App* add_diagnose_command(CLI::App& app, Options& o, SizeTexts& texts) {
     return diagnose;
 }
 
+CLI::App* add_layer_command(CLI::App& app, Options& o) {
+    auto* layer = app.add_subcommand(
+        "layer",
+        "run a Vulkan application with depthscope's layer (VK_LAYER_DEPTHSCOPE_diagnostics) for "
+        "that process only: --list its frames, or capture --frame N's per-draw counts into a "
+        "capture folder; exits with the application's exit code");
+    add_count_option(*layer, "--frame", o.layer_frame, 1, 100000000,
+                     "the frame to capture, from 1 (presents delimit frames; an application "
+                     "that never presents: its submissions with a depth pass)");
+    layer->add_flag("--list", o.layer_list,
+                    "print the frames the application produced with their passes and draws");
+    add_path_option(*layer, "--out", o.out,
+                    "capture folder (default captures/YYYYmmdd-HHMMSS-APP/)");
+    layer->add_option("--set", o.sets, "layer setting as name=value, repeatable")
+        ->type_name("NAME=VALUE");
+    layer->add_option("app", o.layer_app, "the application and its arguments, after --")
+        ->required()
+        ->type_name("-- APP [ARGS...]");
+    return layer;
+}
+
 // Every subcommand in help order; the top level takes the inspector's options too.
 Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     Subcommands c;
@@ -372,6 +394,7 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     c.replay = add_replay_command(app, o, sizes);
     c.diff = add_diff_command(app, o);
     c.diagnose = add_diagnose_command(app, o, sizes);
+    c.layer = add_layer_command(app, o);
     return c;
 }
 
@@ -401,6 +424,7 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
     if (c.replay->parsed()) o.command = Command::Replay;
     if (c.diff->parsed()) o.command = Command::Diff;
     if (c.diagnose->parsed()) o.command = Command::Diagnose;
+    if (c.layer->parsed()) o.command = Command::Layer;
     if (sizes.at) parse_at(*sizes.at, o.at_x, o.at_y);
     if (sizes.look_at) o.look_at = parse_look_at(*sizes.look_at);
     if (sizes.render) o.size = parse_size(*sizes.render);

@@ -21,7 +21,8 @@ enum class Command {
     Pixel,
     Replay,
     Diff,
-    Diagnose
+    Diagnose,
+    Layer
 };
 
 struct Size {
@@ -76,6 +77,10 @@ struct Options {
     std::optional<LookAt> look_at;
     std::string camera_of;
     std::string fail_on;  // diagnose --fail-on: "", "error" or "warning"
+    // layer [--frame N | --list] [--out DIR] [--set k=v]… -- APP [ARGS…]
+    int layer_frame = 0;  // 0: not given
+    bool layer_list = false;
+    std::vector<std::string> layer_app;
 };
 
 // Parses argv. Returns the exit code to use right away (help printed: 0), or nullopt to run.

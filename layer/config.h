@@ -1,0 +1,24 @@
+#pragma once
+// The layer's settings, from the environment `depthscope layer` gives the application:
+//   DEPTHSCOPE_LAYER_OUT       the folder it writes (none: the layer only passes calls on)
+//   DEPTHSCOPE_LAYER_MODE      list | capture
+//   DEPTHSCOPE_LAYER_FRAME     the frame to capture (from 1)
+//   DEPTHSCOPE_LAYER_SETTINGS  k=v pairs separated by ';' (unused so far)
+#include <cstdint>
+#include <map>
+#include <string>
+
+namespace ds::layer {
+
+struct Config {
+    enum class Mode { Passive, List, Capture };
+    Mode mode = Mode::Passive;
+    std::string out;
+    uint64_t frame = 0;
+    std::map<std::string, std::string> settings;
+    std::string error;  // what was wrong with the environment (the layer then stays passive)
+
+    static Config from_environment();
+};
+
+}  // namespace ds::layer

@@ -1,0 +1,86 @@
+#pragma once
+// The layer's records of the instances, devices and objects it has seen, found by the
+// loader's dispatch key (the first word of every dispatchable handle).
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <vulkan/vk_layer.h>
+#include <vulkan/vulkan.h>
+
+#include "layer/commands.h"
+#include "layer/config.h"
+#include "layer/dispatch.h"
+#include "layer/frames.h"
+
+namespace ds::layer {
+
+template <typename Handle>
+void* dispatch_key(Handle h) {
+    return *reinterpret_cast<void**>(h);
+}
+
+struct InstanceData {
+    VkInstance instance = VK_NULL_HANDLE;
+    InstanceTable t;
+    std::string application;  // VkApplicationInfo's name, if any
+};
+
+struct SubpassInfo {
+    uint32_t depth_attachment = VK_ATTACHMENT_UNUSED;
+    uint32_t view_mask = 0;
+    std::vector<uint32_t> colors;
+};
+struct RenderPassInfo {
+    std::vector<VkFormat> formats;
+    std::vector<VkSampleCountFlagBits> samples;
+    std::vector<SubpassInfo> subpasses;
+};
+struct FramebufferInfo {
+    VkExtent2D extent{};
+    std::vector<VkImageView> views;  // empty for an imageless framebuffer
+};
+struct ViewInfo {
+    VkImage image = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+};
+
+struct DeviceData {
+    VkDevice device = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    InstanceData* instance = nullptr;
+    DeviceTable t;
+    PFN_vkSetDeviceLoaderData set_loader_data = nullptr;
+
+    std::mutex mutex;  // guards the maps below
+    std::unordered_map<VkCommandBuffer, std::unique_ptr<CommandBufferState>> command_buffers;
+    std::unordered_map<VkRenderPass, RenderPassInfo> render_passes;
+    std::unordered_map<VkFramebuffer, FramebufferInfo> framebuffers;
+    std::unordered_map<VkImageView, ViewInfo> views;
+    std::unordered_map<VkQueue, uint32_t> queue_families;
+    bool has_swapchain = false;
+    FrameTracker frames;
+
+    CommandBufferState* state(VkCommandBuffer cb);  // null for one the layer never saw
+};
+
+// Registration and lookup (thread-safe).
+InstanceData* add_instance(VkInstance instance);
+InstanceData* instance_data(void* key);
+void remove_instance(void* key);
+DeviceData* add_device(VkDevice device);
+DeviceData* device_data(void* key);
+void remove_device(void* key);
+
+template <typename Handle>
+DeviceData& device_of(Handle h) {
+    return *device_data(dispatch_key(h));
+}
+
+// The layer's settings, read once from the environment (config.h).
+const Config& config();
+
+}  // namespace ds::layer

@@ -1,0 +1,69 @@
+#include "layer/submit.h"
+
+#include <cstring>
+
+#include "layer/state.h"
+#include "layer/summary.h"
+
+namespace ds::layer {
+
+namespace {
+
+std::vector<PassSummary> summarize_all(DeviceData& d, const std::vector<VkCommandBuffer>& cbs) {
+    std::vector<PassSummary> out;
+    for (VkCommandBuffer cb : cbs)
+        if (const CommandBufferState* s = d.state(cb)) {
+            auto passes = summarize(d, *s);
+            out.insert(out.end(), passes.begin(), passes.end());
+        }
+    return out;
+}
+
+void note_submission(DeviceData& d, const std::vector<VkCommandBuffer>& cbs) {
+    if (config().mode == Config::Mode::Passive) return;
+    d.frames.submitted(summarize_all(d, cbs), d.has_swapchain);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL QueueSubmit(VkQueue queue, uint32_t n, const VkSubmitInfo* submits,
+                                           VkFence fence) {
+    DeviceData& d = device_of(queue);
+    std::vector<VkCommandBuffer> cbs;
+    for (uint32_t i = 0; i < n; ++i)
+        cbs.insert(cbs.end(), submits[i].pCommandBuffers,
+                   submits[i].pCommandBuffers + submits[i].commandBufferCount);
+    note_submission(d, cbs);
+    return d.t.QueueSubmit(queue, n, submits, fence);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL QueueSubmit2(VkQueue queue, uint32_t n,
+                                            const VkSubmitInfo2* submits, VkFence fence) {
+    DeviceData& d = device_of(queue);
+    std::vector<VkCommandBuffer> cbs;
+    for (uint32_t i = 0; i < n; ++i)
+        for (uint32_t k = 0; k < submits[i].commandBufferInfoCount; ++k)
+            cbs.push_back(submits[i].pCommandBufferInfos[k].commandBuffer);
+    note_submission(d, cbs);
+    return d.t.QueueSubmit2(queue, n, submits, fence);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInfoKHR* info) {
+    DeviceData& d = device_of(queue);
+    const VkResult r = d.t.QueuePresentKHR(queue, info);
+    if (config().mode != Config::Mode::Passive) d.frames.presented();
+    return r;
+}
+
+}  // namespace
+
+PFN_vkVoidFunction submit_function(const char* name) {
+    if (std::strcmp(name, "vkQueueSubmit2KHR") == 0) name = "vkQueueSubmit2";
+#define DS_X(fn) \
+    if (std::strcmp(name, "vk" #fn) == 0) return reinterpret_cast<PFN_vkVoidFunction>(&fn);
+    DS_X(QueueSubmit)
+    DS_X(QueueSubmit2)
+    DS_X(QueuePresentKHR)
+#undef DS_X
+    return nullptr;
+}
+
+}  // namespace ds::layer
