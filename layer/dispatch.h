@@ -187,6 +187,7 @@
     X(UnmapMemory)                                                                            \
     X(CreateQueryPool)                                                                        \
     X(DestroyQueryPool)                                                                       \
+    X(GetQueryPoolResults)                                                                    \
     X(CreateDescriptorPool)                                                                   \
     X(DestroyDescriptorPool)                                                                  \
     X(AllocateDescriptorSets)                                                                 \

@@ -3,6 +3,7 @@
 // framebuffers, views, queues, command buffers).
 #include <cstring>
 
+#include "layer/device_setup.h"
 #include "layer/objects.h"
 #include "layer/record.h"
 #include "layer/state.h"
@@ -65,13 +66,20 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateDevice(VkPhysicalDevice physical,
     link->u.pLayerInfo = link->u.pLayerInfo->pNext;
     auto create = reinterpret_cast<PFN_vkCreateDevice>(
         next_gipa(instance->instance, "vkCreateDevice"));
-    const VkResult r = create(physical, info, alloc, device);
+    std::string refused;
+    VkResult r = VK_SUCCESS;
+    {
+        const DeviceCreatePatch patch(*instance, physical, *info);
+        r = create(physical, patch.info(), alloc, device);
+        refused = patch.refused();
+    }
     if (r != VK_SUCCESS) return r;
     DeviceData* data = add_device(*device);
     data->physical = physical;
     data->instance = instance;
     data->t.load(*device, next_gdpa);
     data->set_loader_data = loader ? loader->u.pfnSetDeviceLoaderData : nullptr;
+    note_device_facts(*data, refused);
     device_created(*data);
     return r;
 }

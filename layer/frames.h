@@ -18,7 +18,9 @@ struct PassSummary {
     bool dynamic = false;  // dynamic rendering
     uint32_t subpass = 0;
     std::string label;     // the innermost debug-utils label open when it began
-    uint32_t width = 0, height = 0;
+    uint32_t width = 0, height = 0;  // the render area's extent
+    uint32_t x = 0, y = 0;           // and offset
+    uint32_t view_mask = 0;
     VkFormat depth_format = VK_FORMAT_UNDEFINED;  // UNDEFINED: no depth attachment
     uint32_t samples = 1;
     uint32_t draws = 0;

@@ -1,5 +1,7 @@
 #include "layer/objects.h"
 
+#include "layer/capture.h"
+
 #include <cstdio>
 #include <cstring>
 
@@ -218,20 +220,21 @@ PFN_vkVoidFunction object_function(const char* name) {
     DS_X(CreateImageView)
     DS_X(DestroyImageView)
 #undef DS_X
-    return nullptr;
+    return pipeline_object_function(name);
 }
-
-PFN_vkVoidFunction instance_function(const char*) { return nullptr; }
 
 void device_created(DeviceData& device) {
     const Config& c = config();
-    if (c.mode == Config::Mode::List) {
+    if (c.mode != Config::Mode::Passive) {
         std::string error;
         if (!device.frames.open_list(c.out, error))
             std::fprintf(stderr, "depthscope layer: %s\n", error.c_str());
     }
 }
 
-void device_destroyed(DeviceData& device) { device.frames.finish(); }
+void device_destroyed(DeviceData& device) {
+    finish_capture(device);
+    device.frames.finish();
+}
 
 }  // namespace ds::layer

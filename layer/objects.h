@@ -8,6 +8,7 @@
 namespace ds::layer {
 
 PFN_vkVoidFunction object_function(const char* name);
+PFN_vkVoidFunction pipeline_object_function(const char* name);  // objects_pipeline.cpp
 PFN_vkVoidFunction instance_function(const char* name);
 void device_created(DeviceData& device);
 void device_destroyed(DeviceData& device);

@@ -15,8 +15,11 @@
 #include "layer/config.h"
 #include "layer/dispatch.h"
 #include "layer/frames.h"
+#include "layer/pipelines.h"
 
 namespace ds::layer {
+
+struct FrameCapture;  // capture_state.h
 
 template <typename Handle>
 void* dispatch_key(Handle h) {
@@ -61,8 +64,22 @@ struct DeviceData {
     std::unordered_map<VkFramebuffer, FramebufferInfo> framebuffers;
     std::unordered_map<VkImageView, ViewInfo> views;
     std::unordered_map<VkQueue, uint32_t> queue_families;
+    std::unordered_map<VkShaderModule, std::shared_ptr<const std::vector<uint32_t>>> modules;
+    std::unordered_map<VkPipelineLayout, LayoutRecipe> layouts;
+    std::unordered_map<VkDescriptorSetLayout, uint32_t> dynamic_descriptors;  // per set layout
+    std::unordered_map<VkQueryPool, VkQueryType> query_types;
+    std::unordered_map<VkPipeline, PipelineRecord> pipelines;
+    std::unordered_map<uint64_t, std::string> names;  // vkSetDebugUtilsObjectNameEXT
     bool has_swapchain = false;
     FrameTracker frames;
+
+    // Capture mode: what the layer changed at device creation and the device's facts.
+    uint32_t counter_set = 0;          // the descriptor set slot the layer keeps (the last)
+    std::string capture_refused;       // why this device's frames cannot be captured
+    VkPhysicalDeviceProperties properties{};
+    VkPhysicalDeviceMemoryProperties memory{};
+    bool captured = false;             // the chosen frame has been captured
+    FrameCapture* capture = nullptr;   // during the chosen frame (capture.cpp owns it)
 
     CommandBufferState* state(VkCommandBuffer cb);  // null for one the layer never saw
 };

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "layer/capture.h"
+#include "layer/capture_state.h"
 #include "layer/state.h"
 #include "layer/summary.h"
 
@@ -19,9 +21,26 @@ std::vector<PassSummary> summarize_all(DeviceData& d, const std::vector<VkComman
     return out;
 }
 
-void note_submission(DeviceData& d, const std::vector<VkCommandBuffer>& cbs) {
-    if (config().mode == Config::Mode::Passive) return;
-    d.frames.submitted(summarize_all(d, cbs), d.has_swapchain);
+// Counts the submission into its frame; true when it is to be captured (the chosen frame,
+// with a depth pass, on a device that can be).
+bool note_submission(DeviceData& d, const std::vector<VkCommandBuffer>& cbs) {
+    const Config& c = config();
+    if (c.mode == Config::Mode::Passive) return false;
+    const auto passes = summarize_all(d, cbs);
+    const uint64_t frame = d.frames.submitted(passes, d.has_swapchain);
+    if (c.mode != Config::Mode::Capture || d.captured || frame != c.frame ||
+        !has_depth_pass(passes))
+        return false;
+    if (d.capture_refused.empty()) return true;
+    d.capture = new FrameCapture(d);
+    d.capture->not_analysed.push_back(d.capture_refused);
+    finish_capture(d);
+    return false;
+}
+
+// A frame delimited by its submission ends with it.
+void submission_done(DeviceData& d) {
+    if (!d.has_swapchain) finish_capture(d);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL QueueSubmit(VkQueue queue, uint32_t n, const VkSubmitInfo* submits,
@@ -31,8 +50,10 @@ VKAPI_ATTR VkResult VKAPI_CALL QueueSubmit(VkQueue queue, uint32_t n, const VkSu
     for (uint32_t i = 0; i < n; ++i)
         cbs.insert(cbs.end(), submits[i].pCommandBuffers,
                    submits[i].pCommandBuffers + submits[i].commandBufferCount);
-    note_submission(d, cbs);
-    return d.t.QueueSubmit(queue, n, submits, fence);
+    if (!note_submission(d, cbs)) return d.t.QueueSubmit(queue, n, submits, fence);
+    const VkResult r = capture_submit(d, queue, n, submits, fence);
+    submission_done(d);
+    return r;
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL QueueSubmit2(VkQueue queue, uint32_t n,
@@ -42,14 +63,18 @@ VKAPI_ATTR VkResult VKAPI_CALL QueueSubmit2(VkQueue queue, uint32_t n,
     for (uint32_t i = 0; i < n; ++i)
         for (uint32_t k = 0; k < submits[i].commandBufferInfoCount; ++k)
             cbs.push_back(submits[i].pCommandBufferInfos[k].commandBuffer);
-    note_submission(d, cbs);
-    return d.t.QueueSubmit2(queue, n, submits, fence);
+    if (!note_submission(d, cbs)) return d.t.QueueSubmit2(queue, n, submits, fence);
+    const VkResult r = capture_submit2(d, queue, n, submits, fence);
+    submission_done(d);
+    return r;
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInfoKHR* info) {
     DeviceData& d = device_of(queue);
     const VkResult r = d.t.QueuePresentKHR(queue, info);
-    if (config().mode != Config::Mode::Passive) d.frames.presented();
+    if (config().mode == Config::Mode::Passive) return r;
+    if (d.capture && d.frames.frame() == config().frame) finish_capture(d);
+    d.frames.presented();
     return r;
 }
 

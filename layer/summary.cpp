@@ -19,7 +19,10 @@ struct Walker {
         p.label = label();
         p.width = area.extent.width;
         p.height = area.extent.height;
+        p.x = uint32_t(area.offset.x);
+        p.y = uint32_t(area.offset.y);
         if (render_pass && index < render_pass->subpasses.size()) {
+            p.view_mask = render_pass->subpasses[index].view_mask;
             const uint32_t depth = render_pass->subpasses[index].depth_attachment;
             if (depth != VK_ATTACHMENT_UNUSED && depth < render_pass->formats.size()) {
                 p.depth_format = render_pass->formats[depth];
@@ -47,6 +50,9 @@ struct Walker {
         p.label = label();
         p.width = a.area.extent.width;
         p.height = a.area.extent.height;
+        p.x = uint32_t(a.area.offset.x);
+        p.y = uint32_t(a.area.offset.y);
+        p.view_mask = a.view_mask;
         if (a.depth_view != VK_NULL_HANDLE) {
             std::lock_guard lock(device.mutex);
             auto it = device.views.find(a.depth_view);
@@ -62,7 +68,8 @@ struct Walker {
             case Op::NextSubpass:
                 if (!passes.empty()) {
                     const PassSummary last = passes.back();
-                    subpass(last.subpass + 1, {{0, 0}, {last.width, last.height}});
+                    subpass(last.subpass + 1,
+                            {{int32_t(last.x), int32_t(last.y)}, {last.width, last.height}});
                 }
                 break;
             case Op::BeginRendering: begin_rendering(std::get<RenderingArgs>(c.payload)); break;

@@ -119,7 +119,17 @@ GpuScene::GpuScene(vk::Context& context, const scene::Scene& scene,
     create_samplers(scene);
     create_material_sets(scene, material_layout, batch);
     batch.submit();
+    for (size_t g = 0; g < draw_groups_.size(); ++g)
+        group_labels_.push_back(draw_groups_[g].instance_count > 0
+                                    ? surfaces_.name(draw_groups_[g].first_instance).node
+                                    : "group " + std::to_string(g));
 }
+
+void GpuScene::begin_group_label(VkCommandBuffer cmd, uint32_t group) const {
+    context_.debug().begin_label(cmd, group_labels_.at(group).c_str(), {0.9f, 0.7f, 0.3f, 1.0f});
+}
+
+void GpuScene::end_group_label(VkCommandBuffer cmd) const { context_.debug().end_label(cmd); }
 
 void GpuScene::upload_geometry(const scene::Scene& scene, vk::UploadBatch& batch) {
     std::vector<scene::Vertex> vertices;

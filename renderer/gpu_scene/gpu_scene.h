@@ -114,6 +114,11 @@ class GpuScene {
 
     const std::vector<GpuMesh>& meshes() const { return meshes_; }
     const SurfaceTable& surfaces() const { return surfaces_; }
+    // A debug-utils label around a draw group's draw, named as reports name the group (its
+    // first instance's node), so tools that see the frame's commands (`depthscope layer`,
+    // RenderDoc) can tell the draws apart. No-ops without VK_EXT_debug_utils.
+    void begin_group_label(VkCommandBuffer cmd, uint32_t group) const;
+    void end_group_label(VkCommandBuffer cmd) const;
     const std::vector<scene::DrawGroup>& draw_groups() const { return draw_groups_; }
     // Per scene instance, the index of its draw group (groups partition the instances).
     const std::vector<uint32_t>& instance_groups() const { return instance_groups_; }
@@ -179,6 +184,7 @@ class GpuScene {
     std::vector<scene::Bounds> instance_bounds_;
     vk::Buffer bounds_buffer_;
     SurfaceTable surfaces_;
+    std::vector<std::string> group_labels_;
     std::vector<vk::MipFill> mip_fills_;
     uint32_t white_image_ = 0;  // indices into images_
     uint32_t flat_normal_image_ = 0;

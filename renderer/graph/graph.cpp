@@ -270,6 +270,8 @@ uint64_t RenderGraph::execute(VkCommandBuffer cmd) {
     std::vector<std::string> names;
     for (const PassInfo& p : passes_) names.push_back(p.name);
     profiler_.begin_frame(cmd, id, std::move(names), *retired_);
+    // The whole frame under one label, so a tool that sees its commands can find it.
+    vk::ScopedLabel frame_label(context_.debug(), cmd, "depthscope frame");
     for (uint32_t i = 0; i < passes_.size();) {
         const int group = group_of(groups_, i);
         if (group >= 0) {

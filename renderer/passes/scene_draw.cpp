@@ -80,10 +80,13 @@ DrawCounts draw_groups(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
         bind_material(cmd, scene, layout, mesh.material, material);
         vk::fn().cmd_set_cull_mode(cmd, cull.value_or(cull_mode(g.double_sided)));
         // gl_InstanceIndex = first_instance + i indexes the instance buffer directly.
-        if (queries) queries->begin(cmd, uint32_t(&g - scene.draw_groups().data()));
+        const uint32_t group = uint32_t(&g - scene.draw_groups().data());
+        scene.begin_group_label(cmd, group);
+        if (queries) queries->begin(cmd, group);
         vkCmdDrawIndexed(cmd, mesh.index_count, g.instance_count, mesh.first_index,
                          mesh.vertex_offset, g.first_instance);
         if (queries) queries->end(cmd);
+        scene.end_group_label(cmd);
         if (hooks.log) hooks.log->add(g.first_instance, g.instance_count);
         ++counts.draws;
         counts.instances += g.instance_count;
@@ -164,10 +167,13 @@ DrawCounts draw_sorted(VkCommandBuffer cmd, const GpuScene& scene, VkPipelineLay
         const GpuMesh& mesh = scene.meshes()[d.group->mesh];
         bind_material(cmd, scene, layout, mesh.material, material);
         vk::fn().cmd_set_cull_mode(cmd, cull_mode(d.group->double_sided));
-        if (queries) queries->begin(cmd, uint32_t(d.group - scene.draw_groups().data()));
+        const uint32_t group = uint32_t(d.group - scene.draw_groups().data());
+        scene.begin_group_label(cmd, group);
+        if (queries) queries->begin(cmd, group);
         vkCmdDrawIndexed(cmd, mesh.index_count, d.count, mesh.first_index, mesh.vertex_offset,
                          d.instance);
         if (queries) queries->end(cmd);
+        scene.end_group_label(cmd);
         if (hooks.log) hooks.log->add(d.instance, d.count);
         ++counts.draws;
         counts.instances += d.count;

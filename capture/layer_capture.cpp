@@ -1,0 +1,132 @@
+#include "capture/layer_capture.h"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+
+#include <vulkan/vulkan.h>
+
+#include "capture/exr_file.h"
+#include "capture/file_output.h"
+#include "capture/image_writer.h"
+#include "capture/resource_files.h"
+#include "renderer/common/error.h"
+#include "renderer/common/version.h"
+#include "renderer/format/format.h"
+#include "renderer/view/heat.h"
+
+namespace ds::capture {
+
+namespace {
+
+using nlohmann::json;
+
+json read_json(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) throw Error(file.string() + ": cannot be read");
+    try {
+        return json::parse(in);
+    } catch (const json::exception& e) {
+        throw Error(file.string() + ": " + e.what());
+    }
+}
+
+std::vector<uint32_t> read_pixels(const std::filesystem::path& file, size_t words) {
+    std::vector<uint32_t> out(words);
+    std::ifstream in(file, std::ios::binary);
+    in.read(reinterpret_cast<char*>(out.data()), std::streamsize(words * 4));
+    if (size_t(in.gcount()) != words * 4) throw Error(file.string() + ": truncated");
+    return out;
+}
+
+// One count image of a pass: PNG as the heat map over 0..max, EXR raw.
+json write_count_image(const std::filesystem::path& dir, const std::string& stem,
+                       uint32_t width, uint32_t height, const std::vector<uint32_t>& px,
+                       uint32_t component) {
+    std::vector<uint32_t> counts(size_t(width) * height);
+    uint32_t max = 0;
+    uint64_t total = 0;
+    for (size_t i = 0; i < counts.size(); ++i) {
+        counts[i] = px[i * 4 + component];
+        max = std::max(max, counts[i]);
+        total += counts[i];
+    }
+    std::vector<uint8_t> rgba(counts.size() * 4, 255);
+    for (size_t i = 0; i < counts.size(); ++i) {
+        const auto c = view::count_color(float(counts[i]), 0.0f, float(std::max<uint32_t>(max, 1)));
+        std::copy(c.begin(), c.end(), rgba.begin() + long(i * 4));
+    }
+    write_png_rgba8(dir / (stem + ".png"), width, height, rgba);
+    ExrImage exr{width, height, {}};
+    exr.channels.push_back({"count", true, {}, counts});
+    write_exr(dir / (stem + ".exr"), exr);
+    return {{"png", "resources/" + stem + ".png"},
+            {"exr", "resources/" + stem + ".exr"},
+            {"max", max},
+            {"total", total}};
+}
+
+std::string pass_name(const json& pass) {
+    const std::string label = pass.value("label", "");
+    if (!label.empty()) return label;
+    return "pass" + std::to_string(pass.at("index").get<int>());
+}
+
+json pass_entry(const std::filesystem::path& layer_dir, const std::filesystem::path& out_dir,
+                const json& pass, std::map<std::string, int>& stems) {
+    json entry = pass;
+    entry["name"] = pass_name(pass);
+    const int fmt = pass.at("depth_format").get<int>();
+    entry["depth_format"] = fmt ? format::name(VkFormat(fmt)) : "none";
+    entry.erase("pixels");
+    if (!pass.contains("pixels")) return entry;
+    std::string stem = file_stem(entry["name"].get<std::string>());
+    if (stems[stem]++ > 0) stem += "_" + std::to_string(pass.at("index").get<int>());
+    const json& px = pass.at("pixels");
+    const uint32_t w = px.at("width"), h = px.at("height");
+    const auto pixels = read_pixels(layer_dir / px.at("file").get<std::string>(), size_t(w) * h * 4);
+    const std::filesystem::path dir = out_dir / "resources";
+    std::filesystem::create_directories(dir);
+    entry["images"] = {{"shaded", write_count_image(dir, stem + "_shaded", w, h, pixels, 0)},
+                       {"discarded", write_count_image(dir, stem + "_discarded", w, h, pixels, 1)},
+                       {"rasterized", write_count_image(dir, stem + "_rasterized", w, h, pixels, 2)}};
+    return entry;
+}
+
+}  // namespace
+
+std::string layer_draw_name(const json& draw, const std::string& pass) {
+    const auto& labels = draw.at("labels");
+    if (!labels.empty() && labels.back().get<std::string>() != pass)
+        return labels.back().get<std::string>();
+    return pass + " draw " + std::to_string(draw.at("index_in_pass").get<int>());
+}
+
+json write_layer_capture(const std::filesystem::path& layer_dir,
+                         const std::filesystem::path& out_dir,
+                         const std::vector<std::string>& command) {
+    const json raw = read_json(layer_dir / "capture.json");
+    json report = {{"tool", "depthscope"}, {"version", ds::version()}, {"source", "layer"}};
+    for (const char* key : {"device", "application", "frame", "delimiter", "submissions",
+                            "counter_set", "cost", "pipelines", "not_analysed"})
+        report[key] = raw.at(key);
+    report["command"] = command;
+    std::map<std::string, int> stems;
+    json passes = json::array();
+    for (const json& p : raw.at("passes")) passes.push_back(pass_entry(layer_dir, out_dir, p, stems));
+    json draws = json::array();
+    for (json d : raw.at("draws")) {
+        d["name"] = layer_draw_name(d, passes.at(d.at("pass").get<size_t>()).at("name"));
+        draws.push_back(std::move(d));
+    }
+    report["passes"] = passes;
+    report["draws"] = draws;
+    // The instrumented fragment shaders, as the device ran them (spirv-val, spirv-dis).
+    if (std::filesystem::exists(layer_dir / "shaders"))
+        std::filesystem::copy(layer_dir / "shaders", out_dir / "shaders",
+                              std::filesystem::copy_options::recursive);
+    write_new_file(out_dir / "report.json", report.dump(2) + "\n");
+    return report;
+}
+
+}  // namespace ds::capture

@@ -1,0 +1,25 @@
+#pragma once
+// A capture folder from what the Vulkan layer wrote for the chosen frame (layer/capture_output.h):
+// report.json ("source": "layer": the device, the application, the frame, its passes and draws
+// with their counts, the pipelines with their early-Z verdicts, not_analysed, the cost) and,
+// for every pass with a depth attachment, resources/PASS_shaded, _discarded and _rasterized as
+// PNG (the count heat map, 0..the pass's largest count) and EXR (the raw counts, UINT).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace ds::capture {
+
+// Reads `layer_dir`/capture.json and its files; writes into `out_dir` (a staging folder).
+// `command`: the application's command line, for the report. Throws ds::Error.
+nlohmann::json write_layer_capture(const std::filesystem::path& layer_dir,
+                                   const std::filesystem::path& out_dir,
+                                   const std::vector<std::string>& command);
+
+// A draw's name: its innermost debug-utils label, else "PASS draw N" (the pass's name and the
+// draw's index in it).
+std::string layer_draw_name(const nlohmann::json& draw, const std::string& pass_name);
+
+}  // namespace ds::capture

@@ -1,0 +1,138 @@
+#include "layer/capture_output.h"
+
+#include <cinttypes>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+namespace ds::layer {
+
+namespace {
+
+using nlohmann::json;
+
+std::string hex(uint64_t v) {
+    char text[24];
+    std::snprintf(text, sizeof text, "0x%" PRIx64, v);
+    return text;
+}
+
+const char* draw_kind(DrawKind k) {
+    switch (k) {
+        case DrawKind::Draw: return "draw";
+        case DrawKind::Indexed: return "indexed";
+        case DrawKind::Indirect: return "indirect";
+        case DrawKind::IndexedIndirect: return "indexed_indirect";
+        case DrawKind::IndirectCount: return "indirect_count";
+        case DrawKind::IndexedIndirectCount: return "indexed_indirect_count";
+    }
+    return "draw";
+}
+
+json passes_json(const FrameCapture& fc, const std::filesystem::path& out) {
+    json passes = json::array();
+    std::filesystem::create_directories(out / "passes");
+    for (size_t i = 0; i < fc.passes.size(); ++i) {
+        const CapturedPass& p = fc.passes[i];
+        const PassSummary& s = p.summary;
+        json j = {{"index", i},           {"submission", p.submission}, {"dynamic", s.dynamic},
+                  {"subpass", s.subpass}, {"label", s.label},           {"x", s.x},
+                  {"y", s.y},             {"width", s.width},           {"height", s.height},
+                  {"depth_format", int(s.depth_format)}, {"samples", s.samples},
+                  {"draws", s.draws},     {"counted", p.counted}};
+        if (p.counted) {
+            const std::string file = "passes/" + std::to_string(i) + ".bin";
+            std::ofstream(out / file, std::ios::binary)
+                .write(reinterpret_cast<const char*>(p.pixels.data()),
+                       std::streamsize(p.pixels.size() * 4));
+            j["pixels"] = {{"file", file}, {"width", p.pixel_width}, {"height", p.pixel_height}};
+        }
+        passes.push_back(j);
+    }
+    return passes;
+}
+
+json draws_json(const FrameCapture& fc) {
+    json draws = json::array();
+    for (const CapturedDrawResult& r : fc.draws) {
+        const CapturedDraw& d = r.draw;
+        json j = {{"pass", d.pass},
+                  {"index_in_pass", d.index_in_pass},
+                  {"labels", d.labels},
+                  {"pipeline", hex(uint64_t(d.pipeline))},
+                  {"kind", draw_kind(d.args.kind)},
+                  {"count", d.args.count},
+                  {"instances", d.args.instances}};
+        if (d.not_analysed.empty()) {
+            j["shaded"] = r.counts.shaded;
+            j["discarded"] = r.counts.discarded;
+            j["rasterized"] = r.counts.rasterized;
+            j["samples_passed"] = r.samples_passed;
+        } else {
+            j["not_analysed"] = d.not_analysed;
+        }
+        draws.push_back(j);
+    }
+    return draws;
+}
+
+json pipelines_json(const FrameCapture& fc, const std::filesystem::path& out) {
+    json pipelines = json::array();
+    std::filesystem::create_directories(out / "shaders");
+    for (const auto& [app, p] : fc.pipelines.all()) {
+        json j = {{"handle", hex(uint64_t(app))},
+                  {"name", p.name},
+                  {"fragment_shader", p.has_fragment},
+                  {"early_z", p.early_z},
+                  {"early_fragment_tests_added", p.early_tests_added},
+                  {"discard_sites", p.discard_sites}};
+        if (!p.why.empty()) j["not_analysed"] = p.why;
+        if (!p.instrumented.empty()) {
+            const std::string file = "shaders/" + hex(uint64_t(app)) + ".spv";
+            std::ofstream(out / file, std::ios::binary)
+                .write(reinterpret_cast<const char*>(p.instrumented.data()),
+                       std::streamsize(p.instrumented.size() * 4));
+            j["instrumented_spirv"] = file;
+        }
+        pipelines.push_back(j);
+    }
+    return pipelines;
+}
+
+}  // namespace
+
+void write_capture(DeviceData& d, const FrameCapture& fc, const std::string& out_dir) {
+    const std::filesystem::path out = out_dir;
+    const VkPhysicalDeviceProperties& p = d.properties;
+    json report = {
+        {"device",
+         {{"name", p.deviceName},
+          {"vendor_id", p.vendorID},
+          {"device_id", p.deviceID},
+          {"driver_version", p.driverVersion},
+          {"api_version", std::to_string(VK_API_VERSION_MAJOR(p.apiVersion)) + "." +
+                              std::to_string(VK_API_VERSION_MINOR(p.apiVersion)) + "." +
+                              std::to_string(VK_API_VERSION_PATCH(p.apiVersion))}}},
+        {"application", d.instance ? d.instance->application : ""},
+        {"frame", config().frame},
+        {"delimiter", d.has_swapchain ? "present" : "submission"},
+        {"submissions", fc.submissions},
+        {"counter_set", d.counter_set},
+        {"cost",
+         {{"capture_ms", fc.capture_ms},
+          {"pipeline_build_ms", fc.pipelines.build_ms()},
+          {"pipelines_built", fc.pipelines.all().size()},
+          {"counter_bytes", fc.counter_bytes}}},
+        {"passes", passes_json(fc, out)},
+        {"draws", draws_json(fc)},
+        {"pipelines", pipelines_json(fc, out)},
+        {"not_analysed", fc.not_analysed}};
+    // capture.json last: its presence says the rest is complete.
+    const auto tmp = out / "capture.json.partial";
+    std::ofstream(tmp) << report.dump(1) << "\n";
+    std::filesystem::rename(tmp, out / "capture.json");
+}
+
+}  // namespace ds::layer

@@ -1,0 +1,119 @@
+#include "layer/capture_pipelines.h"
+
+#include <chrono>
+#include <span>
+
+#include "layer/count_rasterized.h"  // generated (layer/shaders)
+#include "layer/spirv/instrument.h"
+#include "layer/typed.h"
+#include "renderer/spirv/spirv_facts.h"
+
+namespace ds::layer {
+
+void move_to_set(std::vector<uint32_t>& spirv, uint32_t set) {
+    constexpr uint32_t kOpDecorate = 71, kDescriptorSet = 34;
+    for (size_t at = 5; at < spirv.size();) {
+        const uint32_t count = spirv[at] >> 16;
+        if (count == 0) break;
+        if ((spirv[at] & 0xffff) == kOpDecorate && count >= 4 && spirv[at + 2] == kDescriptorSet)
+            spirv[at + 3] = set;
+        at += count;
+    }
+}
+
+CountingPipelines::CountingPipelines(DeviceData& d)
+    : d_(d), measure_code_(std::begin(kCountRasterizedSpirv), std::end(kCountRasterizedSpirv)) {
+    move_to_set(measure_code_, d.counter_set);
+    VkDescriptorSetLayoutBinding bindings[2] = {};
+    for (uint32_t i = 0; i < 2; ++i) {
+        bindings[i].binding = i;
+        bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC;
+        bindings[i].descriptorCount = 1;
+        bindings[i].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
+    }
+    auto l = typed<VkDescriptorSetLayoutCreateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+    l.bindingCount = 2;
+    l.pBindings = bindings;
+    d.t.CreateDescriptorSetLayout(d.device, &l, nullptr, &set_layout_);
+    l.bindingCount = 0;
+    d.t.CreateDescriptorSetLayout(d.device, &l, nullptr, &empty_layout_);
+}
+
+CountingPipelines::~CountingPipelines() {
+    for (auto& [app, p] : pipelines_) {
+        if (p.counting && p.counting != app) d_.t.DestroyPipeline(d_.device, p.counting, nullptr);
+        if (p.measure) d_.t.DestroyPipeline(d_.device, p.measure, nullptr);
+    }
+    for (auto& [app, l] : layouts_) d_.t.DestroyPipelineLayout(d_.device, l.first, nullptr);
+    for (VkShaderModule m : modules_) d_.t.DestroyShaderModule(d_.device, m, nullptr);
+    d_.t.DestroyDescriptorSetLayout(d_.device, set_layout_, nullptr);
+    d_.t.DestroyDescriptorSetLayout(d_.device, empty_layout_, nullptr);
+}
+
+VkShaderModule CountingPipelines::module(const std::vector<uint32_t>& code) {
+    auto info = typed<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
+    info.codeSize = code.size() * 4;
+    info.pCode = code.data();
+    VkShaderModule m = VK_NULL_HANDLE;
+    if (d_.t.CreateShaderModule(d_.device, &info, nullptr, &m) == VK_SUCCESS)
+        modules_.push_back(m);
+    return m;
+}
+
+VkPipelineLayout CountingPipelines::extended_layout(VkPipelineLayout app, uint32_t& app_sets,
+                                                    std::string& why) {
+    if (auto it = layouts_.find(app); it != layouts_.end()) {
+        app_sets = it->second.second;
+        return it->second.first;
+    }
+    LayoutRecipe recipe;
+    {
+        std::lock_guard lock(d_.mutex);
+        auto it = d_.layouts.find(app);
+        if (it == d_.layouts.end()) return (why = "a pipeline layout the layer did not see"), nullptr;
+        recipe = it->second;
+    }
+    if (recipe.sets.size() > d_.counter_set)
+        return (why = "the pipeline layout uses the layer's descriptor set slot"), nullptr;
+    std::vector<VkDescriptorSetLayout> sets = recipe.sets;
+    for (VkDescriptorSetLayout& s : sets)
+        if (s == VK_NULL_HANDLE) s = empty_layout_;
+    sets.resize(d_.counter_set, empty_layout_);
+    sets.push_back(set_layout_);
+    auto info = typed<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+    info.setLayoutCount = uint32_t(sets.size());
+    info.pSetLayouts = sets.data();
+    info.pushConstantRangeCount = uint32_t(recipe.push_constants.size());
+    info.pPushConstantRanges = recipe.push_constants.data();
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    if (d_.t.CreatePipelineLayout(d_.device, &info, nullptr, &layout) != VK_SUCCESS)
+        return (why = "cannot create the extended pipeline layout"), nullptr;
+    app_sets = uint32_t(recipe.sets.size());
+    layouts_[app] = {layout, app_sets};
+    return layout;
+}
+
+const CountingPipeline& CountingPipelines::get(VkPipeline app) {
+    if (auto it = pipelines_.find(app); it != pipelines_.end()) return it->second;
+    const auto start = std::chrono::steady_clock::now();
+    CountingPipeline& p = pipelines_[app];
+    std::unique_ptr<PipelineRecipe> copy;
+    {
+        std::lock_guard lock(d_.mutex);
+        auto it = d_.pipelines.find(app);
+        if (auto n = d_.names.find(uint64_t(app)); n != d_.names.end()) p.name = n->second;
+        if (it == d_.pipelines.end())
+            p.why = "a pipeline the layer did not see created";
+        else if (!it->second.recipe)
+            p.why = it->second.why;
+        else
+            copy = std::make_unique<PipelineRecipe>(*it->second.recipe);
+    }
+    if (copy) build(p, std::move(*copy));
+    build_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                           start).count();
+    return p;
+}
+
+}  // namespace ds::layer

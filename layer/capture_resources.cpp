@@ -1,0 +1,131 @@
+#include "layer/capture_resources.h"
+#include "layer/typed.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace ds::layer {
+
+namespace {
+
+VkDeviceSize align(VkDeviceSize v, VkDeviceSize a) { return (v + a - 1) / a * a; }
+
+constexpr VkDeviceSize kPixelHeader = 16;
+
+}  // namespace
+
+CaptureResources::CaptureResources(DeviceData& d, VkDescriptorSetLayout layout, uint32_t draws,
+                                   const std::vector<VkExtent2D>& pass_pixels)
+    : d_(d), layout_(layout) {
+    const VkDeviceSize a = std::max<VkDeviceSize>(
+        16, d.properties.limits.minStorageBufferOffsetAlignment);
+    draw_stride_ = a;
+    draw_bytes_ = std::max<VkDeviceSize>(1, draws) * a;
+    VkDeviceSize largest = kPixelHeader;
+    for (const VkExtent2D& e : pass_pixels) {
+        pass_offsets_.push_back(pixel_bytes_);
+        const VkDeviceSize size = kPixelHeader + VkDeviceSize(e.width) * e.height * 16;
+        largest = std::max(largest, size);
+        pixel_bytes_ = align(pixel_bytes_ + size, a);
+    }
+    // The last pass's binding reads `largest` bytes from its offset.
+    pixel_bytes_ = std::max<VkDeviceSize>(pixel_bytes_, 1) + largest;
+    if (!make_buffer(draw_bytes_, draw_buffer_, draw_memory_, draw_map_) ||
+        !make_buffer(pixel_bytes_, pixel_buffer_, pixel_memory_, pixel_map_) ||
+        !make_descriptors(largest))
+        return;
+    std::memset(draw_map_, 0, draw_bytes_);
+    std::memset(pixel_map_, 0, pixel_bytes_);
+    for (size_t p = 0; p < pass_pixels.size(); ++p) {
+        auto* header = reinterpret_cast<uint32_t*>(static_cast<uint8_t*>(pixel_map_) +
+                                                   pass_offsets_[p]);
+        header[0] = pass_pixels[p].width;
+        header[1] = pass_pixels[p].height;
+    }
+    auto q = typed<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
+    q.queryType = VK_QUERY_TYPE_OCCLUSION;
+    q.queryCount = std::max<uint32_t>(1, draws);
+    if (d.t.CreateQueryPool(d.device, &q, nullptr, &queries_) != VK_SUCCESS)
+        error_ = "cannot create the occlusion query pool";
+}
+
+bool CaptureResources::make_buffer(VkDeviceSize size, VkBuffer& buffer, VkDeviceMemory& memory,
+                                   void*& mapped) {
+    auto b = typed<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
+    b.size = size;
+    b.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    if (d_.t.CreateBuffer(d_.device, &b, nullptr, &buffer) != VK_SUCCESS)
+        return (error_ = "cannot create a counter buffer"), false;
+    VkMemoryRequirements req;
+    d_.t.GetBufferMemoryRequirements(d_.device, buffer, &req);
+    const VkMemoryPropertyFlags want =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    uint32_t type = UINT32_MAX;
+    for (uint32_t i = 0; i < d_.memory.memoryTypeCount && type == UINT32_MAX; ++i)
+        if ((req.memoryTypeBits & (1u << i)) &&
+            (d_.memory.memoryTypes[i].propertyFlags & want) == want)
+            type = i;
+    if (type == UINT32_MAX) return (error_ = "no host-visible memory for the counters"), false;
+    auto m = typed<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
+    m.allocationSize = req.size;
+    m.memoryTypeIndex = type;
+    if (d_.t.AllocateMemory(d_.device, &m, nullptr, &memory) != VK_SUCCESS)
+        return (error_ = "out of memory for the counters (" + std::to_string(size) + " bytes)"),
+               false;
+    d_.t.BindBufferMemory(d_.device, buffer, memory, 0);
+    if (d_.t.MapMemory(d_.device, memory, 0, VK_WHOLE_SIZE, 0, &mapped) != VK_SUCCESS)
+        return (error_ = "cannot map the counters"), false;
+    return true;
+}
+
+bool CaptureResources::make_descriptors(VkDeviceSize pixel_range) {
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC, 2};
+    auto p = typed<VkDescriptorPoolCreateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO);
+    p.maxSets = 1;
+    p.poolSizeCount = 1;
+    p.pPoolSizes = &size;
+    if (d_.t.CreateDescriptorPool(d_.device, &p, nullptr, &pool_) != VK_SUCCESS)
+        return (error_ = "cannot create the counters' descriptor set"), false;
+    auto a = typed<VkDescriptorSetAllocateInfo>(VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO);
+    a.descriptorPool = pool_;
+    a.descriptorSetCount = 1;
+    a.pSetLayouts = &layout_;
+    if (d_.t.AllocateDescriptorSets(d_.device, &a, &set_) != VK_SUCCESS)
+        return (error_ = "cannot allocate the counters' descriptor set"), false;
+    VkDescriptorBufferInfo infos[2] = {{draw_buffer_, 0, sizeof(DrawCounters)},
+                                       {pixel_buffer_, 0, pixel_range}};
+    VkWriteDescriptorSet w[2] = {};
+    for (uint32_t i = 0; i < 2; ++i) {
+        w[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        w[i].dstSet = set_;
+        w[i].dstBinding = i;
+        w[i].descriptorCount = 1;
+        w[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC;
+        w[i].pBufferInfo = &infos[i];
+    }
+    d_.t.UpdateDescriptorSets(d_.device, 2, w, 0, nullptr);
+    return true;
+}
+
+const DrawCounters& CaptureResources::draw(uint32_t i) const {
+    return *reinterpret_cast<const DrawCounters*>(static_cast<const uint8_t*>(draw_map_) +
+                                                  i * draw_stride_);
+}
+
+const uint32_t* CaptureResources::pixels(uint32_t pass) const {
+    return reinterpret_cast<const uint32_t*>(static_cast<const uint8_t*>(pixel_map_) +
+                                             pass_offsets_[pass] + kPixelHeader);
+}
+
+CaptureResources::~CaptureResources() {
+    const auto& t = d_.t;
+    if (queries_) t.DestroyQueryPool(d_.device, queries_, nullptr);
+    if (pool_) t.DestroyDescriptorPool(d_.device, pool_, nullptr);
+    for (auto [buffer, memory] : {std::pair{draw_buffer_, draw_memory_},
+                                  std::pair{pixel_buffer_, pixel_memory_}}) {
+        if (buffer) t.DestroyBuffer(d_.device, buffer, nullptr);
+        if (memory) t.FreeMemory(d_.device, memory, nullptr);
+    }
+}
+
+}  // namespace ds::layer

@@ -1,0 +1,40 @@
+#pragma once
+// What the chosen frame's capture has gathered so far (capture.h).
+#include <map>
+#include <string>
+#include <vector>
+
+#include "layer/capture_pipelines.h"
+#include "layer/capture_record.h"
+#include "layer/capture_resources.h"
+
+namespace ds::layer {
+
+struct CapturedPass {
+    PassSummary summary;
+    bool counted = false;
+    uint32_t submission = 0;
+    std::vector<uint32_t> pixels;  // width x height x 4 (shaded, discarded, rasterized, 0)
+    uint32_t pixel_width = 0, pixel_height = 0;
+};
+
+struct CapturedDrawResult {
+    CapturedDraw draw;  // draw.pass: index into FrameCapture::passes
+    DrawCounters counts{};
+    uint64_t samples_passed = 0;
+};
+
+struct FrameCapture {
+    explicit FrameCapture(DeviceData& d) : pipelines(d) {}
+    CountingPipelines pipelines;
+    std::map<uint32_t, VkCommandPool> pools;  // by queue family
+    std::vector<CapturedPass> passes;
+    std::vector<CapturedDrawResult> draws;
+    std::vector<std::string> not_analysed;
+    std::vector<std::string> labels;  // debug-utils labels open across command buffers
+    uint32_t submissions = 0;
+    double capture_ms = 0;           // the layer's extra time in the captured frame
+    VkDeviceSize counter_bytes = 0;  // the largest submission's counters
+};
+
+}  // namespace ds::layer
