@@ -18,6 +18,7 @@
 #include "capture/capture_diff.h"
 #include "capture/diff_report.h"
 #include "capture/image_writer.h"
+#include "capture/layer_diff.h"
 #include "capture/output_dir.h"
 #include "capture/report.h"
 #include "renderer/common/error.h"
@@ -50,8 +51,28 @@ void write_heat_map(const capture::OutputDir& dir, const capture::ImageDiff& ima
     capture::write_png_rgba8(path, image.width, image.height, capture::heat_map_rgba(image));
 }
 
+// Two layer captures (depthscope layer): their passes, draws and count images.
+int diff_layer(const Options& o) {
+    if (!capture::is_layer_capture(o.diff_a) || !capture::is_layer_capture(o.diff_b))
+        throw Error("diff: " + escaped(o.diff_a) + " and " + escaped(o.diff_b) +
+                    " are not both layer captures (depthscope layer) or both depthscope's own");
+    const capture::LayerDiff result = capture::diff_layer_captures(o.diff_a, o.diff_b);
+    std::string warning;
+    if (!o.out.empty()) {
+        capture::OutputDir dir(o.out);
+        capture::write_json(dir.staging_path("diff.json"), result.to_json());
+        warning = dir.commit();
+    }
+    std::fputs(capture::layer_diff_summary(result, o.diff_a, o.diff_b).c_str(), stdout);
+    std::fflush(stdout);
+    if (!warning.empty()) std::fprintf(stderr, "depthscope: warning: %s\n", warning.c_str());
+    return result.same() ? 0 : 1;
+}
+
 int diff(const Options& o) {
     if (!o.out.empty()) check_new_folder(o.out);
+    if (capture::is_layer_capture(o.diff_a) || capture::is_layer_capture(o.diff_b))
+        return diff_layer(o);
     // Both captures are read and checked whole before anything is compared or written.
     const capture::CaptureFolder a = capture::load_capture(o.diff_a);
     const capture::CaptureFolder b = capture::load_capture(o.diff_b);

@@ -117,6 +117,9 @@ void Replacement::read_back(uint32_t pass_base) {
     for (const std::string& n : recorder_->notes) fc_.not_analysed.push_back(n);
     for (size_t i = 0; i < plan_.passes.size(); ++i) {
         CapturedPass p{plan_.passes[i], plan_.pass_counted[i], fc_.submissions, {}, 0, 0};
+        if (p.summary.view_mask != 0 && p.summary.depth_format != VK_FORMAT_UNDEFINED)
+            fc_.not_analysed.push_back("pass " + std::to_string(fc_.passes.size()) +
+                                       ": multiview; its draws are not counted");
         if (p.counted) {
             p.pixel_width = p.summary.x + p.summary.width;
             p.pixel_height = p.summary.y + p.summary.height;

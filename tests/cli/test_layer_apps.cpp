@@ -78,6 +78,11 @@ TEST(LayerVkcube, ListsFramesAndCapturesFrameFiveLiveAndReplayed) {
     ASSERT_EQ(replay.exit_code, 0) << replay.err;
     const json b = json::parse(read_file(dir / "replay" / "report.json"));
     EXPECT_EQ(comparable(a), comparable(b));
+    // diff says so too: the same draws and count images.
+    const ProcessResult diff = run_depthscope("diff " + (dir / "live").string() + " " +
+                                              (dir / "replay").string());
+    EXPECT_EQ(diff.exit_code, 0) << diff.out << diff.err;
+    EXPECT_EQ(diff.out.rfind("same: 1 draws and 3 count images equal", 0), 0u) << diff.out;
 }
 
 TEST(LayerLauncher, RefusesBadInputWithOneLine) {
