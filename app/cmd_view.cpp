@@ -17,6 +17,7 @@
 #include "app/exit_code.h"
 #include "app/scene_load.h"
 #include "app/view_camera.h"
+#include "capture/layer_diff.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 #include "renderer/renderer.h"
@@ -284,6 +285,8 @@ bool display_available() {
 }
 
 int run_view(const Options& o) {
+    // A layer capture has no scene to render again: the read-only inspector.
+    if (!o.capture_in.empty() && capture::is_layer_capture(o.capture_in)) return run_layer_view(o);
     const ConfigFiles files = config_files();
     std::optional<OpenedCapture> opened;
     Start start;

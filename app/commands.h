@@ -15,6 +15,7 @@ int run_soak(const Options& options);  // bench --soak
 int run_pixel(const Options& options);
 int run_replay(const Options& options);
 int run_view(const Options& options);
+int run_layer_view(const Options& options);  // view --capture DIR of a layer capture
 int run_diff(const Options& options);  // 0 same, 1 differs, 2 error (its own one line)
 // 0, or with --fail-on 1 when a finding is at that level or above; 3 validation messages first
 int run_diagnose(const Options& options);

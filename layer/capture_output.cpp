@@ -124,7 +124,11 @@ void write_capture(DeviceData& d, const FrameCapture& fc, const std::string& out
          {{"capture_ms", fc.capture_ms},
           {"pipeline_build_ms", fc.pipelines.build_ms()},
           {"pipelines_built", fc.pipelines.all().size()},
-          {"counter_bytes", fc.counter_bytes}}},
+          {"counter_bytes", fc.counter_bytes},
+          // The application's pipeline and shader module creation so far: in the layers
+          // below, and with this layer's copies of their recipes (not armed: no counting copy).
+          {"creation_ms_below", double(d.creation_next_ns) / 1e6},
+          {"creation_ms_with_layer", double(d.creation_total_ns) / 1e6}}},
         {"passes", passes_json(fc, out)},
         {"draws", draws_json(fc)},
         {"pipelines", pipelines_json(fc, out)},

@@ -1,6 +1,7 @@
 // The objects a counting copy of a pipeline is built from: shader modules (their SPIR-V),
 // pipeline layouts, graphics pipelines (their recipes) and the application's object names;
 // and the one limit the layer takes from the application (a descriptor set slot).
+#include <chrono>
 #include <cstring>
 
 #include "layer/objects.h"
@@ -11,12 +12,30 @@ namespace {
 
 bool capturing() { return config().mode == Config::Mode::Capture; }
 
+using Clock = std::chrono::steady_clock;
+uint64_t ns_since(Clock::time_point t) {
+    return uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t).count());
+}
+
+// Times a creation call: the layers below, and the whole wrapper.
+struct CreationTimer {
+    DeviceData& d;
+    Clock::time_point start = Clock::now();
+    Clock::time_point next_start{};
+    void next_begins() { next_start = Clock::now(); }
+    void next_ends() { d.creation_next_ns += ns_since(next_start); }
+    ~CreationTimer() { d.creation_total_ns += ns_since(start); }
+};
+
 VKAPI_ATTR VkResult VKAPI_CALL CreateShaderModule(VkDevice device,
                                                   const VkShaderModuleCreateInfo* info,
                                                   const VkAllocationCallbacks* alloc,
                                                   VkShaderModule* module) {
     DeviceData& d = device_of(device);
+    CreationTimer timer{d};
+    timer.next_begins();
     const VkResult r = d.t.CreateShaderModule(device, info, alloc, module);
+    timer.next_ends();
     if (r != VK_SUCCESS || !capturing()) return r;
     auto code = std::make_shared<const std::vector<uint32_t>>(info->pCode,
                                                               info->pCode + info->codeSize / 4);
@@ -63,7 +82,10 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateGraphicsPipelines(VkDevice device, VkPipeli
                                                        const VkAllocationCallbacks* alloc,
                                                        VkPipeline* out) {
     DeviceData& d = device_of(device);
+    CreationTimer timer{d};
+    timer.next_begins();
     const VkResult r = d.t.CreateGraphicsPipelines(device, cache, n, infos, alloc, out);
+    timer.next_ends();
     if (r < 0 || !capturing()) return r;
     std::lock_guard lock(d.mutex);
     const auto code = [&d](VkShaderModule m) {

@@ -1,6 +1,7 @@
 #pragma once
 // The layer's records of the instances, devices and objects it has seen, found by the
 // loader's dispatch key (the first word of every dispatchable handle).
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -72,6 +73,9 @@ struct DeviceData {
     std::unordered_map<uint64_t, std::string> names;  // vkSetDebugUtilsObjectNameEXT
     bool has_swapchain = false;
     FrameTracker frames;
+    // Pipeline and shader module creation: time in the layers below and in total (ns), so
+    // the capture can state what copying the recipes costs.
+    std::atomic<uint64_t> creation_next_ns{0}, creation_total_ns{0};
 
     // Capture mode: what the layer changed at device creation and the device's facts.
     uint32_t counter_set = 0;          // the descriptor set slot the layer keeps (the last)

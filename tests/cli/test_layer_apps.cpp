@@ -83,6 +83,12 @@ TEST(LayerVkcube, ListsFramesAndCapturesFrameFiveLiveAndReplayed) {
                                               (dir / "replay").string());
     EXPECT_EQ(diff.exit_code, 0) << diff.out << diff.err;
     EXPECT_EQ(diff.out.rfind("same: 1 draws and 3 count images equal", 0), 0u) << diff.out;
+    // The inspector opens it read-only (no scene to render again) in a real window.
+    const ProcessResult view = under_xvfb(std::string(DS_EXECUTABLE) + " view --capture " +
+                                          (dir / "live").string() + " --frames 10");
+    EXPECT_EQ(view.exit_code, 0) << view.err;
+    EXPECT_NE(view.out.find("layer capture"), std::string::npos) << view.out;
+    EXPECT_NE(view.out.find("10 frames"), std::string::npos) << view.out;
 }
 
 TEST(LayerLauncher, RefusesBadInputWithOneLine) {
