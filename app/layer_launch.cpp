@@ -33,7 +33,10 @@ std::vector<std::string> child_environment(const std::map<std::string, std::stri
         const std::string old = vars.count(name) ? vars[name] : "";
         vars[name] = old.empty() ? value : value + ":" + old;
     };
-    prepend("VK_ADD_LAYER_PATH", layer_manifest_dir());
+    // VK_LAYER_PATH, where set, replaces the loader's search (and the Debian 1.3.239 loader
+    // then ignores VK_ADD_LAYER_PATH): the layer's folder joins whichever is in use.
+    const bool replaced = vars.count("VK_LAYER_PATH") && !vars["VK_LAYER_PATH"].empty();
+    prepend(replaced ? "VK_LAYER_PATH" : "VK_ADD_LAYER_PATH", layer_manifest_dir());
     prepend("VK_INSTANCE_LAYERS", kLayerName);
     for (const auto& [k, v] : env) vars[k] = v;
     std::vector<std::string> out;

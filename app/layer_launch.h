@@ -1,6 +1,7 @@
 #pragma once
 // Runs an application with depthscope's Vulkan layer enabled for that process only: the layer's
-// manifest folder is added to the loader's search (VK_ADD_LAYER_PATH), the layer is enabled
+// manifest folder is added to the loader's search (VK_ADD_LAYER_PATH, or VK_LAYER_PATH where
+// that is set), the layer is enabled
 // first, nearest the application (VK_INSTANCE_LAYERS, before any the environment names), and
 // the layer's own settings travel as DEPTHSCOPE_LAYER_* variables (layer/config.h).
 #include <map>

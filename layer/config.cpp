@@ -23,6 +23,7 @@ bool parse_frame(const std::string& text, uint64_t& frame) {
 
 Config Config::from_environment() {
     Config c;
+    c.log = env("DEPTHSCOPE_LAYER_LOG") == "1";
     c.out = env("DEPTHSCOPE_LAYER_OUT");
     if (c.out.empty()) return c;
     const std::string mode = env("DEPTHSCOPE_LAYER_MODE");

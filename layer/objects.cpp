@@ -225,6 +225,9 @@ PFN_vkVoidFunction object_function(const char* name) {
 
 void device_created(DeviceData& device) {
     const Config& c = config();
+    DS_LAYER_LOG("device %s created (mode %d, capture %s)", device.properties.deviceName,
+                 int(c.mode), device.capture_refused.empty() ? "possible"
+                                                             : device.capture_refused.c_str());
     if (c.mode != Config::Mode::Passive) {
         std::string error;
         if (!device.frames.open_list(c.out, error))

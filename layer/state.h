@@ -101,7 +101,5 @@ DeviceData& device_of(Handle h) {
     return *device_data(dispatch_key(h));
 }
 
-// The layer's settings, read once from the environment (config.h).
-const Config& config();
 
 }  // namespace ds::layer

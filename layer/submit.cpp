@@ -13,11 +13,14 @@ namespace {
 
 std::vector<PassSummary> summarize_all(DeviceData& d, const std::vector<VkCommandBuffer>& cbs) {
     std::vector<PassSummary> out;
-    for (VkCommandBuffer cb : cbs)
-        if (const CommandBufferState* s = d.state(cb)) {
-            auto passes = summarize(d, *s);
-            out.insert(out.end(), passes.begin(), passes.end());
-        }
+    for (VkCommandBuffer cb : cbs) {
+        const CommandBufferState* s = d.state(cb);
+        DS_LAYER_LOG("  command buffer %p: %s, %zu commands", static_cast<void*>(cb),
+                     s ? "known" : "unknown", s ? s->commands.size() : size_t(0));
+        if (!s) continue;
+        auto passes = summarize(d, *s);
+        out.insert(out.end(), passes.begin(), passes.end());
+    }
     return out;
 }
 
@@ -28,6 +31,8 @@ bool note_submission(DeviceData& d, const std::vector<VkCommandBuffer>& cbs) {
     if (c.mode == Config::Mode::Passive) return false;
     const auto passes = summarize_all(d, cbs);
     const uint64_t frame = d.frames.submitted(passes, d.has_swapchain);
+    DS_LAYER_LOG("submission of %zu command buffers: %zu passes, depth %d, frame %llu", cbs.size(),
+                 passes.size(), int(has_depth_pass(passes)), (unsigned long long)frame);
     if (c.mode != Config::Mode::Capture || d.captured || frame != c.frame ||
         !has_depth_pass(passes))
         return false;
