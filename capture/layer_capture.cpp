@@ -21,7 +21,7 @@ namespace {
 
 using nlohmann::json;
 
-json read_json(const std::filesystem::path& file) {
+json read_layer_json(const std::filesystem::path& file) {
     std::ifstream in(file);
     if (!in) throw Error(file.string() + ": cannot be read");
     try {
@@ -31,7 +31,7 @@ json read_json(const std::filesystem::path& file) {
     }
 }
 
-std::vector<uint32_t> read_pixels(const std::filesystem::path& file, size_t words) {
+std::vector<uint32_t> read_layer_pixels(const std::filesystem::path& file, size_t words) {
     std::vector<uint32_t> out(words);
     std::ifstream in(file, std::ios::binary);
     in.read(reinterpret_cast<char*>(out.data()), std::streamsize(words * 4));
@@ -40,7 +40,7 @@ std::vector<uint32_t> read_pixels(const std::filesystem::path& file, size_t word
 }
 
 // One count image of a pass: PNG as the heat map over 0..max, EXR raw.
-json write_count_image(const std::filesystem::path& dir, const std::string& stem,
+json write_layer_count_image(const std::filesystem::path& dir, const std::string& stem,
                        uint32_t width, uint32_t height, const std::vector<uint32_t>& px,
                        uint32_t component) {
     std::vector<uint32_t> counts(size_t(width) * height);
@@ -66,16 +66,16 @@ json write_count_image(const std::filesystem::path& dir, const std::string& stem
             {"total", total}};
 }
 
-std::string pass_name(const json& pass) {
+std::string layer_pass_name(const json& pass) {
     const std::string label = pass.value("label", "");
     if (!label.empty()) return label;
     return "pass" + std::to_string(pass.at("index").get<int>());
 }
 
-json pass_entry(const std::filesystem::path& layer_dir, const std::filesystem::path& out_dir,
+json layer_pass_entry(const std::filesystem::path& layer_dir, const std::filesystem::path& out_dir,
                 const json& pass, std::map<std::string, int>& stems) {
     json entry = pass;
-    entry["name"] = pass_name(pass);
+    entry["name"] = layer_pass_name(pass);
     const int fmt = pass.at("depth_format").get<int>();
     entry["depth_format"] = fmt ? format::name(VkFormat(fmt)) : "none";
     entry.erase("pixels");
@@ -84,12 +84,12 @@ json pass_entry(const std::filesystem::path& layer_dir, const std::filesystem::p
     if (stems[stem]++ > 0) stem += "_" + std::to_string(pass.at("index").get<int>());
     const json& px = pass.at("pixels");
     const uint32_t w = px.at("width"), h = px.at("height");
-    const auto pixels = read_pixels(layer_dir / px.at("file").get<std::string>(), size_t(w) * h * 4);
+    const auto pixels = read_layer_pixels(layer_dir / px.at("file").get<std::string>(), size_t(w) * h * 4);
     const std::filesystem::path dir = out_dir / "resources";
     std::filesystem::create_directories(dir);
-    entry["images"] = {{"shaded", write_count_image(dir, stem + "_shaded", w, h, pixels, 0)},
-                       {"discarded", write_count_image(dir, stem + "_discarded", w, h, pixels, 1)},
-                       {"rasterized", write_count_image(dir, stem + "_rasterized", w, h, pixels, 2)}};
+    entry["images"] = {{"shaded", write_layer_count_image(dir, stem + "_shaded", w, h, pixels, 0)},
+                       {"discarded", write_layer_count_image(dir, stem + "_discarded", w, h, pixels, 1)},
+                       {"rasterized", write_layer_count_image(dir, stem + "_rasterized", w, h, pixels, 2)}};
     return entry;
 }
 
@@ -105,7 +105,7 @@ std::string layer_draw_name(const json& draw, const std::string& pass) {
 json write_layer_capture(const std::filesystem::path& layer_dir,
                          const std::filesystem::path& out_dir,
                          const std::vector<std::string>& command) {
-    const json raw = read_json(layer_dir / "capture.json");
+    const json raw = read_layer_json(layer_dir / "capture.json");
     json report = {{"tool", "depthscope"}, {"version", ds::version()}, {"source", "layer"}};
     for (const char* key : {"device", "application", "frame", "delimiter", "submissions",
                             "counter_set", "cost", "pipelines", "not_analysed"})
@@ -113,7 +113,7 @@ json write_layer_capture(const std::filesystem::path& layer_dir,
     report["command"] = command;
     std::map<std::string, int> stems;
     json passes = json::array();
-    for (const json& p : raw.at("passes")) passes.push_back(pass_entry(layer_dir, out_dir, p, stems));
+    for (const json& p : raw.at("passes")) passes.push_back(layer_pass_entry(layer_dir, out_dir, p, stems));
     json draws = json::array();
     for (json d : raw.at("draws")) {
         d["name"] = layer_draw_name(d, passes.at(d.at("pass").get<size_t>()).at("name"));

@@ -11,7 +11,7 @@ namespace {
 
 using nlohmann::json;
 
-json read_report(const std::filesystem::path& dir) {
+json read_layer_report(const std::filesystem::path& dir) {
     std::ifstream in(dir / "report.json");
     if (!in) throw Error((dir / "report.json").string() + ": cannot be read");
     try {
@@ -21,14 +21,14 @@ json read_report(const std::filesystem::path& dir) {
     }
 }
 
-std::string pass_shape(const json& p) {
+std::string layer_pass_shape(const json& p) {
     return p.value("name", "") + " " + std::to_string(p.value("width", 0)) + "x" +
            std::to_string(p.value("height", 0)) + " " + p.value("depth_format", "") + " x" +
            std::to_string(p.value("samples", 1)) + ", " + std::to_string(p.value("draws", 0)) +
            " draws";
 }
 
-void diff_draw(const json& a, const json& b, const std::string& pass, LayerDiff& out) {
+void diff_layer_draw(const json& a, const json& b, const std::string& pass, LayerDiff& out) {
     const std::string name = pass + " / " + a.value("name", "?");
     bool differs = false;
     for (const char* key : {"name", "kind", "count", "instances", "not_analysed"})
@@ -48,7 +48,7 @@ void diff_draw(const json& a, const json& b, const std::string& pass, LayerDiff&
     out.differing_draws += differs;
 }
 
-void diff_images(const std::filesystem::path& da, const std::filesystem::path& db,
+void diff_layer_images(const std::filesystem::path& da, const std::filesystem::path& db,
                  const json& pa, const json& pb, LayerDiff& out) {
     if (!pa.contains("images")) return;
     for (const auto& [kind, image] : pa.at("images").items()) {
@@ -80,12 +80,12 @@ bool is_layer_capture(const std::filesystem::path& dir) {
 }
 
 LayerDiff diff_layer_captures(const std::filesystem::path& da, const std::filesystem::path& db) {
-    const json a = read_report(da), b = read_report(db);
+    const json a = read_layer_report(da), b = read_layer_report(db);
     LayerDiff out;
     const json &pa = a.at("passes"), &pb = b.at("passes");
     for (size_t i = 0; i < std::max(pa.size(), pb.size()); ++i) {
-        const std::string sa = i < pa.size() ? pass_shape(pa[i]) : "none";
-        const std::string sb = i < pb.size() ? pass_shape(pb[i]) : "none";
+        const std::string sa = i < pa.size() ? layer_pass_shape(pa[i]) : "none";
+        const std::string sb = i < pb.size() ? layer_pass_shape(pb[i]) : "none";
         if (sa != sb) {
             out.comparable = false;
             out.differences.push_back("pass " + std::to_string(i) + ": " + sa + " -> " + sb);
@@ -95,10 +95,10 @@ LayerDiff diff_layer_captures(const std::filesystem::path& da, const std::filesy
     const json &wa = a.at("draws"), &wb = b.at("draws");
     for (size_t i = 0; i < wa.size() && i < wb.size(); ++i) {
         const std::string pass = pa.at(wa[i].at("pass").get<size_t>()).value("name", "");
-        diff_draw(wa[i], wb[i], pass, out);
+        diff_layer_draw(wa[i], wb[i], pass, out);
         ++out.draws;
     }
-    for (size_t i = 0; i < pa.size(); ++i) diff_images(da, db, pa[i], pb[i], out);
+    for (size_t i = 0; i < pa.size(); ++i) diff_layer_images(da, db, pa[i], pb[i], out);
     return out;
 }
 

@@ -13,7 +13,7 @@ namespace ds::capture {
 
 namespace {
 
-LayerFrame parse_frame(const nlohmann::json& j) {
+LayerFrame parse_layer_frame(const nlohmann::json& j) {
     LayerFrame f;
     f.number = j.at("frame").get<uint64_t>();
     f.by_present = j.at("delimiter").get<std::string>() == "present";
@@ -27,21 +27,21 @@ LayerFrame parse_frame(const nlohmann::json& j) {
     return f;
 }
 
-std::string plural(uint64_t n, const char* one, const char* many) {
+std::string layer_plural(uint64_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-std::string pass_line(const LayerPass& p) {
+std::string layer_pass_line(const LayerPass& p) {
     std::string line = "  " + std::string(p.dynamic ? "dynamic rendering" : "render pass");
     if (!p.dynamic && p.subpass > 0) line += " subpass " + std::to_string(p.subpass);
     if (!p.label.empty()) line += " \"" + p.label + "\"";
     line += " " + std::to_string(p.width) + "x" + std::to_string(p.height);
     line += p.depth_format ? " depth " + format::name(VkFormat(p.depth_format)) : " no depth";
     if (p.samples > 1) line += " x" + std::to_string(p.samples);
-    return line + ": " + plural(p.draws, "draw", "draws");
+    return line + ": " + layer_plural(p.draws, "draw", "draws");
 }
 
-std::string frame_head(const LayerFrame& first, const LayerFrame& last) {
+std::string layer_frame_head(const LayerFrame& first, const LayerFrame& last) {
     const char* unit = first.by_present ? "frame" : "submission";
     std::string head = std::string(unit) + " " + std::to_string(first.number);
     if (last.number != first.number)
@@ -49,9 +49,9 @@ std::string frame_head(const LayerFrame& first, const LayerFrame& last) {
                std::to_string(last.number) + " (each)";
     uint32_t draws = 0;
     for (const LayerPass& p : first.passes) draws += p.draws;
-    head += ": " + plural(first.passes.size(), "pass", "passes") + ", " +
-            plural(draws, "draw", "draws");
-    if (first.by_present) head += ", " + plural(first.submissions, "submission", "submissions");
+    head += ": " + layer_plural(first.passes.size(), "pass", "passes") + ", " +
+            layer_plural(draws, "draw", "draws");
+    if (first.by_present) head += ", " + layer_plural(first.submissions, "submission", "submissions");
     if (first.by_present && !last.presented) head += " (not presented: the application ended)";
     return head;
 }
@@ -64,7 +64,7 @@ std::vector<LayerFrame> read_layer_frames(const std::filesystem::path& file) {
     std::string line;
     for (size_t n = 1; std::getline(in, line); ++n) {
         try {
-            frames.push_back(parse_frame(nlohmann::json::parse(line)));
+            frames.push_back(parse_layer_frame(nlohmann::json::parse(line)));
         } catch (const nlohmann::json::exception& e) {
             throw Error(file.string() + ":" + std::to_string(n) + ": " + e.what());
         }
@@ -80,8 +80,8 @@ std::vector<std::string> list_lines(const std::vector<LayerFrame>& frames) {
                frames[j + 1].submissions == frames[i].submissions &&
                frames[j + 1].presented == frames[i].presented)
             ++j;
-        lines.push_back(frame_head(frames[i], frames[j]));
-        for (const LayerPass& p : frames[i].passes) lines.push_back(pass_line(p));
+        lines.push_back(layer_frame_head(frames[i], frames[j]));
+        for (const LayerPass& p : frames[i].passes) lines.push_back(layer_pass_line(p));
         i = j + 1;
     }
     return lines;

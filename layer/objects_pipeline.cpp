@@ -12,17 +12,18 @@ namespace {
 
 bool capturing() { return config().mode == Config::Mode::Capture; }
 
-using Clock = std::chrono::steady_clock;
-uint64_t ns_since(Clock::time_point t) {
-    return uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t).count());
+using CreationClock = std::chrono::steady_clock;
+uint64_t ns_since(CreationClock::time_point t) {
+    return uint64_t(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(CreationClock::now() - t).count());
 }
 
 // Times a creation call: the layers below, and the whole wrapper.
 struct CreationTimer {
     DeviceData& d;
-    Clock::time_point start = Clock::now();
-    Clock::time_point next_start{};
-    void next_begins() { next_start = Clock::now(); }
+    CreationClock::time_point start = CreationClock::now();
+    CreationClock::time_point next_start{};
+    void next_begins() { next_start = CreationClock::now(); }
     void next_ends() { d.creation_next_ns += ns_since(next_start); }
     ~CreationTimer() { d.creation_total_ns += ns_since(start); }
 };
