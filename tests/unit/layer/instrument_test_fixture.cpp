@@ -128,11 +128,12 @@ std::vector<uint32_t> InstrumentTest::compile(const std::string& source, ds::sha
 }
 
 std::vector<uint32_t> InstrumentTest::compile_for(const std::string& source, const std::string& env,
-                                                  const std::string& args) {
-    write("t.frag", source);
+                                                  const std::string& args,
+                                                  const std::string& file) {
+    write(file, source);
     const auto out = dir_ / "t.spv", log = dir_ / "glslang.log";
     const std::string command = "glslangValidator -V --target-env " + env + " " + args + " -o '" +
-                                out.string() + "' '" + (root() / "t.frag").string() + "' > '" +
+                                out.string() + "' '" + (root() / file).string() + "' > '" +
                                 log.string() + "' 2>&1";
     if (std::system(command.c_str()) != 0) {
         std::ifstream in(log);
@@ -147,17 +148,20 @@ InstrumentResult InstrumentTest::instrument(std::span<const uint32_t> spirv,
     EXPECT_EQ(validation_errors(spirv), "") << "the input is not valid";
     InstrumentResult r = instrument_fragment(spirv, entry, b);
     EXPECT_EQ(validation_errors(r.spirv), "");
-    if (const char* dump = std::getenv("DS_INSTRUMENT_DUMP")) {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::filesystem::create_directories(dump);
-        std::ofstream(
-            std::filesystem::path(dump) / (std::string(info->test_suite_name()) + "." +
-                                           info->name() + "." + std::to_string(dumped_++) + ".spv"),
-            std::ios::binary)
-            .write(reinterpret_cast<const char*>(r.spirv.data()),
-                   std::streamsize(r.spirv.size() * 4));
-    }
+    dump(r.spirv);
     return r;
+}
+
+void InstrumentTest::dump(std::span<const uint32_t> spirv) {
+    const char* dir = std::getenv("DS_INSTRUMENT_DUMP");
+    if (!dir) return;
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::filesystem::create_directories(dir);
+    std::ofstream(
+        std::filesystem::path(dir) / (std::string(info->test_suite_name()) + "." + info->name() +
+                                      "." + std::to_string(dumped_++) + ".spv"),
+        std::ios::binary)
+        .write(reinterpret_cast<const char*>(spirv.data()), std::streamsize(spirv.size() * 4));
 }
 
 std::string InstrumentTest::fragment(const std::string& decl, const std::string& body) {

@@ -1,9 +1,9 @@
 #pragma once
 // Fragment shaders compiled here (the project's compiler for SPIR-V 1.5, glslangValidator for
 // the other versions, SPIRV-Tools' assembler for hand-written modules), rewritten by
-// ds::layer::instrument_fragment and checked with SPIRV-Tools' validator in the Vulkan
-// environment of each module's version. DS_INSTRUMENT_DUMP=DIR writes every rewritten module
-// to DIR (for spirv-val / spirv-dis by hand).
+// ds::layer::instrument_fragment (or made by ds::layer::measurement_fragment) and checked with
+// SPIRV-Tools' validator in the Vulkan environment of each module's version.
+// DS_INSTRUMENT_DUMP=DIR writes every module made to DIR (for spirv-val / spirv-dis by hand).
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -45,14 +45,18 @@ class InstrumentTest : public ds::shader::testing::ShaderTest {
     // The project's compiler: SPIR-V 1.5.
     std::vector<uint32_t> compile(const std::string& source,
                                   ds::shader::Stage stage = ds::shader::Stage::Fragment);
-    // glslangValidator --target-env `env` (vulkan1.0 .. vulkan1.3; extra arguments in `args`).
+    // glslangValidator --target-env `env` (vulkan1.0 .. vulkan1.3; extra arguments in `args`);
+    // the stage is `file`'s extension (t.vert, t.tese, t.geom...).
     std::vector<uint32_t> compile_for(const std::string& source, const std::string& env,
-                                      const std::string& args = "");
+                                      const std::string& args = "",
+                                      const std::string& file = "t.frag");
     // instrument_fragment, with the output validated (a failure is reported, not thrown).
     InstrumentResult instrument(std::span<const uint32_t> spirv, const CounterBindings& b = {},
                                 const std::string& entry = "main");
     // `body` inside main(), `decl` before it; one colour output.
     static std::string fragment(const std::string& decl, const std::string& body);
+    // With DS_INSTRUMENT_DUMP=DIR: writes `spirv` to DIR/<suite>.<test>.<n>.spv.
+    void dump(std::span<const uint32_t> spirv);
 
   private:
     int dumped_ = 0;  // DS_INSTRUMENT_DUMP files: <suite>.<test>.<n>.spv
