@@ -96,6 +96,13 @@ json pipelines_json(const FrameCapture& fc, const std::filesystem::path& out) {
                        std::streamsize(p.instrumented.size() * 4));
             j["instrumented_spirv"] = file;
         }
+        if (!p.measure_spirv.empty()) {
+            const std::string file = "shaders/" + hex(uint64_t(app)) + ".measure.spv";
+            std::ofstream(out / file, std::ios::binary)
+                .write(reinterpret_cast<const char*>(p.measure_spirv.data()),
+                       std::streamsize(p.measure_spirv.size() * 4));
+            j["measurement_spirv"] = file;
+        }
         pipelines.push_back(j);
     }
     return pipelines;

@@ -3,27 +3,13 @@
 #include <chrono>
 #include <span>
 
-#include "layer/count_rasterized.h"  // generated (layer/shaders)
 #include "layer/spirv/instrument.h"
 #include "layer/typed.h"
 #include "renderer/spirv/spirv_facts.h"
 
 namespace ds::layer {
 
-void move_to_set(std::vector<uint32_t>& spirv, uint32_t set) {
-    constexpr uint32_t kOpDecorate = 71, kDescriptorSet = 34;
-    for (size_t at = 5; at < spirv.size();) {
-        const uint32_t count = spirv[at] >> 16;
-        if (count == 0) break;
-        if ((spirv[at] & 0xffff) == kOpDecorate && count >= 4 && spirv[at + 2] == kDescriptorSet)
-            spirv[at + 3] = set;
-        at += count;
-    }
-}
-
-CountingPipelines::CountingPipelines(DeviceData& d)
-    : d_(d), measure_code_(std::begin(kCountRasterizedSpirv), std::end(kCountRasterizedSpirv)) {
-    move_to_set(measure_code_, d.counter_set);
+CountingPipelines::CountingPipelines(DeviceData& d) : d_(d) {
     VkDescriptorSetLayoutBinding bindings[2] = {};
     for (uint32_t i = 0; i < 2; ++i) {
         bindings[i].binding = i;

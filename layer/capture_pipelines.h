@@ -3,7 +3,7 @@
 // captured: `counting` is the application's pipeline with its fragment shader instrumented
 // (layer/spirv/instrument.h) and a layout extended to the layer's descriptor set slot;
 // `measure` draws the same geometry with the depth and stencil tests off, no colour written,
-// and the layer's rasterized-count shader. A pipeline without a fragment shader counts as its
+// and a fragment shader generated to count what it rasterizes (layer/spirv/measure.h). A pipeline without a fragment shader counts as its
 // own `counting` copy (it shades nothing).
 #include <map>
 #include <string>
@@ -29,7 +29,8 @@ struct CountingPipeline {
     // Depth and stencil switches the application sets dynamically (restored after `measure`).
     bool dynamic_depth_test = false, dynamic_depth_write = false;
     bool dynamic_stencil_test = false, dynamic_depth_bounds = false;
-    std::vector<uint32_t> instrumented;  // the rewritten fragment SPIR-V (for spirv-val)
+    std::vector<uint32_t> instrumented;   // the rewritten fragment SPIR-V (for spirv-val)
+    std::vector<uint32_t> measure_spirv;  // the measurement draw's fragment shader
 };
 
 class CountingPipelines {
@@ -54,14 +55,10 @@ class CountingPipelines {
     DeviceData& d_;
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkDescriptorSetLayout empty_layout_ = VK_NULL_HANDLE;
-    std::vector<uint32_t> measure_code_;
     std::vector<VkShaderModule> modules_;
     std::map<VkPipelineLayout, std::pair<VkPipelineLayout, uint32_t>> layouts_;
     std::map<VkPipeline, CountingPipeline> pipelines_;
     double build_ms_ = 0;
 };
-
-// Sets every DescriptorSet decoration of `spirv` to `set`.
-void move_to_set(std::vector<uint32_t>& spirv, uint32_t set);
 
 }  // namespace ds::layer

@@ -1,6 +1,7 @@
 // Building one pipeline's counting and measurement copies from its recipe.
 #include "layer/capture_pipelines.h"
 #include "layer/spirv/instrument.h"
+#include "layer/spirv/measure.h"
 #include "layer/typed.h"
 #include "renderer/common/error.h"
 #include "renderer/spirv/spirv_facts.h"
@@ -52,13 +53,43 @@ void CountingPipelines::build(CountingPipeline& p, PipelineRecipe r) {
         p.why = "the counting copy of the pipeline failed to build";
 }
 
+namespace {
+
+// The last stage before rasterization (geometry, else tessellation evaluation, else vertex):
+// the measurement shader mirrors its outputs.
+const StageRecipe* last_geometry_stage(const PipelineRecipe& r) {
+    for (VkShaderStageFlagBits stage :
+         {VK_SHADER_STAGE_GEOMETRY_BIT, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT,
+          VK_SHADER_STAGE_VERTEX_BIT})
+        for (const StageRecipe& s : r.stages)
+            if (s.stage == stage) return &s;
+    return nullptr;
+}
+
+}  // namespace
+
 void CountingPipelines::build_measure(CountingPipeline& p, PipelineRecipe& original) {
     PipelineRecipe r = original;
     std::erase_if(r.stages, [](const StageRecipe& s) {
         return s.stage == VK_SHADER_STAGE_FRAGMENT_BIT;
     });
-    StageRecipe frag{VK_SHADER_STAGE_FRAGMENT_BIT, module(measure_code_), nullptr, "main", {}, {},
-                     {}};
+    const StageRecipe* last = last_geometry_stage(r);
+    if (!last) {
+        p.why = "no vertex stage (mesh shaders are not analysed)";
+        return;
+    }
+    StageRecipe frag = *last;  // its specialization constants size the mirrored arrays
+    frag.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    frag.entry = "main";
+    try {
+        p.measure_spirv = measurement_fragment(*last->code, last->entry,
+                                               CounterBindings{d_.counter_set, 0, 1});
+    } catch (const Error& e) {
+        p.why = std::string("the measurement shader: ") + e.what();
+        return;
+    }
+    frag.module = module(p.measure_spirv);
+    frag.code = nullptr;
     r.stages.push_back(frag);
     r.layout = p.layout;
     if (r.has_depth_stencil) {

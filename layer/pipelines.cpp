@@ -160,7 +160,8 @@ bool PipelineRecipe::is_dynamic(VkDynamicState s) const {
     return false;
 }
 
-const VkGraphicsPipelineCreateInfo& PipelineRecipe::info() {
+// The stage infos and the state structures that point into this recipe.
+void PipelineRecipe::build_pointers() {
     Built& b = built;
     b.stages.clear();
     for (StageRecipe& s : stages) {
@@ -203,7 +204,11 @@ const VkGraphicsPipelineCreateInfo& PipelineRecipe::info() {
     b.dynamic.pDynamicStates = dynamic.data();
     rendering.pColorAttachmentFormats = color_formats.empty() ? nullptr : color_formats.data();
     rendering.pNext = nullptr;
+}
 
+const VkGraphicsPipelineCreateInfo& PipelineRecipe::info() {
+    build_pointers();
+    Built& b = built;
     VkGraphicsPipelineCreateInfo& i = b.info;
     i = typed<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
     i.pNext = has_rendering ? &rendering : nullptr;

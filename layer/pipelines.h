@@ -67,6 +67,9 @@ struct PipelineRecipe {
     const StageRecipe* fragment() const;
     bool is_dynamic(VkDynamicState s) const;
     const VkGraphicsPipelineCreateInfo& info();
+
+  private:
+    void build_pointers();
 };
 
 // Copies `in`; returns null with `why` set when the layer cannot (an unknown extension
