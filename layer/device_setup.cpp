@@ -1,5 +1,6 @@
 #include "layer/device_setup.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "layer/extension_commands.h"
@@ -21,6 +22,34 @@ std::string unrecorded_extension(const VkDeviceCreateInfo& info) {
 
 }  // namespace
 
+// The counters are StorageBuffer-class variables: a device created for Vulkan 1.0 needs
+// VK_KHR_storage_buffer_storage_class for them (1.1 made it core).
+bool DeviceCreatePatch::enable_storage_buffer_class(InstanceData& instance,
+                                                    VkPhysicalDevice physical,
+                                                    const VkDeviceCreateInfo& info) {
+    constexpr const char* kName = VK_KHR_STORAGE_BUFFER_STORAGE_CLASS_EXTENSION_NAME;
+    VkPhysicalDeviceProperties props{};
+    instance.t.GetPhysicalDeviceProperties(physical, &props);
+    if (std::min(instance.api_version, props.apiVersion) >= VK_API_VERSION_1_1) return true;
+    extensions_.assign(info.ppEnabledExtensionNames,
+                       info.ppEnabledExtensionNames + info.enabledExtensionCount);
+    for (const char* e : extensions_)
+        if (std::strcmp(e, kName) == 0) return true;
+    uint32_t n = 0;
+    instance.t.EnumerateDeviceExtensionProperties(physical, nullptr, &n, nullptr);
+    std::vector<VkExtensionProperties> available(n);
+    instance.t.EnumerateDeviceExtensionProperties(physical, nullptr, &n, available.data());
+    for (const VkExtensionProperties& e : available)
+        if (std::strcmp(e.extensionName, kName) == 0) {
+            extensions_.push_back(kName);
+            info_.enabledExtensionCount = uint32_t(extensions_.size());
+            info_.ppEnabledExtensionNames = extensions_.data();
+            return true;
+        }
+    refused_ = std::string("a Vulkan 1.0 device without ") + kName;
+    return false;
+}
+
 DeviceCreatePatch::DeviceCreatePatch(InstanceData& instance, VkPhysicalDevice physical,
                                      const VkDeviceCreateInfo& info)
     : info_(info) {
@@ -37,7 +66,7 @@ DeviceCreatePatch::DeviceCreatePatch(InstanceData& instance, VkPhysicalDevice ph
         refused_ = "the device binds fewer than 2 descriptor sets";
     else if (const std::string ext = unrecorded_extension(info); !ext.empty())
         refused_ = "the application enables " + ext + ", a command the layer does not record";
-    if (!refused_.empty()) return;
+    if (!refused_.empty() || !enable_storage_buffer_class(instance, physical, info)) return;
     for (auto* s = static_cast<const VkBaseInStructure*>(info.pNext); s; s = s->pNext)
         if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2)
             chained_ = reinterpret_cast<VkPhysicalDeviceFeatures2*>(const_cast<VkBaseInStructure*>(s));

@@ -1,10 +1,12 @@
 #pragma once
 // Capture mode's changes at device creation: the two features counting needs
 // (fragmentStoresAndAtomics for the counters, occlusionQueryPrecise for samples passed) are
-// switched on where the device has them, and the device's facts are noted. A device that
+// switched on where the device has them, and on a Vulkan 1.0 device the extension the
+// counters' SPIR-V needs (VK_KHR_storage_buffer_storage_class), and the device's facts are noted. A device that
 // cannot be captured (a feature missing, no spare descriptor set, an enabled extension with a
 // command the layer does not record) keeps the application's create info exactly and says why.
 #include <string>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -24,7 +26,11 @@ class DeviceCreatePatch {
     const std::string& refused() const { return refused_; }
 
   private:
+    bool enable_storage_buffer_class(InstanceData& instance, VkPhysicalDevice physical,
+                                     const VkDeviceCreateInfo& info);
+
     VkDeviceCreateInfo info_;
+    std::vector<const char*> extensions_;  // the application's, and one the layer needs
     VkPhysicalDeviceFeatures features_{};
     VkPhysicalDeviceFeatures2* chained_ = nullptr;  // the application's, changed in place
     VkPhysicalDeviceFeatures chained_before_{};

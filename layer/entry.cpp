@@ -39,6 +39,8 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateInstance(const VkInstanceCreateInfo* info,
     data->t.load(*instance, next);
     if (info->pApplicationInfo && info->pApplicationInfo->pApplicationName)
         data->application = info->pApplicationInfo->pApplicationName;
+    if (info->pApplicationInfo && info->pApplicationInfo->apiVersion)
+        data->api_version = info->pApplicationInfo->apiVersion;
     return r;
 }
 

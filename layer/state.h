@@ -31,6 +31,7 @@ struct InstanceData {
     VkInstance instance = VK_NULL_HANDLE;
     InstanceTable t;
     std::string application;  // VkApplicationInfo's name, if any
+    uint32_t api_version = VK_API_VERSION_1_0;  // VkApplicationInfo's (the device's at most)
 };
 
 struct SubpassInfo {

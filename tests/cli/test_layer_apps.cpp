@@ -59,9 +59,12 @@ TEST(LayerVkcube, ListsFramesAndCapturesFrameFiveLiveAndReplayed) {
         gfxr.string() + " GFXRECON_CAPTURE_FILE_TIMESTAMP=false vkcube --c 8");
     ASSERT_EQ(record.exit_code, 0) << record.err;
     ASSERT_TRUE(std::filesystem::exists(gfxr)) << record.err;
-    const ProcessResult live =
-        under_xvfb(layer("--frame 5 --out " + (dir / "live").string() + " -- vkcube --c 8"));
+    // vkcube --validate: the validation layer after depthscope's; vkcube prints each message
+    // ("ERROR : VALIDATION - …"), and the layer must add none.
+    const ProcessResult live = under_xvfb(
+        layer("--frame 5 --out " + (dir / "live").string() + " -- vkcube --validate --c 8"));
     ASSERT_EQ(live.exit_code, 0) << live.err;
+    EXPECT_EQ((live.out + live.err).find("VALIDATION"), std::string::npos) << live.out << live.err;
     const json a = json::parse(read_file(dir / "live" / "report.json"));
     ASSERT_EQ(a.at("draws").size(), 1u);
     const json& draw = a.at("draws")[0];
