@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <cctype>
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -11,9 +10,7 @@
 #include "app/commands.h"
 #include "app/layer_launch.h"
 #include "capture/layer_capture.h"
-#include "capture/layer_capture.h"
 #include "capture/layer_frames.h"
-#include "capture/output_dir.h"
 #include "capture/output_dir.h"
 #include "renderer/common/error.h"
 
@@ -91,11 +88,11 @@ int run_layer_capture(const Options& o) {
             : std::filesystem::path(o.out);
     capture::OutputDir out(out_path);
     TempDir tmp;
-    const int code = run_with_layer(
-        o.layer_app, {{"DEPTHSCOPE_LAYER_OUT", tmp.path().string()},
-                      {"DEPTHSCOPE_LAYER_MODE", "capture"},
-                      {"DEPTHSCOPE_LAYER_FRAME", std::to_string(o.layer_frame)},
-                      {"DEPTHSCOPE_LAYER_SETTINGS", settings_text(o.sets)}});
+    const int code =
+        run_with_layer(o.layer_app, {{"DEPTHSCOPE_LAYER_OUT", tmp.path().string()},
+                                     {"DEPTHSCOPE_LAYER_MODE", "capture"},
+                                     {"DEPTHSCOPE_LAYER_FRAME", std::to_string(o.layer_frame)},
+                                     {"DEPTHSCOPE_LAYER_SETTINGS", settings_text(o.sets)}});
     if (!std::filesystem::exists(tmp.path() / "capture.json"))
         throw Error(missing_frame(o, tmp.path() / "frames.jsonl"));
     capture::write_layer_capture(tmp.path(), out.staging_dir(), o.layer_app);

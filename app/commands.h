@@ -16,7 +16,7 @@ int run_pixel(const Options& options);
 int run_replay(const Options& options);
 int run_view(const Options& options);
 int run_layer_view(const Options& options);  // view --capture DIR of a layer capture
-int run_diff(const Options& options);  // 0 same, 1 differs, 2 error (its own one line)
+int run_diff(const Options& options);        // 0 same, 1 differs, 2 error (its own one line)
 // 0, or with --fail-on 1 when a finding is at that level or above; 3 validation messages first
 int run_diagnose(const Options& options);
 // the application's exit code; depthscope's own (1, 2) for its own errors

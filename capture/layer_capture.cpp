@@ -41,8 +41,8 @@ std::vector<uint32_t> read_layer_pixels(const std::filesystem::path& file, size_
 
 // One count image of a pass: PNG as the heat map over 0..max, EXR raw.
 json write_layer_count_image(const std::filesystem::path& dir, const std::string& stem,
-                       uint32_t width, uint32_t height, const std::vector<uint32_t>& px,
-                       uint32_t component) {
+                             uint32_t width, uint32_t height, const std::vector<uint32_t>& px,
+                             uint32_t component) {
     std::vector<uint32_t> counts(size_t(width) * height);
     uint32_t max = 0;
     uint64_t total = 0;
@@ -73,7 +73,7 @@ std::string layer_pass_name(const json& pass) {
 }
 
 json layer_pass_entry(const std::filesystem::path& layer_dir, const std::filesystem::path& out_dir,
-                const json& pass, std::map<std::string, int>& stems) {
+                      const json& pass, std::map<std::string, int>& stems) {
     json entry = pass;
     entry["name"] = layer_pass_name(pass);
     const int fmt = pass.at("depth_format").get<int>();
@@ -84,12 +84,14 @@ json layer_pass_entry(const std::filesystem::path& layer_dir, const std::filesys
     if (stems[stem]++ > 0) stem += "_" + std::to_string(pass.at("index").get<int>());
     const json& px = pass.at("pixels");
     const uint32_t w = px.at("width"), h = px.at("height");
-    const auto pixels = read_layer_pixels(layer_dir / px.at("file").get<std::string>(), size_t(w) * h * 4);
+    const auto pixels =
+        read_layer_pixels(layer_dir / px.at("file").get<std::string>(), size_t(w) * h * 4);
     const std::filesystem::path dir = out_dir / "resources";
     std::filesystem::create_directories(dir);
-    entry["images"] = {{"shaded", write_layer_count_image(dir, stem + "_shaded", w, h, pixels, 0)},
-                       {"discarded", write_layer_count_image(dir, stem + "_discarded", w, h, pixels, 1)},
-                       {"rasterized", write_layer_count_image(dir, stem + "_rasterized", w, h, pixels, 2)}};
+    entry["images"] = {
+        {"shaded", write_layer_count_image(dir, stem + "_shaded", w, h, pixels, 0)},
+        {"discarded", write_layer_count_image(dir, stem + "_discarded", w, h, pixels, 1)},
+        {"rasterized", write_layer_count_image(dir, stem + "_rasterized", w, h, pixels, 2)}};
     return entry;
 }
 
@@ -113,7 +115,8 @@ json write_layer_capture(const std::filesystem::path& layer_dir,
     report["command"] = command;
     std::map<std::string, int> stems;
     json passes = json::array();
-    for (const json& p : raw.at("passes")) passes.push_back(layer_pass_entry(layer_dir, out_dir, p, stems));
+    for (const json& p : raw.at("passes"))
+        passes.push_back(layer_pass_entry(layer_dir, out_dir, p, stems));
     json draws = json::array();
     for (json d : raw.at("draws")) {
         d["name"] = layer_draw_name(d, passes.at(d.at("pass").get<size_t>()).at("name"));

@@ -27,7 +27,7 @@ struct LayerCaptureData {
 };
 
 inline constexpr std::array<const char*, 3> kLayerCountKinds = {"shaded", "discarded",
-                                                                 "rasterized"};
+                                                                "rasterized"};
 
 // Throws ds::Error when `dir` is not a readable layer capture.
 LayerCaptureData load_layer_capture(const std::filesystem::path& dir);

@@ -49,7 +49,7 @@ void diff_layer_draw(const json& a, const json& b, const std::string& pass, Laye
 }
 
 void diff_layer_images(const std::filesystem::path& da, const std::filesystem::path& db,
-                 const json& pa, const json& pb, LayerDiff& out) {
+                       const json& pa, const json& pb, LayerDiff& out) {
     if (!pa.contains("images")) return;
     for (const auto& [kind, image] : pa.at("images").items()) {
         const ExrImage a = read_exr(da / image.at("exr").get<std::string>());
@@ -103,9 +103,12 @@ LayerDiff diff_layer_captures(const std::filesystem::path& da, const std::filesy
 }
 
 json LayerDiff::to_json() const {
-    return {{"same", same()},        {"comparable", comparable},
-            {"draws", draws},        {"differing_draws", differing_draws},
-            {"images", images},      {"differing_images", differing_images},
+    return {{"same", same()},
+            {"comparable", comparable},
+            {"draws", draws},
+            {"differing_draws", differing_draws},
+            {"images", images},
+            {"differing_images", differing_images},
             {"differences", differences}};
 }
 
@@ -120,7 +123,8 @@ std::string layer_diff_summary(const LayerDiff& d, const std::string& a, const s
         out = "differs: " + std::to_string(d.differing_draws) + " of " + std::to_string(d.draws) +
               " draws, " + std::to_string(d.differing_images) + " of " + std::to_string(d.images) +
               " count images\n";
-    for (size_t i = 0; i < d.differences.size() && i < 40; ++i) out += "  " + d.differences[i] + "\n";
+    for (size_t i = 0; i < d.differences.size() && i < 40; ++i)
+        out += "  " + d.differences[i] + "\n";
     if (d.differences.size() > 40)
         out += "  … " + std::to_string(d.differences.size() - 40) + " more\n";
     return out;

@@ -15,7 +15,7 @@ namespace ds::capture {
 bool is_layer_capture(const std::filesystem::path& dir);
 
 struct LayerDiff {
-    bool comparable = true;  // the same passes
+    bool comparable = true;                // the same passes
     std::vector<std::string> differences;  // one line each
     uint32_t draws = 0, images = 0;        // compared
     uint32_t differing_draws = 0, differing_images = 0;

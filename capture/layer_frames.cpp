@@ -51,7 +51,8 @@ std::string layer_frame_head(const LayerFrame& first, const LayerFrame& last) {
     for (const LayerPass& p : first.passes) draws += p.draws;
     head += ": " + layer_plural(first.passes.size(), "pass", "passes") + ", " +
             layer_plural(draws, "draw", "draws");
-    if (first.by_present) head += ", " + layer_plural(first.submissions, "submission", "submissions");
+    if (first.by_present)
+        head += ", " + layer_plural(first.submissions, "submission", "submissions");
     if (first.by_present && !last.presented) head += " (not presented: the application ended)";
     return head;
 }

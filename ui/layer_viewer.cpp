@@ -43,8 +43,7 @@ void LayerViewer::draw(TargetSize target) {
     ImGui::SetNextWindowPos({0, 0});
     ImGui::SetNextWindowSize({kColumn, float(target.height)});
     ImGui::Begin("Layer capture", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                     ImGuiWindowFlags_NoCollapse);
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     draw_summary();
     draw_passes();
     draw_draws();
@@ -59,13 +58,14 @@ void LayerViewer::draw_summary() {
                        text(r, "frame").c_str(), text(r, "delimiter").c_str());
     ImGui::TextWrapped("%s", r.contains("device") ? text(r.at("device"), "name").c_str() : "");
     if (r.contains("cost"))
-        ImGui::Text("capture: %.0f ms, counters %.1f MiB",
-                    r.at("cost").value("capture_ms", 0.0),
+        ImGui::Text("capture: %.0f ms, counters %.1f MiB", r.at("cost").value("capture_ms", 0.0),
                     r.at("cost").value("counter_bytes", 0.0) / (1024.0 * 1024.0));
     const auto& not_analysed = r.value("not_analysed", nlohmann::json::array());
     if (!not_analysed.empty() &&
-        ImGui::CollapsingHeader(("not analysed (" + std::to_string(not_analysed.size()) + ")").c_str()))
-        for (const auto& why : not_analysed) ImGui::BulletText("%s", why.get<std::string>().c_str());
+        ImGui::CollapsingHeader(
+            ("not analysed (" + std::to_string(not_analysed.size()) + ")").c_str()))
+        for (const auto& why : not_analysed)
+            ImGui::BulletText("%s", why.get<std::string>().c_str());
 }
 
 void LayerViewer::draw_passes() {

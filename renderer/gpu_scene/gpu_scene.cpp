@@ -129,7 +129,9 @@ void GpuScene::begin_group_label(VkCommandBuffer cmd, uint32_t group) const {
     context_.debug().begin_label(cmd, group_labels_.at(group).c_str(), {0.9f, 0.7f, 0.3f, 1.0f});
 }
 
-void GpuScene::end_group_label(VkCommandBuffer cmd) const { context_.debug().end_label(cmd); }
+void GpuScene::end_group_label(VkCommandBuffer cmd) const {
+    context_.debug().end_label(cmd);
+}
 
 void GpuScene::upload_geometry(const scene::Scene& scene, vk::UploadBatch& batch) {
     std::vector<scene::Vertex> vertices;

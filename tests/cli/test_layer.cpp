@@ -29,9 +29,10 @@ json read_report(const std::filesystem::path& dir) {
 json layer_capture(const std::string& scene, const std::string& sets,
                    const std::filesystem::path& dir, const std::string& app_flags = "") {
     const auto app_out = dir / "app";
-    const ProcessResult r = run_depthscope(
-        "layer --frame 1 --out " + (dir / "layer").string() + " -- " DS_EXECUTABLE " capture --resources none " +
-        app_flags + " --scene " + scene + " " + kSize + " " + sets + " --out " + app_out.string());
+    const ProcessResult r =
+        run_depthscope("layer --frame 1 --out " + (dir / "layer").string() +
+                       " -- " DS_EXECUTABLE " capture --resources none " + app_flags + " --scene " +
+                       scene + " " + kSize + " " + sets + " --out " + app_out.string());
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return read_report(dir / "layer");
 }
@@ -85,10 +86,9 @@ TEST_P(LayerOracle, PerGroupCountsEqualDepthscopesOwn) {
     const auto [scene, sets] = GetParam();
     const auto dir = fresh_dir(std::string("layer_oracle_") + scene);
     const json layer = layer_capture(scene, sets, dir);
-    const ProcessResult own = run_depthscope("capture --scene " + std::string(scene) + " " + kSize +
-                                             " " + sets +
-                                             " --set count_draws=on --set count_fragments=on --out " +
-                                             (dir / "own").string());
+    const ProcessResult own = run_depthscope(
+        "capture --scene " + std::string(scene) + " " + kSize + " " + sets +
+        " --set count_draws=on --set count_fragments=on --out " + (dir / "own").string());
     ASSERT_EQ(own.exit_code, 0) << own.err;
     const json mine = read_report(dir / "own");
     const auto a = layer_counts(layer), b = own_counts(mine);
@@ -113,12 +113,12 @@ TEST_P(LayerOracle, PerGroupCountsEqualDepthscopesOwn) {
     EXPECT_GT(compared, 2u);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    BuiltInScenes, LayerOracle,
-    testing::Values(std::make_tuple("overdraw", ""), std::make_tuple("foliage", ""),
-                    std::make_tuple("atrium", ""),
-                    std::make_tuple("decals", "--set decal_pass=off")),
-    [](const auto& info) { return std::string(std::get<0>(info.param)); });
+INSTANTIATE_TEST_SUITE_P(BuiltInScenes, LayerOracle,
+                         testing::Values(std::make_tuple("overdraw", ""),
+                                         std::make_tuple("foliage", ""),
+                                         std::make_tuple("atrium", ""),
+                                         std::make_tuple("decals", "--set decal_pass=off")),
+                         [](const auto& info) { return std::string(std::get<0>(info.param)); });
 
 TEST(Layer, LeavesTheApplicationsOutputUnchangedAndAddsNoValidationMessage) {
     const auto dir = fresh_dir("layer_unchanged");

@@ -20,7 +20,9 @@ ProcessResult under_xvfb(const std::string& command, int timeout_s = 180) {
     return run_command("xvfb-run -a -s '-screen 0 640x480x24' " + command, timeout_s);
 }
 
-std::string layer(const std::string& args) { return std::string(DS_EXECUTABLE) + " layer " + args; }
+std::string layer(const std::string& args) {
+    return std::string(DS_EXECUTABLE) + " layer " + args;
+}
 
 // What must be the same live and replayed: the draws and their counts (not handles or times).
 json comparable(const json& report) {
@@ -50,13 +52,13 @@ TEST(LayerVkcube, ListsFramesAndCapturesFrameFiveLiveAndReplayed) {
         << list.out;
     EXPECT_NE(list.out.find("frames 2-6 (each)"), std::string::npos) << list.out;
 
-    // vkcube captured by GFXReconstruct (alone: with depthscope's layer nearer the
-    // application, the capture would hold the layer's own work too), and the same command live
-    // under the layer: vkcube's frames are deterministic.
+    // vkcube --validate (it then labels its draws) captured by GFXReconstruct (alone: with
+    // depthscope's layer nearer the application, the capture would hold the layer's own work too),
+    // and the same command live under the layer: vkcube's frames are deterministic.
     const auto gfxr = dir / "cube.gfxr";
     const ProcessResult record = under_xvfb(
         "env VK_INSTANCE_LAYERS=VK_LAYER_LUNARG_gfxreconstruct GFXRECON_CAPTURE_FILE=" +
-        gfxr.string() + " GFXRECON_CAPTURE_FILE_TIMESTAMP=false vkcube --c 8");
+        gfxr.string() + " GFXRECON_CAPTURE_FILE_TIMESTAMP=false vkcube --validate --c 8");
     ASSERT_EQ(record.exit_code, 0) << record.err;
     ASSERT_TRUE(std::filesystem::exists(gfxr)) << record.err;
     // vkcube --validate: the validation layer after depthscope's; vkcube prints each message
@@ -75,15 +77,14 @@ TEST(LayerVkcube, ListsFramesAndCapturesFrameFiveLiveAndReplayed) {
     EXPECT_EQ(draw.at("samples_passed"), draw.at("rasterized"));
     EXPECT_EQ(a.at("pipelines")[0].at("early_z"), "guaranteed");
 
-    const ProcessResult replay = under_xvfb(
-        layer("--frame 5 --out " + (dir / "replay").string() + " -- gfxrecon-replay " +
-              gfxr.string()));
+    const ProcessResult replay = under_xvfb(layer("--frame 5 --out " + (dir / "replay").string() +
+                                                  " -- gfxrecon-replay " + gfxr.string()));
     ASSERT_EQ(replay.exit_code, 0) << replay.err;
     const json b = json::parse(read_file(dir / "replay" / "report.json"));
     EXPECT_EQ(comparable(a), comparable(b));
     // diff says so too: the same draws and count images.
-    const ProcessResult diff = run_depthscope("diff " + (dir / "live").string() + " " +
-                                              (dir / "replay").string());
+    const ProcessResult diff =
+        run_depthscope("diff " + (dir / "live").string() + " " + (dir / "replay").string());
     EXPECT_EQ(diff.exit_code, 0) << diff.out << diff.err;
     EXPECT_EQ(diff.out.rfind("same: 1 draws and 3 count images equal", 0), 0u) << diff.out;
     // The inspector opens it read-only (no scene to render again) in a real window.
@@ -104,11 +105,12 @@ TEST(LayerLauncher, RefusesBadInputWithOneLine) {
     expect_one_error_line(run_depthscope("layer --frame 0 -- vkcube"), 2, "--frame");
     // A frame that never comes: the application (depthscope, two submissions) ends first.
     const auto out = dir / "never";
-    expect_one_error_line(run_depthscope("layer --frame 9 --out " + out.string() + " -- " +
-                                         DS_EXECUTABLE +
-                                         " capture --resources none --scene overdraw --size "
-                                         "64x36 --out " + (dir / "app").string()),
-                          1, "submission 9 never came");
+    expect_one_error_line(
+        run_depthscope("layer --frame 9 --out " + out.string() + " -- " + DS_EXECUTABLE +
+                       " capture --resources none --scene overdraw --size "
+                       "64x36 --out " +
+                       (dir / "app").string()),
+        1, "submission 9 never came");
     EXPECT_FALSE(std::filesystem::exists(out));
     // An unwritable folder: refused before the application runs.
     const ProcessResult r = run_depthscope("layer --frame 1 --out /proc/no/such -- vkcube");

@@ -17,8 +17,12 @@ capture::LayerCaptureData two_by_two() {
                    {"frame", 3},
                    {"passes", {{{"index", 0}, {"name", "prepass"}}}},
                    {"draws",
-                    {{{"pass", 0}, {"name", "wall"}, {"shaded", 3}, {"discarded", 1},
-                      {"rasterized", 4}, {"samples_passed", 3}}}},
+                    {{{"pass", 0},
+                      {"name", "wall"},
+                      {"shaded", 3},
+                      {"discarded", 1},
+                      {"rasterized", 4},
+                      {"samples_passed", 3}}}},
                    {"not_analysed", nlohmann::json::array()}};
     capture::LayerPassImages p;
     p.name = "prepass";
