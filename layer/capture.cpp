@@ -201,12 +201,18 @@ VkResult capture_submit2(DeviceData& d, VkQueue queue, uint32_t n, const VkSubmi
 }
 
 void finish_capture(DeviceData& d) {
+    std::lock_guard lock(process().capture_mutex);
+    finish_locked(d);
+}
+
+void finish_locked(DeviceData& d) {
     if (!d.capture) return;
     write_capture(d, *d.capture, config().out);
     for (auto& [family, pool] : d.capture->pools) d.t.DestroyCommandPool(d.device, pool, nullptr);
     delete d.capture;
     d.capture = nullptr;
-    d.captured = true;
+    process().captured = true;
+    process().capturing = nullptr;
 }
 
 }  // namespace ds::layer

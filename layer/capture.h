@@ -19,6 +19,8 @@ VkResult capture_submit(DeviceData& d, VkQueue queue, uint32_t n, const VkSubmit
 VkResult capture_submit2(DeviceData& d, VkQueue queue, uint32_t n, const VkSubmitInfo2* submits,
                          VkFence fence);
 // The chosen frame is over: its results are written and the capture's objects destroyed.
+// finish_locked: with process().capture_mutex held.
 void finish_capture(DeviceData& d);
+void finish_locked(DeviceData& d);
 
 }  // namespace ds::layer

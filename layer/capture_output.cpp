@@ -124,7 +124,7 @@ void write_capture(DeviceData& d, const FrameCapture& fc, const std::string& out
                               std::to_string(VK_API_VERSION_PATCH(p.apiVersion))}}},
         {"application", d.instance ? d.instance->application : ""},
         {"frame", config().frame},
-        {"delimiter", d.has_swapchain ? "present" : "submission"},
+        {"delimiter", process().presenting ? "present" : "submission"},
         {"submissions", fc.submissions},
         {"counter_set", d.counter_set},
         {"cost",

@@ -11,6 +11,8 @@ bool has_depth_pass(const std::vector<PassSummary>& passes) {
 }
 
 bool FrameTracker::open_list(const std::string& out, std::string& error) {
+    std::lock_guard lock(mutex_);
+    if (list_) return true;  // a second device of the process
     const std::string path = out + "/frames.jsonl";
     list_ = std::fopen(path.c_str(), "a");
     if (!list_) error = "cannot write " + path;

@@ -31,7 +31,7 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateSwapchainKHR(VkDevice device,
                                                   VkSwapchainKHR* swapchain) {
     DeviceData& d = device_of(device);
     const VkResult r = d.t.CreateSwapchainKHR(device, info, alloc, swapchain);
-    if (r == VK_SUCCESS) d.has_swapchain = true;
+    if (r == VK_SUCCESS) process().presenting = true;
     return r;
 }
 
@@ -230,14 +230,15 @@ void device_created(DeviceData& device) {
                                                              : device.capture_refused.c_str());
     if (c.mode != Config::Mode::Passive) {
         std::string error;
-        if (!device.frames.open_list(c.out, error))
+        if (!process().frames.open_list(c.out, error))
             std::fprintf(stderr, "depthscope layer: %s\n", error.c_str());
     }
 }
 
 void device_destroyed(DeviceData& device) {
     finish_capture(device);
-    device.frames.finish();
+    // The last device: an unfinished frame is written as such.
+    if (device_count() == 1) process().frames.finish();
 }
 
 }  // namespace ds::layer

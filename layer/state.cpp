@@ -54,6 +54,16 @@ void remove_device(void* key) {
     g_devices.erase(key);
 }
 
+Process& process() {
+    static Process p;
+    return p;
+}
+
+size_t device_count() {
+    std::lock_guard lock(g_mutex);
+    return g_devices.size();
+}
+
 const Config& config() {
     static const Config c = Config::from_environment();
     return c;

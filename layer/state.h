@@ -72,8 +72,6 @@ struct DeviceData {
     std::unordered_map<VkQueryPool, VkQueryType> query_types;
     std::unordered_map<VkPipeline, PipelineRecord> pipelines;
     std::unordered_map<uint64_t, std::string> names;  // vkSetDebugUtilsObjectNameEXT
-    bool has_swapchain = false;
-    FrameTracker frames;
     // Pipeline and shader module creation: time in the layers below and in total (ns), so
     // the capture can state what copying the recipes costs.
     std::atomic<uint64_t> creation_next_ns{0}, creation_total_ns{0};
@@ -83,7 +81,6 @@ struct DeviceData {
     std::string capture_refused;       // why this device's frames cannot be captured
     VkPhysicalDeviceProperties properties{};
     VkPhysicalDeviceMemoryProperties memory{};
-    bool captured = false;             // the chosen frame has been captured
     FrameCapture* capture = nullptr;   // during the chosen frame (capture.cpp owns it)
 
     CommandBufferState* state(VkCommandBuffer cb);  // null for one the layer never saw
@@ -96,6 +93,19 @@ void remove_instance(void* key);
 DeviceData* add_device(VkDevice device);
 DeviceData* device_data(void* key);
 void remove_device(void* key);
+
+// Frames are the process's: a present on any device ends one (an application may render on
+// one device and present on another, as depthscope's inspector does). The capture of the
+// chosen frame happens on the first device that submits a depth pass in it.
+struct Process {
+    FrameTracker frames;
+    std::atomic<bool> presenting{false};  // a device of the process made a swapchain
+    std::mutex capture_mutex;             // held while a submission is captured or written
+    DeviceData* capturing = nullptr;      // the device capturing the chosen frame
+    bool captured = false;                // the chosen frame is written
+};
+Process& process();
+size_t device_count();
 
 template <typename Handle>
 DeviceData& device_of(Handle h) {

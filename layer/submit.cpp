@@ -24,28 +24,33 @@ std::vector<PassSummary> summarize_all(DeviceData& d, const std::vector<VkComman
     return out;
 }
 
-// Counts the submission into its frame; true when it is to be captured (the chosen frame,
-// with a depth pass, on a device that can be).
-bool note_submission(DeviceData& d, const std::vector<VkCommandBuffer>& cbs) {
+// Counts the submission into its frame; true when it is to be captured (the chosen frame, with
+// a depth pass, on the device capturing it or on the first to submit one). Then the caller
+// holds process().capture_mutex until the submission is captured (`lock`).
+bool note_submission(DeviceData& d, const std::vector<VkCommandBuffer>& cbs,
+                     std::unique_lock<std::mutex>& lock) {
     const Config& c = config();
     if (c.mode == Config::Mode::Passive) return false;
+    Process& proc = process();
     const auto passes = summarize_all(d, cbs);
-    const uint64_t frame = d.frames.submitted(passes, d.has_swapchain);
+    const uint64_t frame = proc.frames.submitted(passes, proc.presenting);
     DS_LAYER_LOG("submission of %zu command buffers: %zu passes, depth %d, frame %llu", cbs.size(),
                  passes.size(), int(has_depth_pass(passes)), (unsigned long long)frame);
-    if (c.mode != Config::Mode::Capture || d.captured || frame != c.frame ||
-        !has_depth_pass(passes))
+    if (c.mode != Config::Mode::Capture || frame != c.frame || !has_depth_pass(passes))
         return false;
+    lock = std::unique_lock(proc.capture_mutex);
+    if (proc.captured || (proc.capturing && proc.capturing != &d)) return false;
+    proc.capturing = &d;
     if (d.capture_refused.empty()) return true;
     d.capture = new FrameCapture(d);
     d.capture->not_analysed.push_back(d.capture_refused);
-    finish_capture(d);
+    finish_locked(d);
     return false;
 }
 
 // A frame delimited by its submission ends with it.
 void submission_done(DeviceData& d) {
-    if (!d.has_swapchain) finish_capture(d);
+    if (!process().presenting) finish_locked(d);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL QueueSubmit(VkQueue queue, uint32_t n, const VkSubmitInfo* submits,
@@ -55,7 +60,8 @@ VKAPI_ATTR VkResult VKAPI_CALL QueueSubmit(VkQueue queue, uint32_t n, const VkSu
     for (uint32_t i = 0; i < n; ++i)
         cbs.insert(cbs.end(), submits[i].pCommandBuffers,
                    submits[i].pCommandBuffers + submits[i].commandBufferCount);
-    if (!note_submission(d, cbs)) return d.t.QueueSubmit(queue, n, submits, fence);
+    std::unique_lock<std::mutex> lock;
+    if (!note_submission(d, cbs, lock)) return d.t.QueueSubmit(queue, n, submits, fence);
     const VkResult r = capture_submit(d, queue, n, submits, fence);
     submission_done(d);
     return r;
@@ -68,7 +74,8 @@ VKAPI_ATTR VkResult VKAPI_CALL QueueSubmit2(VkQueue queue, uint32_t n,
     for (uint32_t i = 0; i < n; ++i)
         for (uint32_t k = 0; k < submits[i].commandBufferInfoCount; ++k)
             cbs.push_back(submits[i].pCommandBufferInfos[k].commandBuffer);
-    if (!note_submission(d, cbs)) return d.t.QueueSubmit2(queue, n, submits, fence);
+    std::unique_lock<std::mutex> lock;
+    if (!note_submission(d, cbs, lock)) return d.t.QueueSubmit2(queue, n, submits, fence);
     const VkResult r = capture_submit2(d, queue, n, submits, fence);
     submission_done(d);
     return r;
@@ -78,8 +85,12 @@ VKAPI_ATTR VkResult VKAPI_CALL QueuePresentKHR(VkQueue queue, const VkPresentInf
     DeviceData& d = device_of(queue);
     const VkResult r = d.t.QueuePresentKHR(queue, info);
     if (config().mode == Config::Mode::Passive) return r;
-    if (d.capture && d.frames.frame() == config().frame) finish_capture(d);
-    d.frames.presented();
+    Process& proc = process();
+    if (proc.frames.frame() == config().frame) {
+        std::lock_guard lock(proc.capture_mutex);
+        if (proc.capturing) finish_locked(*proc.capturing);
+    }
+    proc.frames.presented();
     return r;
 }
 
