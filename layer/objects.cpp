@@ -1,4 +1,5 @@
 #include "layer/objects.h"
+#include "layer/record.h"
 
 #include "layer/capture.h"
 
@@ -92,6 +93,11 @@ VKAPI_ATTR VkResult VKAPI_CALL ResetCommandBuffer(VkCommandBuffer cb,
     return d.t.ResetCommandBuffer(cb, flags);
 }
 
+void note_render_pass(DeviceData& d, VkRenderPass pass, RenderPassInfo rp) {
+    std::lock_guard lock(d.mutex);
+    d.render_passes[pass] = std::move(rp);
+}
+
 VKAPI_ATTR VkResult VKAPI_CALL CreateRenderPass(VkDevice device, const VkRenderPassCreateInfo* info,
                                                 const VkAllocationCallbacks* alloc,
                                                 VkRenderPass* pass) {
@@ -116,8 +122,7 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateRenderPass(VkDevice device, const VkRenderP
             sp.colors.push_back(s.pColorAttachments[c].attachment);
         rp.subpasses.push_back(sp);
     }
-    std::lock_guard lock(d.mutex);
-    d.render_passes[*pass] = std::move(rp);
+    note_render_pass(d, *pass, std::move(rp));
     return r;
 }
 
@@ -142,17 +147,13 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateRenderPass2(VkDevice device,
             sp.colors.push_back(s.pColorAttachments[c].attachment);
         rp.subpasses.push_back(sp);
     }
-    std::lock_guard lock(d.mutex);
-    d.render_passes[*pass] = std::move(rp);
+    note_render_pass(d, *pass, std::move(rp));
     return r;
 }
 
 VKAPI_ATTR void VKAPI_CALL DestroyRenderPass(VkDevice device, VkRenderPass pass,
-                                             const VkAllocationCallbacks* alloc) {
-    DeviceData& d = device_of(device);
-    d.t.DestroyRenderPass(device, pass, alloc);
-    std::lock_guard lock(d.mutex);
-    d.render_passes.erase(pass);
+                                   const VkAllocationCallbacks* alloc) {
+    destroy_and_forget(device, pass, alloc, &DeviceTable::DestroyRenderPass, &DeviceData::render_passes);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL CreateFramebuffer(VkDevice device,
@@ -171,11 +172,8 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateFramebuffer(VkDevice device,
 }
 
 VKAPI_ATTR void VKAPI_CALL DestroyFramebuffer(VkDevice device, VkFramebuffer fb,
-                                              const VkAllocationCallbacks* alloc) {
-    DeviceData& d = device_of(device);
-    d.t.DestroyFramebuffer(device, fb, alloc);
-    std::lock_guard lock(d.mutex);
-    d.framebuffers.erase(fb);
+                                   const VkAllocationCallbacks* alloc) {
+    destroy_and_forget(device, fb, alloc, &DeviceTable::DestroyFramebuffer, &DeviceData::framebuffers);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL CreateImageView(VkDevice device, const VkImageViewCreateInfo* info,
@@ -190,11 +188,8 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateImageView(VkDevice device, const VkImageVie
 }
 
 VKAPI_ATTR void VKAPI_CALL DestroyImageView(VkDevice device, VkImageView view,
-                                            const VkAllocationCallbacks* alloc) {
-    DeviceData& d = device_of(device);
-    d.t.DestroyImageView(device, view, alloc);
-    std::lock_guard lock(d.mutex);
-    d.views.erase(view);
+                                   const VkAllocationCallbacks* alloc) {
+    destroy_and_forget(device, view, alloc, &DeviceTable::DestroyImageView, &DeviceData::views);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "layer/objects.h"
+#include "layer/record.h"
 
 namespace ds::layer {
 
@@ -46,11 +47,8 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateShaderModule(VkDevice device,
 }
 
 VKAPI_ATTR void VKAPI_CALL DestroyShaderModule(VkDevice device, VkShaderModule module,
-                                               const VkAllocationCallbacks* alloc) {
-    DeviceData& d = device_of(device);
-    d.t.DestroyShaderModule(device, module, alloc);
-    std::lock_guard lock(d.mutex);
-    d.modules.erase(module);
+                                   const VkAllocationCallbacks* alloc) {
+    destroy_and_forget(device, module, alloc, &DeviceTable::DestroyShaderModule, &DeviceData::modules);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL CreatePipelineLayout(VkDevice device,
@@ -70,11 +68,8 @@ VKAPI_ATTR VkResult VKAPI_CALL CreatePipelineLayout(VkDevice device,
 }
 
 VKAPI_ATTR void VKAPI_CALL DestroyPipelineLayout(VkDevice device, VkPipelineLayout layout,
-                                                 const VkAllocationCallbacks* alloc) {
-    DeviceData& d = device_of(device);
-    d.t.DestroyPipelineLayout(device, layout, alloc);
-    std::lock_guard lock(d.mutex);
-    d.layouts.erase(layout);
+                                   const VkAllocationCallbacks* alloc) {
+    destroy_and_forget(device, layout, alloc, &DeviceTable::DestroyPipelineLayout, &DeviceData::layouts);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL CreateGraphicsPipelines(VkDevice device, VkPipelineCache cache,
@@ -103,11 +98,8 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateGraphicsPipelines(VkDevice device, VkPipeli
 }
 
 VKAPI_ATTR void VKAPI_CALL DestroyPipeline(VkDevice device, VkPipeline pipeline,
-                                           const VkAllocationCallbacks* alloc) {
-    DeviceData& d = device_of(device);
-    d.t.DestroyPipeline(device, pipeline, alloc);
-    std::lock_guard lock(d.mutex);
-    d.pipelines.erase(pipeline);
+                                   const VkAllocationCallbacks* alloc) {
+    destroy_and_forget(device, pipeline, alloc, &DeviceTable::DestroyPipeline, &DeviceData::pipelines);
 }
 
 VKAPI_ATTR VkResult VKAPI_CALL CreateDescriptorSetLayout(

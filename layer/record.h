@@ -39,6 +39,16 @@ const T* data_or_null(const std::vector<T>& v) {
     return v.empty() ? nullptr : v.data();
 }
 
+// A vkDestroy* that the layer passes on and then forgets the object's record in `map`.
+template <typename Handle, typename Map, typename Pfn>
+void destroy_and_forget(VkDevice device, Handle handle, const VkAllocationCallbacks* alloc,
+                        Pfn DeviceTable::*fn, Map DeviceData::*map) {
+    DeviceData& d = device_of(device);
+    (d.t.*fn)(device, handle, alloc);
+    std::lock_guard lock(d.mutex);
+    (d.*map).erase(handle);
+}
+
 // The layer's vkCmd* functions by name ("vkCmdDraw"), or null.
 PFN_vkVoidFunction recorded_command(const char* name);
 PFN_vkVoidFunction recorded_state_command(const char* name);
