@@ -37,12 +37,16 @@ class TempDir {
     std::filesystem::path path_;
 };
 
+// The layer's settings as DEPTHSCOPE_LAYER_SETTINGS. It has none yet (issue 29 adds the
+// Z-fight and EQUAL checks): every name is unknown.
 std::string settings_text(const std::vector<std::string>& sets) {
     std::string out;
     for (const std::string& s : sets) {
-        if (s.find('=') == std::string::npos || s.find(';') != std::string::npos)
+        const auto eq = s.find('=');
+        if (eq == std::string::npos || eq == 0 || s.find(';') != std::string::npos)
             throw UsageError("--set expects NAME=VALUE, got '" + s + "'");
-        out += (out.empty() ? "" : ";") + s;
+        throw UsageError("layer: unknown setting '" + s.substr(0, eq) +
+                         "' (the layer has no settings yet)");
     }
     return out;
 }
@@ -106,6 +110,7 @@ int run_layer_capture(const Options& o) {
 
 int run_layer(const Options& o) {
     if (o.layer_list == (o.layer_frame > 0)) throw UsageError("layer: choose --list or --frame N");
+    settings_text(o.sets);  // refused before anything runs
     if (o.layer_list) return run_list(o);
     return run_layer_capture(o);
 }

@@ -37,6 +37,7 @@ std::vector<std::string> child_environment(const std::map<std::string, std::stri
     // then ignores VK_ADD_LAYER_PATH): the layer's folder joins whichever is in use.
     const bool replaced = vars.count("VK_LAYER_PATH") && !vars["VK_LAYER_PATH"].empty();
     prepend(replaced ? "VK_LAYER_PATH" : "VK_ADD_LAYER_PATH", layer_manifest_dir());
+    // Layers the application enables itself (validation) sit below it and see its calls.
     prepend("VK_INSTANCE_LAYERS", kLayerName);
     for (const auto& [k, v] : env) vars[k] = v;
     std::vector<std::string> out;

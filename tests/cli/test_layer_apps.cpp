@@ -52,17 +52,17 @@ TEST(LayerVkcube, ListsFramesAndCapturesFrameFiveLiveAndReplayed) {
         << list.out;
     EXPECT_NE(list.out.find("frames 2-6 (each)"), std::string::npos) << list.out;
 
-    // vkcube --validate (it then labels its draws) captured by GFXReconstruct (alone: with
-    // depthscope's layer nearer the application, the capture would hold the layer's own work too),
-    // and the same command live under the layer: vkcube's frames are deterministic.
+    // vkcube --validate (it then labels its draws) captured by GFXReconstruct alone: the loader
+    // puts depthscope's layer above GFXReconstruct's whatever VK_INSTANCE_LAYERS' order, so a
+    // capture made under both holds the layer's work. Then the same command under the layer,
+    // frame 5 (vkcube's frames are deterministic); the validation layer comes after it, vkcube
+    // prints each message ("ERROR : VALIDATION - …"), and the layer must add none.
     const auto gfxr = dir / "cube.gfxr";
     const ProcessResult record = under_xvfb(
         "env VK_INSTANCE_LAYERS=VK_LAYER_LUNARG_gfxreconstruct GFXRECON_CAPTURE_FILE=" +
         gfxr.string() + " GFXRECON_CAPTURE_FILE_TIMESTAMP=false vkcube --validate --c 8");
     ASSERT_EQ(record.exit_code, 0) << record.err;
     ASSERT_TRUE(std::filesystem::exists(gfxr)) << record.err;
-    // vkcube --validate: the validation layer after depthscope's; vkcube prints each message
-    // ("ERROR : VALIDATION - …"), and the layer must add none.
     const ProcessResult live = under_xvfb(
         layer("--frame 5 --out " + (dir / "live").string() + " -- vkcube --validate --c 8"));
     ASSERT_EQ(live.exit_code, 0) << live.err;
@@ -103,6 +103,8 @@ TEST(LayerLauncher, RefusesBadInputWithOneLine) {
     expect_one_error_line(run_depthscope("layer --list -- no-such-app-here"), 1,
                           "no-such-app-here");
     expect_one_error_line(run_depthscope("layer --frame 0 -- vkcube"), 2, "--frame");
+    expect_one_error_line(run_depthscope("layer --list --set zfight=on -- vkcube"), 2,
+                          "unknown setting 'zfight'");
     // A frame that never comes: the application (depthscope, two submissions) ends first.
     const auto out = dir / "never";
     expect_one_error_line(
