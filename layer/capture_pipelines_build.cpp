@@ -34,7 +34,8 @@ void CountingPipelines::build(CountingPipeline& p, PipelineRecipe r) {
         try {
             p.early_z = spirv::early_z_verdict(*s.code, alpha_to_coverage(r));
             InstrumentResult done =
-                instrument_fragment(*s.code, s.entry, CounterBindings{d_.counter_set, 0, 1});
+                instrument_fragment(*s.code, s.entry, CounterBindings{d_.counter_set, 0, 1},
+                                    alpha_to_coverage(r));
             p.early_tests_added = done.early_fragment_tests_added;
             p.discard_sites = done.discard_sites;
             p.instrumented = std::move(done.spirv);

@@ -154,14 +154,15 @@ void update_interfaces(Module& m, size_t entry, const Counters& c, const Walk& w
 }  // namespace
 
 InstrumentResult instrument_fragment(std::span<const uint32_t> spirv, std::string_view entry,
-                                     const CounterBindings& b) {
+                                     const CounterBindings& b, bool alpha_to_coverage) {
     Module m(spirv);
     const size_t entry_index = find_entry(m, entry);
     const uint32_t entry_fn = m.section(Section::EntryPoint)[entry_index].operand(1);
     check_bindings(m, b);
 
     InstrumentResult result;
-    result.early_fragment_tests_added = may_add_early_tests(m, entry_fn, spirv);
+    result.early_fragment_tests_added =
+        !alpha_to_coverage && may_add_early_tests(m, entry_fn, spirv);
     const Counters c = add_counter_globals(m, b);
     const Walk walk = instrument_functions(m, c, entry_fn);
     update_interfaces(m, entry_index, c, walk);

@@ -47,7 +47,10 @@ struct InstrumentResult {
 
 // Throws ds::Error (one sentence) for a malformed module, no Fragment entry point named `entry`,
 // a module that already uses descriptor set `b.set`, or equal bindings in `b`.
+// `alpha_to_coverage`: the pipeline turns the shader's alpha into coverage, so the depth test
+// must stay after the shader (early tests would write depth for samples the coverage drops):
+// EarlyFragmentTests is never added then.
 InstrumentResult instrument_fragment(std::span<const uint32_t> spirv, std::string_view entry,
-                                     const CounterBindings& b);
+                                     const CounterBindings& b, bool alpha_to_coverage = false);
 
 }  // namespace ds::layer

@@ -120,16 +120,28 @@ INSTANTIATE_TEST_SUITE_P(BuiltInScenes, LayerOracle,
                                          std::make_tuple("decals", "--set decal_pass=off")),
                          [](const auto& info) { return std::string(std::get<0>(info.param)); });
 
-TEST(Layer, LeavesTheApplicationsOutputUnchangedAndAddsNoValidationMessage) {
-    const auto dir = fresh_dir("layer_unchanged");
+class LayerUnchanged : public testing::TestWithParam<const char*> {};
+
+// Alpha to coverage at msaa 4: coverage comes from the shader, so the layer must not move the
+// depth test before it (it did: final.png differed).
+TEST_P(LayerUnchanged, LeavesTheApplicationsOutputUnchangedAndAddsNoValidationMessage) {
+    const std::string sets = GetParam();
+    const auto dir = fresh_dir("layer_unchanged" + std::to_string(sets.size()));
     // --validate: any validation message makes depthscope exit 3 (the layer sits before it).
-    const json layer = layer_capture("foliage", "", dir, "--validate");
+    const json layer = layer_capture("foliage", sets, dir, "--validate");
     ASSERT_FALSE(layer.at("draws").empty());
-    const ProcessResult plain = run_depthscope("capture --scene foliage " + std::string(kSize) +
-                                               " --validate --out " + (dir / "plain").string());
+    const ProcessResult plain =
+        run_depthscope("capture --scene foliage " + std::string(kSize) + " " + sets +
+                       " --validate --out " + (dir / "plain").string());
     ASSERT_EQ(plain.exit_code, 0) << plain.err;
     EXPECT_EQ(read_file(dir / "app" / "final.png"), read_file(dir / "plain" / "final.png"));
 }
+
+INSTANTIATE_TEST_SUITE_P(Foliage, LayerUnchanged,
+                         testing::Values("", "--set msaa=4 --set alpha_to_coverage=on"),
+                         [](const auto& info) {
+                             return std::string(info.index == 0 ? "Default" : "AlphaToCoverage");
+                         });
 
 TEST(Layer, EveryInstrumentedShaderPassesSpirvVal) {
     const auto dir = fresh_dir("layer_spirv_val");

@@ -59,6 +59,16 @@ TEST_F(InstrumentFragmentTest, PlainShaderGetsEarlyTestsAndTwoCounts) {
     EXPECT_EQ(count(r.spirv, spv::OpExtension), 0u);
 }
 
+TEST_F(InstrumentFragmentTest, AlphaToCoverageKeepsLateTests) {
+    // The pipeline turns the shader's alpha into coverage: early tests would write depth for
+    // samples the coverage then drops, so none are added even to a plain shader.
+    const std::vector<uint32_t> plain = fragment("", "");
+    const InstrumentResult r = instrument_fragment(plain, "main", CounterBindings{}, true);
+    EXPECT_FALSE(r.early_fragment_tests_added);
+    EXPECT_EQ(count(r.spirv, spv::OpExecutionMode), 1u);  // OriginUpperLeft only
+    EXPECT_TRUE(instrument_fragment(plain, "main", CounterBindings{}).early_fragment_tests_added);
+}
+
 TEST_F(InstrumentFragmentTest, CountsStartAfterTheEntryBlocksVariables) {
     // Locals (OpVariable Function) lead main's first block; the counts follow them, still in
     // that block, before main's own first instruction.
