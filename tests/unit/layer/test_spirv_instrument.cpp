@@ -62,7 +62,7 @@ TEST_F(InstrumentFragmentTest, PlainShaderGetsEarlyTestsAndTwoCounts) {
 TEST_F(InstrumentFragmentTest, AlphaToCoverageKeepsLateTests) {
     // The pipeline turns the shader's alpha into coverage: early tests would write depth for
     // samples the coverage then drops, so none are added even to a plain shader.
-    const std::vector<uint32_t> plain = fragment("", "");
+    const std::vector<uint32_t> plain = compile(fragment("", ""));
     const InstrumentResult r = instrument_fragment(plain, "main", CounterBindings{}, true);
     EXPECT_FALSE(r.early_fragment_tests_added);
     EXPECT_EQ(count(r.spirv, spv::OpExecutionMode), 1u);  // OriginUpperLeft only
