@@ -97,11 +97,13 @@ json layer_pass_entry(const std::filesystem::path& layer_dir, const std::filesys
 
 }  // namespace
 
-std::string layer_draw_name(const json& draw, const std::string& pass) {
+std::string layer_draw_name(const json& draw, const std::string& pass,
+                            const std::string& pipeline) {
     const auto& labels = draw.at("labels");
     if (!labels.empty() && labels.back().get<std::string>() != pass)
         return labels.back().get<std::string>();
-    return pass + " draw " + std::to_string(draw.at("index_in_pass").get<int>());
+    return pass + " draw " + std::to_string(draw.at("index_in_pass").get<int>()) + " (" + pipeline +
+           ")";
 }
 
 json write_layer_capture(const std::filesystem::path& layer_dir,
@@ -118,8 +120,16 @@ json write_layer_capture(const std::filesystem::path& layer_dir,
     for (const json& p : raw.at("passes"))
         passes.push_back(layer_pass_entry(layer_dir, out_dir, p, stems));
     json draws = json::array();
+    std::map<std::string, int> ordinals;
     for (json d : raw.at("draws")) {
-        d["name"] = layer_draw_name(d, passes.at(d.at("pass").get<size_t>()).at("name"));
+        // Unnamed pipelines by their order of first use: handles differ from run to run.
+        const std::string handle = d.at("pipeline");
+        if (!ordinals.count(handle)) ordinals[handle] = int(ordinals.size()) + 1;
+        std::string pipeline = "pipeline " + std::to_string(ordinals[handle]);
+        for (const json& p : raw.at("pipelines"))
+            if (p.at("handle") == handle && !p.at("name").get<std::string>().empty())
+                pipeline = p.at("name");
+        d["name"] = layer_draw_name(d, passes.at(d.at("pass").get<size_t>()).at("name"), pipeline);
         draws.push_back(std::move(d));
     }
     report["passes"] = passes;

@@ -18,8 +18,10 @@ nlohmann::json write_layer_capture(const std::filesystem::path& layer_dir,
                                    const std::filesystem::path& out_dir,
                                    const std::vector<std::string>& command);
 
-// A draw's name: its innermost debug-utils label, else "PASS draw N" (the pass's name and the
-// draw's index in it).
-std::string layer_draw_name(const nlohmann::json& draw, const std::string& pass_name);
+// A draw's name: its innermost debug-utils label, else "PASS draw N (PIPELINE)" (the pass's
+// name, the draw's index in it, and its pipeline's debug-utils name or "pipeline K", K its order
+// of first use in the frame).
+std::string layer_draw_name(const nlohmann::json& draw, const std::string& pass_name,
+                            const std::string& pipeline);
 
 }  // namespace ds::capture
