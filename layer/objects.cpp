@@ -98,31 +98,41 @@ void note_render_pass(DeviceData& d, VkRenderPass pass, RenderPassInfo rp) {
     d.render_passes[pass] = std::move(rp);
 }
 
+// What a render pass's summary needs, from VkRenderPassCreateInfo or its "2" form;
+// `view_mask(i)`: subpass i's multiview mask.
+template <typename Info, typename ViewMask>
+RenderPassInfo render_pass_info(const Info& info, ViewMask view_mask) {
+    RenderPassInfo rp;
+    for (uint32_t i = 0; i < info.attachmentCount; ++i) {
+        rp.formats.push_back(info.pAttachments[i].format);
+        rp.samples.push_back(info.pAttachments[i].samples);
+    }
+    for (uint32_t i = 0; i < info.subpassCount; ++i) {
+        const auto& s = info.pSubpasses[i];
+        SubpassInfo sp;
+        if (s.pDepthStencilAttachment) sp.depth_attachment = s.pDepthStencilAttachment->attachment;
+        sp.view_mask = view_mask(i);
+        for (uint32_t c = 0; c < s.colorAttachmentCount; ++c)
+            sp.colors.push_back(s.pColorAttachments[c].attachment);
+        rp.subpasses.push_back(sp);
+    }
+    return rp;
+}
+
 VKAPI_ATTR VkResult VKAPI_CALL CreateRenderPass(VkDevice device, const VkRenderPassCreateInfo* info,
                                                 const VkAllocationCallbacks* alloc,
                                                 VkRenderPass* pass) {
     DeviceData& d = device_of(device);
     const VkResult r = d.t.CreateRenderPass(device, info, alloc, pass);
     if (r != VK_SUCCESS) return r;
-    RenderPassInfo rp;
-    for (uint32_t i = 0; i < info->attachmentCount; ++i) {
-        rp.formats.push_back(info->pAttachments[i].format);
-        rp.samples.push_back(info->pAttachments[i].samples);
-    }
     const VkRenderPassMultiviewCreateInfo* multiview = nullptr;
     for (auto* s = static_cast<const VkBaseInStructure*>(info->pNext); s; s = s->pNext)
         if (s->sType == VK_STRUCTURE_TYPE_RENDER_PASS_MULTIVIEW_CREATE_INFO)
             multiview = reinterpret_cast<const VkRenderPassMultiviewCreateInfo*>(s);
-    for (uint32_t i = 0; i < info->subpassCount; ++i) {
-        const VkSubpassDescription& s = info->pSubpasses[i];
-        SubpassInfo sp;
-        if (s.pDepthStencilAttachment) sp.depth_attachment = s.pDepthStencilAttachment->attachment;
-        if (multiview && i < multiview->subpassCount) sp.view_mask = multiview->pViewMasks[i];
-        for (uint32_t c = 0; c < s.colorAttachmentCount; ++c)
-            sp.colors.push_back(s.pColorAttachments[c].attachment);
-        rp.subpasses.push_back(sp);
-    }
-    note_render_pass(d, *pass, std::move(rp));
+    note_render_pass(d, *pass, render_pass_info(*info, [multiview](uint32_t i) {
+                         return multiview && i < multiview->subpassCount ? multiview->pViewMasks[i]
+                                                                         : 0u;
+                     }));
     return r;
 }
 
@@ -133,21 +143,9 @@ VKAPI_ATTR VkResult VKAPI_CALL CreateRenderPass2(VkDevice device,
     DeviceData& d = device_of(device);
     const VkResult r = d.t.CreateRenderPass2(device, info, alloc, pass);
     if (r != VK_SUCCESS) return r;
-    RenderPassInfo rp;
-    for (uint32_t i = 0; i < info->attachmentCount; ++i) {
-        rp.formats.push_back(info->pAttachments[i].format);
-        rp.samples.push_back(info->pAttachments[i].samples);
-    }
-    for (uint32_t i = 0; i < info->subpassCount; ++i) {
-        const VkSubpassDescription2& s = info->pSubpasses[i];
-        SubpassInfo sp;
-        if (s.pDepthStencilAttachment) sp.depth_attachment = s.pDepthStencilAttachment->attachment;
-        sp.view_mask = s.viewMask;
-        for (uint32_t c = 0; c < s.colorAttachmentCount; ++c)
-            sp.colors.push_back(s.pColorAttachments[c].attachment);
-        rp.subpasses.push_back(sp);
-    }
-    note_render_pass(d, *pass, std::move(rp));
+    note_render_pass(d, *pass, render_pass_info(*info, [info](uint32_t i) {
+                         return info->pSubpasses[i].viewMask;
+                     }));
     return r;
 }
 

@@ -126,7 +126,7 @@ class LayerUnchanged : public testing::TestWithParam<const char*> {};
 // depth test before it (it did: final.png differed).
 TEST_P(LayerUnchanged, LeavesTheApplicationsOutputUnchangedAndAddsNoValidationMessage) {
     const std::string sets = GetParam();
-    const auto dir = fresh_dir("layer_unchanged" + std::to_string(sets.size()));
+    const auto dir = fresh_dir("layer_unchanged_" + std::to_string(sets.size()));
     // --validate: any validation message makes depthscope exit 3 (the layer sits before it).
     const json layer = layer_capture("foliage", sets, dir, "--validate");
     ASSERT_FALSE(layer.at("draws").empty());
@@ -137,11 +137,16 @@ TEST_P(LayerUnchanged, LeavesTheApplicationsOutputUnchangedAndAddsNoValidationMe
     EXPECT_EQ(read_file(dir / "app" / "final.png"), read_file(dir / "plain" / "final.png"));
 }
 
+std::string unchanged_name(const testing::TestParamInfo<const char*>& info) {
+    const char* names[] = {"Default", "AlphaToCoverage", "SubpassPath"};
+    return names[info.index];
+}
+
+// Also seed 002's subpass path: a render pass of two subpasses with input attachments.
 INSTANTIATE_TEST_SUITE_P(Foliage, LayerUnchanged,
-                         testing::Values("", "--set msaa=4 --set alpha_to_coverage=on"),
-                         [](const auto& info) {
-                             return std::string(info.index == 0 ? "Default" : "AlphaToCoverage");
-                         });
+                         testing::Values("", "--set msaa=4 --set alpha_to_coverage=on",
+                                         "--set render_path=subpass --set msaa=4"),
+                         unchanged_name);
 
 TEST(Layer, EveryInstrumentedShaderPassesSpirvVal) {
     const auto dir = fresh_dir("layer_spirv_val");
