@@ -18,6 +18,7 @@
 #include "capture/capture_diff.h"
 #include "capture/diff_report.h"
 #include "capture/image_writer.h"
+#include "capture/layer_capture_data.h"
 #include "capture/layer_diff.h"
 #include "capture/output_dir.h"
 #include "capture/report.h"

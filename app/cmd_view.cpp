@@ -17,7 +17,7 @@
 #include "app/exit_code.h"
 #include "app/scene_load.h"
 #include "app/view_camera.h"
-#include "capture/layer_diff.h"
+#include "capture/layer_capture_data.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 #include "renderer/renderer.h"

@@ -9,27 +9,17 @@
 #include "capture/exr_file.h"
 #include "capture/file_output.h"
 #include "capture/image_writer.h"
+#include "capture/layer_capture_data.h"
 #include "capture/resource_files.h"
 #include "renderer/common/error.h"
 #include "renderer/common/version.h"
 #include "renderer/format/format.h"
-#include "renderer/view/heat.h"
 
 namespace ds::capture {
 
 namespace {
 
 using nlohmann::json;
-
-json read_layer_json(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    if (!in) throw Error(file.string() + ": cannot be read");
-    try {
-        return json::parse(in);
-    } catch (const json::exception& e) {
-        throw Error(file.string() + ": " + e.what());
-    }
-}
 
 std::vector<uint32_t> read_layer_pixels(const std::filesystem::path& file, size_t words) {
     std::vector<uint32_t> out(words);
@@ -51,12 +41,7 @@ json write_layer_count_image(const std::filesystem::path& dir, const std::string
         max = std::max(max, counts[i]);
         total += counts[i];
     }
-    std::vector<uint8_t> rgba(counts.size() * 4, 255);
-    for (size_t i = 0; i < counts.size(); ++i) {
-        const auto c = view::count_color(float(counts[i]), 0.0f, float(std::max<uint32_t>(max, 1)));
-        std::copy(c.begin(), c.end(), rgba.begin() + long(i * 4));
-    }
-    write_png_rgba8(dir / (stem + ".png"), width, height, rgba);
+    write_png_rgba8(dir / (stem + ".png"), width, height, count_heat_rgba(counts, max));
     ExrImage exr{width, height, {}};
     exr.channels.push_back({"count", true, {}, counts});
     write_exr(dir / (stem + ".exr"), exr);
@@ -109,7 +94,7 @@ std::string layer_draw_name(const json& draw, const std::string& pass,
 json write_layer_capture(const std::filesystem::path& layer_dir,
                          const std::filesystem::path& out_dir,
                          const std::vector<std::string>& command) {
-    const json raw = read_layer_json(layer_dir / "capture.json");
+    const json raw = read_json_file(layer_dir / "capture.json");
     json report = {{"tool", "depthscope"}, {"version", ds::version()}, {"source", "layer"}};
     for (const char* key : {"device", "application", "frame", "delimiter", "submissions",
                             "counter_set", "cost", "pipelines", "not_analysed"})

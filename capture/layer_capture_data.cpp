@@ -5,17 +5,50 @@
 
 #include "capture/exr_file.h"
 #include "renderer/common/error.h"
+#include "renderer/view/heat.h"
 
 namespace ds::capture {
+
+nlohmann::json read_json_file(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) throw Error(file.string() + ": cannot be read");
+    try {
+        return nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(file.string() + ": " + e.what());
+    }
+}
+
+nlohmann::json read_layer_report(const std::filesystem::path& dir) {
+    nlohmann::json report = read_json_file(dir / "report.json");
+    if (!report.is_object() || report.value("source", "") != "layer")
+        throw Error((dir / "report.json").string() + ": not a layer capture (depthscope layer)");
+    return report;
+}
+
+bool is_layer_capture(const std::filesystem::path& dir) {
+    try {
+        read_layer_report(dir);
+        return true;
+    } catch (const Error&) {
+        return false;
+    }
+}
+
+std::vector<uint8_t> count_heat_rgba(const std::vector<uint32_t>& counts, uint32_t max) {
+    const float white = float(std::max<uint32_t>(max, 1));
+    std::vector<uint8_t> rgba(counts.size() * 4, 255);
+    for (size_t i = 0; i < counts.size(); ++i) {
+        const auto c = view::count_color(float(counts[i]), 0.0f, white);
+        std::copy(c.begin(), c.end(), rgba.begin() + long(i * 4));
+    }
+    return rgba;
+}
 
 LayerCaptureData load_layer_capture(const std::filesystem::path& dir) {
     LayerCaptureData data;
     data.dir = dir;
-    std::ifstream in(dir / "report.json");
-    if (!in) throw Error((dir / "report.json").string() + ": cannot be read");
-    data.report = nlohmann::json::parse(in, nullptr, false);
-    if (!data.report.is_object() || data.report.value("source", "") != "layer")
-        throw Error((dir / "report.json").string() + ": not a layer capture (depthscope layer)");
+    data.report = read_layer_report(dir);
     try {
         for (const auto& pass : data.report.at("passes")) {
             if (!pass.contains("images")) continue;

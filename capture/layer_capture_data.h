@@ -32,4 +32,13 @@ inline constexpr std::array<const char*, 3> kLayerCountKinds = {"shaded", "disca
 // Throws ds::Error when `dir` is not a readable layer capture.
 LayerCaptureData load_layer_capture(const std::filesystem::path& dir);
 
+// A JSON file, or ds::Error "FILE: why" (unreadable, malformed).
+nlohmann::json read_json_file(const std::filesystem::path& file);
+// `dir`/report.json of a layer capture ("source": "layer"), or ds::Error.
+nlohmann::json read_layer_report(const std::filesystem::path& dir);
+bool is_layer_capture(const std::filesystem::path& dir);
+
+// Counts as the count heat map (view::count_color, black 0 .. white `max`), RGBA8.
+std::vector<uint8_t> count_heat_rgba(const std::vector<uint32_t>& counts, uint32_t max);
+
 }  // namespace ds::capture

@@ -1,8 +1,7 @@
 #include "capture/layer_diff.h"
 
-#include <fstream>
-
 #include "capture/exr_file.h"
+#include "capture/layer_capture_data.h"
 #include "renderer/common/error.h"
 
 namespace ds::capture {
@@ -10,16 +9,6 @@ namespace ds::capture {
 namespace {
 
 using nlohmann::json;
-
-json read_layer_report(const std::filesystem::path& dir) {
-    std::ifstream in(dir / "report.json");
-    if (!in) throw Error((dir / "report.json").string() + ": cannot be read");
-    try {
-        return json::parse(in);
-    } catch (const json::exception& e) {
-        throw Error((dir / "report.json").string() + ": " + e.what());
-    }
-}
 
 std::string layer_pass_shape(const json& p) {
     return p.value("name", "") + " " + std::to_string(p.value("width", 0)) + "x" +
@@ -71,13 +60,6 @@ void diff_layer_images(const std::filesystem::path& da, const std::filesystem::p
 }
 
 }  // namespace
-
-bool is_layer_capture(const std::filesystem::path& dir) {
-    std::ifstream in(dir / "report.json");
-    if (!in) return false;
-    const json report = json::parse(in, nullptr, false);
-    return report.is_object() && report.value("source", "") == "layer";
-}
 
 LayerDiff diff_layer_captures(const std::filesystem::path& da, const std::filesystem::path& db) {
     const json a = read_layer_report(da), b = read_layer_report(db);

@@ -12,8 +12,6 @@
 
 namespace ds::capture {
 
-bool is_layer_capture(const std::filesystem::path& dir);
-
 struct LayerDiff {
     bool comparable = true;                // the same passes
     std::vector<std::string> differences;  // one line each

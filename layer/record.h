@@ -11,7 +11,9 @@
 
 namespace ds::layer {
 
+// Passive (no DEPTHSCOPE_LAYER_OUT): nothing is kept, calls only pass through.
 inline void record(DeviceData& d, VkCommandBuffer cb, Op op, Payload payload, Call call) {
+    if (config().mode == Config::Mode::Passive) return;
     if (CommandBufferState* s = d.state(cb))
         s->commands.push_back({op, std::move(call), std::move(payload)});
 }

@@ -4,8 +4,6 @@
 
 #include <imgui.h>
 
-#include "renderer/view/heat.h"
-
 namespace ds::ui {
 
 namespace {
@@ -30,13 +28,7 @@ void LayerViewer::select(size_t image, size_t kind) {
     ++version_;
     if (image_ >= data_.images.size()) return;
     const capture::LayerPassImages& p = data_.images[image_];
-    const std::vector<uint32_t>& counts = p.counts[kind_];
-    const float white = float(std::max<uint32_t>(p.max[kind_], 1));
-    rgba_.resize(counts.size() * 4, 255);
-    for (size_t i = 0; i < counts.size(); ++i) {
-        const auto c = view::count_color(float(counts[i]), 0.0f, white);
-        std::copy(c.begin(), c.end(), rgba_.begin() + long(i * 4));
-    }
+    rgba_ = capture::count_heat_rgba(p.counts[kind_], p.max[kind_]);
 }
 
 void LayerViewer::draw(TargetSize target) {
