@@ -12,6 +12,7 @@
 #include "capture/layer_capture.h"
 #include "capture/layer_frames.h"
 #include "capture/output_dir.h"
+#include "renderer/common/layer_settings.h"
 #include "renderer/common/error.h"
 
 namespace ds::app {
@@ -37,17 +38,19 @@ class TempDir {
     std::filesystem::path path_;
 };
 
-// The layer's settings as DEPTHSCOPE_LAYER_SETTINGS. It has none yet (issue 29 adds the
-// Z-fight and EQUAL checks): every name is unknown.
+// The layer's settings as DEPTHSCOPE_LAYER_SETTINGS ("k=v;k=v"), refused here when the layer
+// would not take them (renderer/common/layer_settings.h).
 std::string settings_text(const std::vector<std::string>& sets) {
+    std::map<std::string, std::string> pairs;
     std::string out;
     for (const std::string& s : sets) {
         const auto eq = s.find('=');
         if (eq == std::string::npos || eq == 0 || s.find(';') != std::string::npos)
             throw UsageError("--set expects NAME=VALUE, got '" + s + "'");
-        throw UsageError("layer: unknown setting '" + s.substr(0, eq) +
-                         "' (the layer has no settings yet)");
+        pairs[s.substr(0, eq)] = s.substr(eq + 1);
+        out += (out.empty() ? "" : ";") + s;
     }
+    parse_layer_settings(pairs);
     return out;
 }
 

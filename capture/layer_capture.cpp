@@ -10,6 +10,7 @@
 #include "capture/file_output.h"
 #include "capture/image_writer.h"
 #include "capture/layer_capture_data.h"
+#include "capture/layer_depth_report.h"
 #include "capture/resource_files.h"
 #include "renderer/common/error.h"
 #include "renderer/common/version.h"
@@ -29,26 +30,13 @@ std::vector<uint32_t> read_layer_pixels(const std::filesystem::path& file, size_
     return out;
 }
 
-// One count image of a pass: PNG as the heat map over 0..max, EXR raw.
+// One count image of a pass (component of 4-word pixels).
 json write_layer_count_image(const std::filesystem::path& dir, const std::string& stem,
                              uint32_t width, uint32_t height, const std::vector<uint32_t>& px,
                              uint32_t component) {
     std::vector<uint32_t> counts(size_t(width) * height);
-    uint32_t max = 0;
-    uint64_t total = 0;
-    for (size_t i = 0; i < counts.size(); ++i) {
-        counts[i] = px[i * 4 + component];
-        max = std::max(max, counts[i]);
-        total += counts[i];
-    }
-    write_png_rgba8(dir / (stem + ".png"), width, height, count_heat_rgba(counts, max));
-    ExrImage exr{width, height, {}};
-    exr.channels.push_back({"count", true, {}, counts});
-    write_exr(dir / (stem + ".exr"), exr);
-    return {{"png", "resources/" + stem + ".png"},
-            {"exr", "resources/" + stem + ".exr"},
-            {"max", max},
-            {"total", total}};
+    for (size_t i = 0; i < counts.size(); ++i) counts[i] = px[i * 4 + component];
+    return write_layer_image(dir, stem, width, height, counts);
 }
 
 std::string layer_pass_name(const json& pass) {
@@ -77,10 +65,34 @@ json layer_pass_entry(const std::filesystem::path& layer_dir, const std::filesys
         {"shaded", write_layer_count_image(dir, stem + "_shaded", w, h, pixels, 0)},
         {"discarded", write_layer_count_image(dir, stem + "_discarded", w, h, pixels, 1)},
         {"rasterized", write_layer_count_image(dir, stem + "_rasterized", w, h, pixels, 2)}};
+    // The Z-fight competitors and the EQUAL check's marks (zfight, equal_check).
+    for (const auto& [key, marks] : {std::pair{"zfight", false}, std::pair{"equal_check", true}}) {
+        if (!pass.contains(key)) continue;
+        const std::string file = pass.at(key).at("file");
+        entry[key].erase("file");
+        entry["images"][key] = write_layer_image(
+            dir, stem + "_" + key, w, h, read_layer_pixels(layer_dir / file, size_t(w) * h), marks);
+    }
     return entry;
 }
 
 }  // namespace
+
+json write_layer_image(const std::filesystem::path& dir, const std::string& stem, uint32_t width,
+                       uint32_t height, const std::vector<uint32_t>& values, bool marks) {
+    const uint32_t max = values.empty() ? 0 : *std::max_element(values.begin(), values.end());
+    uint64_t total = 0;
+    for (uint32_t v : values) total += v;
+    write_png_rgba8(dir / (stem + ".png"), width, height,
+                    marks ? marks_rgba(values) : count_heat_rgba(values, max));
+    ExrImage exr{width, height, {}};
+    exr.channels.push_back({marks ? "mark" : "count", true, {}, values});
+    write_exr(dir / (stem + ".exr"), exr);
+    return {{"png", "resources/" + stem + ".png"},
+            {"exr", "resources/" + stem + ".exr"},
+            {"max", max},
+            {"total", total}};
+}
 
 std::string layer_draw_name(const json& draw, const std::string& pass,
                             const std::string& pipeline) {
@@ -100,7 +112,7 @@ json write_layer_capture(const std::filesystem::path& layer_dir,
                             "counter_set", "cost", "pipelines", "not_analysed"})
         report[key] = raw.at(key);
     report["command"] = command;
-    std::map<std::string, int> stems;
+    std::map<std::string, int> stems;  // pass name -> how many passes had it
     json passes = json::array();
     for (const json& p : raw.at("passes"))
         passes.push_back(layer_pass_entry(layer_dir, out_dir, p, stems));
@@ -119,6 +131,8 @@ json write_layer_capture(const std::filesystem::path& layer_dir,
     }
     report["passes"] = passes;
     report["draws"] = draws;
+    report["settings"] = raw.at("settings");
+    add_layer_depth_sections(report);
     // The instrumented fragment shaders, as the device ran them (spirv-val, spirv-dis).
     if (std::filesystem::exists(layer_dir / "shaders"))
         std::filesystem::copy(layer_dir / "shaders", out_dir / "shaders",

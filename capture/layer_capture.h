@@ -18,6 +18,12 @@ nlohmann::json write_layer_capture(const std::filesystem::path& layer_dir,
                                    const std::filesystem::path& out_dir,
                                    const std::vector<std::string>& command);
 
+// One per-pixel image of a layer capture: `dir`/STEM.png (the count heat map over 0..max, or
+// with `marks` the EQUAL check's palette: 0 none, 1 hole, 2 tie) and STEM.exr (exact, UINT).
+nlohmann::json write_layer_image(const std::filesystem::path& dir, const std::string& stem,
+                                 uint32_t width, uint32_t height,
+                                 const std::vector<uint32_t>& values, bool marks = false);
+
 // A draw's name: its innermost debug-utils label, else "PASS draw N (PIPELINE)" (the pass's
 // name, the draw's index in it, and its pipeline's debug-utils name or "pipeline K", K its order
 // of first use in the frame).

@@ -45,6 +45,17 @@ std::vector<uint8_t> count_heat_rgba(const std::vector<uint32_t>& counts, uint32
     return rgba;
 }
 
+std::vector<uint8_t> marks_rgba(const std::vector<uint32_t>& marks) {
+    std::vector<uint8_t> rgba(marks.size() * 4, 0);
+    for (size_t i = 0; i < marks.size(); ++i) {
+        if (marks[i] == 0) continue;
+        const bool hole = marks[i] == 1;
+        const uint8_t c[4] = {255, uint8_t(hole ? 0 : 230), uint8_t(hole ? 255 : 0), 255};
+        std::copy(c, c + 4, rgba.begin() + long(i * 4));
+    }
+    return rgba;
+}
+
 LayerCaptureData load_layer_capture(const std::filesystem::path& dir) {
     LayerCaptureData data;
     data.dir = dir;

@@ -40,5 +40,7 @@ bool is_layer_capture(const std::filesystem::path& dir);
 
 // Counts as the count heat map (view::count_color, black 0 .. white `max`), RGBA8.
 std::vector<uint8_t> count_heat_rgba(const std::vector<uint32_t>& counts, uint32_t max);
+// EQUAL check marks as colours: 0 transparent black, 1 (hole) magenta, 2 (tie) yellow.
+std::vector<uint8_t> marks_rgba(const std::vector<uint32_t>& marks);
 
 }  // namespace ds::capture

@@ -40,11 +40,21 @@ void diff_layer_draw(const json& a, const json& b, const std::string& pass, Laye
 void diff_layer_images(const std::filesystem::path& da, const std::filesystem::path& db,
                        const json& pa, const json& pb, LayerDiff& out) {
     if (!pa.contains("images")) return;
+    // Counts, or the EQUAL check's marks.
+    const auto values = [](const ExrImage& e) {
+        const ExrChannel* c = e.find("count");
+        return c ? c : e.find("mark");
+    };
     for (const auto& [kind, image] : pa.at("images").items()) {
+        ++out.images;
+        if (!pb.contains("images") || !pb.at("images").contains(kind)) {
+            out.differences.push_back(pa.value("name", "") + " " + kind + ": only in the first");
+            ++out.differing_images;
+            continue;
+        }
         const ExrImage a = read_exr(da / image.at("exr").get<std::string>());
         const ExrImage b = read_exr(db / pb.at("images").at(kind).at("exr").get<std::string>());
-        const ExrChannel *ca = a.find("count"), *cb = b.find("count");
-        ++out.images;
+        const ExrChannel *ca = values(a), *cb = values(b);
         if (!ca || !cb || a.width != b.width || a.height != b.height) {
             out.differences.push_back(pa.value("name", "") + " " + kind + ": not comparable");
             ++out.differing_images;

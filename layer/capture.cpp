@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "layer/capture_depth.h"
 #include "layer/capture_output.h"
 #include "layer/capture_state.h"
 #include "layer/typed.h"
@@ -11,6 +12,10 @@ namespace ds::layer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+// The depth records a submission holds, on average per pixel of its depth passes (the winner
+// and one competitor), and at most.
+constexpr uint64_t kRecordsPerPixel = 2;
+constexpr uint64_t kMaxRecords = uint64_t(1) << 26;
 
 FrameCapture& frame_capture(DeviceData& d) {
     if (!d.capture) d.capture = new FrameCapture(d);
@@ -51,14 +56,20 @@ class Replacement {
             recordable_.push_back(states.size() && states.back() == s ? s : nullptr);
         }
         plan_ = plan_submission(d, states);
-        std::vector<VkExtent2D> pixels;
+        std::vector<VkExtent2D> pixels, depth_pixels;
+        uint64_t records = 0;
+        const bool depth = config().settings.depth_records();
         for (size_t i = 0; i < plan_.passes.size(); ++i) {
             const PassSummary& p = plan_.passes[i];
             pixels.push_back(plan_.pass_counted[i] ? VkExtent2D{p.x + p.width, p.y + p.height}
                                                    : VkExtent2D{0, 0});
+            depth_pixels.push_back(depth ? pixels.back() : VkExtent2D{0, 0});
+            records += uint64_t(depth_pixels.back().width) * depth_pixels.back().height *
+                       kRecordsPerPixel;
         }
-        res_ = std::make_unique<CaptureResources>(d, fc_.pipelines.set_layout(),
-                                                  plan_.counted_draws, pixels);
+        res_ = std::make_unique<CaptureResources>(
+            d, fc_.pipelines.set_layout(), plan_.counted_draws, pixels, depth_pixels,
+            uint32_t(std::min<uint64_t>(records, kMaxRecords)));
         if (!res_->ok()) fc_.not_analysed.push_back("the frame's counters: " + res_->error());
     }
 
@@ -86,7 +97,10 @@ class Replacement {
 
 std::vector<VkCommandBuffer> Replacement::record() {
     if (!res_->ok()) return app_;
-    recorder_ = std::make_unique<CountingRecorder>(d_, fc_.pipelines, *res_, plan_, fc_.labels);
+    recorder_ = std::make_unique<CountingRecorder>(
+        d_, fc_.pipelines, *res_, plan_, fc_.labels,
+        CountingRecorder::Bases{uint32_t(fc_.passes.size()), uint32_t(fc_.draws.size())},
+        fc_.depth_passes);
     std::vector<VkCommandBuffer> out;
     for (size_t i = 0; i < app_.size(); ++i) {
         if (!recordable_[i]) {
@@ -109,11 +123,13 @@ std::vector<VkCommandBuffer> Replacement::record() {
         d_.t.EndCommandBuffer(cb);
         out.push_back(cb);
     }
+    recorder_->prepare(config().settings.zfight_steps);
     return out;
 }
 
 void Replacement::read_back(uint32_t pass_base) {
     if (!recorder_) return;
+    const CountingRecorder::Bases bases{pass_base, uint32_t(fc_.draws.size())};
     for (const std::string& n : recorder_->notes) fc_.not_analysed.push_back(n);
     for (size_t i = 0; i < plan_.passes.size(); ++i) {
         CapturedPass p{plan_.passes[i], plan_.pass_counted[i], fc_.submissions, {}, 0, 0};
@@ -139,7 +155,11 @@ void Replacement::read_back(uint32_t pass_base) {
         }
         fc_.draws.push_back(std::move(r));
     }
-    fc_.counter_bytes = std::max(fc_.counter_bytes, res_->bytes());
+    read_depth_records(fc_, *res_, *recorder_, plan_, bases);
+    if (res_->bytes() > fc_.counter_bytes) {
+        fc_.counter_bytes = res_->bytes();
+        fc_.depth_record_bytes = config().settings.depth_records() ? res_->depth_record_bytes() : 0;
+    }
 }
 
 template <typename Submit>

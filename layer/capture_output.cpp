@@ -31,6 +31,50 @@ const char* draw_kind(DrawKind k) {
     return "draw";
 }
 
+// A per-pixel image of a pass: 4-byte words, row-major.
+std::string write_words(const std::filesystem::path& out, const std::string& file,
+                        const std::vector<uint32_t>& words) {
+    std::ofstream(out / file, std::ios::binary)
+        .write(reinterpret_cast<const char*>(words.data()), std::streamsize(words.size() * 4));
+    return file;
+}
+
+json draw_instance_json(const DrawInstance& d) {
+    json j = {{"draw", d.draw}};
+    if (d.instance != UINT32_MAX) j["instance"] = d.instance;
+    return j;
+}
+
+json zfight_json(const DepthPassAnalysis& z, const std::filesystem::path& out, size_t pass) {
+    json pairs = json::array();
+    for (const DepthPair& p : z.pairs)
+        pairs.push_back({{"a", draw_instance_json(p.a)},
+                         {"b", draw_instance_json(p.b)},
+                         {"pixels", p.pixels},
+                         {"min_steps", p.min_steps}});
+    return {{"pixels", z.pixels},
+            {"pairs", pairs},
+            {"records", z.records},
+            {"dropped_records", z.dropped},
+            {"file", write_words(out, "passes/" + std::to_string(pass) + ".zfight.bin",
+                                 z.competitors)}};
+}
+
+json equal_json(const EqualCheckResult& e, const std::filesystem::path& out, size_t pass) {
+    json surfaces = json::array();
+    for (const auto& [who, counts] : e.by_winner) {
+        json j = draw_instance_json(who);
+        j["holes"] = counts.first;
+        j["multiple"] = counts.second;
+        surfaces.push_back(j);
+    }
+    return {{"prepass", e.prepass},
+            {"holes", e.holes},
+            {"multiple", e.multiple},
+            {"surfaces", surfaces},
+            {"file", write_words(out, "passes/" + std::to_string(pass) + ".equal.bin", e.marks)}};
+}
+
 json passes_json(const FrameCapture& fc, const std::filesystem::path& out) {
     json passes = json::array();
     std::filesystem::create_directories(out / "passes");
@@ -49,6 +93,8 @@ json passes_json(const FrameCapture& fc, const std::filesystem::path& out) {
                        std::streamsize(p.pixels.size() * 4));
             j["pixels"] = {{"file", file}, {"width", p.pixel_width}, {"height", p.pixel_height}};
         }
+        if (p.zfight) j["zfight"] = zfight_json(*p.zfight, out, i);
+        if (p.equal) j["equal_check"] = equal_json(*p.equal, out, i);
         passes.push_back(j);
     }
     return passes;
@@ -65,6 +111,12 @@ json draws_json(const FrameCapture& fc) {
                   {"kind", draw_kind(d.args.kind)},
                   {"count", d.args.count},
                   {"instances", d.args.instances}};
+        j["depth"] = {{"test", d.depth.test},
+                      {"write", d.depth.write},
+                      {"compare_op", int(d.depth.op)}};
+        if (d.depth_recorded) j["depth_recorded"] = true;
+        if (d.equal_counted) j["equal_prepass"] = d.equal_prepass;
+        if (!d.depth_why.empty()) j["depth_not_analysed"] = d.depth_why;
         if (d.not_analysed.empty()) {
             j["shaded"] = r.counts.shaded;
             j["discarded"] = r.counts.discarded;
@@ -89,6 +141,12 @@ json pipelines_json(const FrameCapture& fc, const std::filesystem::path& out) {
                   {"early_fragment_tests_added", p.early_tests_added},
                   {"discard_sites", p.discard_sites}};
         if (!p.why.empty()) j["not_analysed"] = p.why;
+        if (!p.depth_record_why.empty()) j["depth_record_not_analysed"] = p.depth_record_why;
+        if (!p.equal_why.empty()) j["equal_not_analysed"] = p.equal_why;
+        if (p.depth_record) j["instance_known"] = p.instance_known;
+        if (!p.survival_spirv.empty())
+            j["survival_spirv"] = write_words(out, "shaders/" + hex(uint64_t(app)) + ".survival.spv",
+                                              p.survival_spirv);
         if (!p.instrumented.empty()) {
             const std::string file = "shaders/" + hex(uint64_t(app)) + ".spv";
             std::ofstream(out / file, std::ios::binary)
@@ -127,11 +185,16 @@ void write_capture(DeviceData& d, const FrameCapture& fc, const std::string& out
         {"delimiter", process().presenting ? "present" : "submission"},
         {"submissions", fc.submissions},
         {"counter_set", d.counter_set},
+        {"settings",
+         {{"zfight", config().settings.zfight},
+          {"zfight_steps", config().settings.zfight_steps},
+          {"equal_check", config().settings.equal_check}}},
         {"cost",
          {{"capture_ms", fc.capture_ms},
           {"pipeline_build_ms", fc.pipelines.build_ms()},
           {"pipelines_built", fc.pipelines.all().size()},
           {"counter_bytes", fc.counter_bytes},
+          {"depth_record_bytes", fc.depth_record_bytes},
           // The application's pipeline and shader module creation so far: in the layers
           // below, and with this layer's copies of their recipes (not armed: no counting copy).
           {"creation_ms_below", double(d.creation_next_ns) / 1e6},

@@ -10,16 +10,18 @@
 namespace ds::layer {
 
 CountingPipelines::CountingPipelines(DeviceData& d) : d_(d) {
-    VkDescriptorSetLayoutBinding bindings[2] = {};
-    for (uint32_t i = 0; i < 2; ++i) {
+    // Draw and pixel counters, depth records per pass (dynamic offsets), the record buffer.
+    VkDescriptorSetLayoutBinding bindings[4] = {};
+    for (uint32_t i = 0; i < 4; ++i) {
         bindings[i].binding = i;
-        bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC;
+        bindings[i].descriptorType = i < 3 ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC
+                                           : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         bindings[i].descriptorCount = 1;
         bindings[i].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
     }
     auto l = typed<VkDescriptorSetLayoutCreateInfo>(
         VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-    l.bindingCount = 2;
+    l.bindingCount = 4;
     l.pBindings = bindings;
     d.t.CreateDescriptorSetLayout(d.device, &l, nullptr, &set_layout_);
     l.bindingCount = 0;
@@ -29,8 +31,11 @@ CountingPipelines::CountingPipelines(DeviceData& d) : d_(d) {
 CountingPipelines::~CountingPipelines() {
     for (auto& [app, p] : pipelines_) {
         if (p.counting && p.counting != app) d_.t.DestroyPipeline(d_.device, p.counting, nullptr);
-        if (p.measure) d_.t.DestroyPipeline(d_.device, p.measure, nullptr);
+        for (VkPipeline own : {p.measure, p.depth_record, p.equal})
+            if (own) d_.t.DestroyPipeline(d_.device, own, nullptr);
     }
+    for (auto& [extent, fb] : framebuffers_) d_.t.DestroyFramebuffer(d_.device, fb, nullptr);
+    if (empty_pass_) d_.t.DestroyRenderPass(d_.device, empty_pass_, nullptr);
     for (auto& [app, l] : layouts_) d_.t.DestroyPipelineLayout(d_.device, l.first, nullptr);
     for (VkShaderModule m : modules_) d_.t.DestroyShaderModule(d_.device, m, nullptr);
     d_.t.DestroyDescriptorSetLayout(d_.device, set_layout_, nullptr);
@@ -96,7 +101,11 @@ const CountingPipeline& CountingPipelines::get(VkPipeline app) {
         else
             copy = std::make_unique<PipelineRecipe>(*it->second.recipe);
     }
-    if (copy) build(p, std::move(*copy));
+    if (copy) {
+        const PipelineRecipe original = *copy;
+        build(p, std::move(*copy));
+        build_depth(p, original);
+    }
     build_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
                                                            start).count();
     return p;

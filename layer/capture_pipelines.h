@@ -31,7 +31,22 @@ struct CountingPipeline {
     bool dynamic_stencil_test = false, dynamic_depth_bounds = false;
     std::vector<uint32_t> instrumented;   // the rewritten fragment SPIR-V (for spirv-val)
     std::vector<uint32_t> measure_spirv;  // the measurement draw's fragment shader
+
+    // Depth state as created (dynamic values are the recorder's) and the vertex bindings read.
+    bool depth_test = false, depth_write = false;
+    VkCompareOp compare_op = VK_COMPARE_OP_ALWAYS;
+    bool dynamic_compare_op = false;
+    std::vector<uint32_t> vertex_bindings;
+    // zfight / equal_check (capture_pipelines_depth.cpp): `depth_record` re-draws in the
+    // layer's attachment-less pass, `equal` in the application's pass; a reason when absent.
+    VkPipeline depth_record = VK_NULL_HANDLE, equal = VK_NULL_HANDLE;
+    std::string depth_record_why, equal_why;
+    bool instance_known = false;            // the vertex stage hands gl_InstanceIndex on
+    std::vector<uint32_t> survival_spirv;   // depth_record's fragment shader (for spirv-val)
 };
+
+// The last stage before rasterization (geometry, else tessellation evaluation, else vertex).
+const StageRecipe* last_geometry_stage(const PipelineRecipe& r);
 
 class CountingPipelines {
   public:
@@ -45,12 +60,20 @@ class CountingPipelines {
     const CountingPipeline& get(VkPipeline app);
     const std::map<VkPipeline, CountingPipeline>& all() const { return pipelines_; }
     double build_ms() const { return build_ms_; }
+    // The layer's attachment-less render pass and a framebuffer of `extent` for it.
+    VkRenderPass empty_pass();
+    VkFramebuffer framebuffer(VkExtent2D extent);
 
   private:
     VkShaderModule module(const std::vector<uint32_t>& code);
     VkPipelineLayout extended_layout(VkPipelineLayout app, uint32_t& app_sets, std::string& why);
     void build(CountingPipeline& p, PipelineRecipe recipe_copy);
     void build_measure(CountingPipeline& p, PipelineRecipe& r);
+    void build_depth(CountingPipeline& p, const PipelineRecipe& r);
+    void build_depth_record(CountingPipeline& p, PipelineRecipe r);
+    void build_equal(CountingPipeline& p, PipelineRecipe r);
+    std::vector<uint32_t> survival(CountingPipeline& p, PipelineRecipe& r, bool early_tests,
+                                   uint32_t instance_location, std::string& why);
 
     DeviceData& d_;
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
@@ -59,6 +82,8 @@ class CountingPipelines {
     std::map<VkPipelineLayout, std::pair<VkPipelineLayout, uint32_t>> layouts_;
     std::map<VkPipeline, CountingPipeline> pipelines_;
     double build_ms_ = 0;
+    VkRenderPass empty_pass_ = VK_NULL_HANDLE;
+    std::map<std::pair<uint32_t, uint32_t>, VkFramebuffer> framebuffers_;
 };
 
 }  // namespace ds::layer

@@ -54,10 +54,7 @@ void CountingPipelines::build(CountingPipeline& p, PipelineRecipe r) {
         p.why = "the counting copy of the pipeline failed to build";
 }
 
-namespace {
-
-// The last stage before rasterization (geometry, else tessellation evaluation, else vertex):
-// the measurement shader mirrors its outputs.
+// The measurement shader mirrors its outputs.
 const StageRecipe* last_geometry_stage(const PipelineRecipe& r) {
     for (VkShaderStageFlagBits stage :
          {VK_SHADER_STAGE_GEOMETRY_BIT, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT,
@@ -66,8 +63,6 @@ const StageRecipe* last_geometry_stage(const PipelineRecipe& r) {
             if (s.stage == stage) return &s;
     return nullptr;
 }
-
-}  // namespace
 
 void CountingPipelines::build_measure(CountingPipeline& p, PipelineRecipe& original) {
     PipelineRecipe r = original;

@@ -18,8 +18,15 @@ SubmissionPlan plan_submission(DeviceData& d, const std::vector<const CommandBuf
 
 CountingRecorder::CountingRecorder(DeviceData& d, CountingPipelines& pipelines,
                                    CaptureResources& res, const SubmissionPlan& plan,
-                                   std::vector<std::string> labels)
-    : d_(d), pipelines_(pipelines), res_(res), plan_(plan), labels_(std::move(labels)) {}
+                                   std::vector<std::string> labels, Bases bases,
+                                   std::vector<DepthWritingPass> earlier)
+    : d_(d),
+      pipelines_(pipelines),
+      res_(res),
+      plan_(plan),
+      labels_(std::move(labels)),
+      bases_(bases),
+      depth_passes_(std::move(earlier)) {}
 
 void CountingRecorder::record(const CommandBufferState& cb, VkCommandBuffer out) {
     out_ = out;
@@ -28,7 +35,10 @@ void CountingRecorder::record(const CommandBufferState& cb, VkCommandBuffer out)
         d_.t.CmdResetQueryPool(out_, res_.queries(), 0, plan_.counted_draws);
     sets_ = {};
     app_pipeline_ = bound_pipeline_ = VK_NULL_HANDLE;
-    for (const Command& c : cb.commands) step(c);
+    index_.reset();
+    vertex_.clear();
+    cb_ = &cb;
+    for (command_ = 0; command_ < cb.commands.size(); ++command_) step(cb.commands[command_]);
     // The counters are read on the host once the submission is done.
     auto barrier = VkMemoryBarrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr,
                                    VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_HOST_READ_BIT};
@@ -48,13 +58,30 @@ void CountingRecorder::step(const Command& c) {
             break;
         }
         case Op::BindSets: bind_sets(std::get<BindSetsArgs>(c.payload)); break;
-        case Op::BeginRenderPass: begin_pass(false); break;
-        case Op::NextSubpass: begin_pass(false); break;
-        case Op::BeginRendering:
-            begin_pass(std::get<RenderingArgs>(c.payload).resuming);
+        case Op::BeginRenderPass:
+            begin_pass(false);
+            instance_first_pass_ = pass_;
+            instance_cb_ = cb_;
+            suspending_ = false;
             break;
+        case Op::NextSubpass: begin_pass(false); break;
+        case Op::BeginRendering: {
+            const auto& a = std::get<RenderingArgs>(c.payload);
+            begin_pass(a.resuming);
+            if (!a.resuming) {
+                instance_first_pass_ = pass_;
+                instance_cb_ = cb_;
+            }
+            suspending_ = a.suspending;
+            break;
+        }
         case Op::EndRenderPass:
-        case Op::EndRendering: in_pass_ = false; break;
+        case Op::EndRendering:
+            in_pass_ = false;
+            c.call(d_.t, out_);
+            if (!suspending_) end_render_pass_instance();
+            return;
+        case Op::State: track_state(c); break;
         case Op::Draw: draw(c); return;
         case Op::BeginLabel: labels_.push_back(std::get<LabelArgs>(c.payload).name); break;
         case Op::EndLabel:

@@ -36,12 +36,10 @@ void CountingRecorder::draw(const Command& c) {
 
 void CountingRecorder::counted_draw(const Command& c, const CountingPipeline& p,
                                     CapturedDraw& draw) {
+    depth_draw(p, draw);
     const VkPipeline counting = p.has_fragment ? p.counting : app_pipeline_;
     use_pipeline(counting);
-    const VkDescriptorSet set = res_.set();
-    const uint32_t offsets[2] = {res_.draw_offset(draw.slot), res_.pass_offset(draw.pass)};
-    d_.t.CmdBindDescriptorSets(out_, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout, d_.counter_set, 1,
-                               &set, 2, offsets);
+    bind_counters(p.layout, draw);
     d_.t.CmdBeginQuery(out_, res_.queries(), draw.slot, VK_QUERY_CONTROL_PRECISE_BIT);
     c.call(d_.t, out_);
     d_.t.CmdEndQuery(out_, res_.queries(), draw.slot);
@@ -51,6 +49,7 @@ void CountingRecorder::counted_draw(const Command& c, const CountingPipeline& p,
     set_dynamic_depth(p, false);
     c.call(d_.t, out_);
     set_dynamic_depth(p, true);
+    if (draw.equal_counted) equal_draw(c, p, draw);
     use_pipeline(counting);
     restore_sets(p.app_sets);
 }

@@ -1,6 +1,7 @@
 #pragma once
 // What the chosen frame's capture has gathered so far (capture.h).
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@ struct CapturedPass {
     uint32_t submission = 0;
     std::vector<uint32_t> pixels;  // width x height x 4 (shaded, discarded, rasterized, 0)
     uint32_t pixel_width = 0, pixel_height = 0;
+    std::optional<DepthPassAnalysis> zfight;  // a pass with depth records
+    std::optional<EqualCheckResult> equal;    // a pass with EQUAL re-draws
 };
 
 struct CapturedDrawResult {
@@ -33,8 +36,11 @@ struct FrameCapture {
     std::vector<std::string> not_analysed;
     std::vector<std::string> labels;  // debug-utils labels open across command buffers
     uint32_t submissions = 0;
+    std::vector<DepthWritingPass> depth_passes;       // for the EQUAL check's matching
+    std::map<uint32_t, PrepassWinners> winners;       // by frame pass, with depth records
     double capture_ms = 0;           // the layer's extra time in the captured frame
     VkDeviceSize counter_bytes = 0;  // the largest submission's counters
+    VkDeviceSize depth_record_bytes = 0;  // of which the depth records (zfight, equal_check)
 };
 
 }  // namespace ds::layer

@@ -48,8 +48,27 @@ struct RenderingArgs {  // vkCmdBeginRendering
 enum class DrawKind : uint8_t { Draw, Indexed, Indirect, IndexedIndirect, IndirectCount, IndexedIndirectCount };
 struct DrawArgs {
     DrawKind kind;
-    uint32_t count;     // vertices or indices (direct), draws (indirect: the maximum)
-    uint32_t instances; // direct draws
+    uint32_t count;      // vertices or indices (direct), draws (indirect: the maximum)
+    uint32_t instances;  // direct draws
+    uint32_t first = 0;  // firstVertex or firstIndex (direct draws)
+    int32_t vertex_offset = 0;
+    uint32_t first_instance = 0;
+    VkBuffer indirect = VK_NULL_HANDLE;  // indirect draws: the buffer and offset
+    VkDeviceSize indirect_offset = 0;
+    bool indexed() const {
+        return kind == DrawKind::Indexed || kind == DrawKind::IndexedIndirect ||
+               kind == DrawKind::IndexedIndirectCount;
+    }
+};
+struct VertexBuffersArgs {  // vkCmdBindVertexBuffers(2)
+    uint32_t first;
+    std::vector<VkBuffer> buffers;
+    std::vector<VkDeviceSize> offsets;
+};
+struct IndexBufferArgs {  // vkCmdBindIndexBuffer
+    VkBuffer buffer;
+    VkDeviceSize offset;
+    VkIndexType type;
 };
 struct LabelArgs {
     std::string name;
@@ -59,9 +78,10 @@ struct QueryArgs {
     uint32_t query;
     bool begin;
 };
-struct DynamicDepthArgs {  // vkCmdSet{DepthTest,DepthWrite,StencilTest,DepthBoundsTest}Enable
-    enum Which : uint8_t { DepthTest, DepthWrite, StencilTest, DepthBoundsTest } which;
-    VkBool32 value;
+// vkCmdSet{DepthTest,DepthWrite,StencilTest,DepthBoundsTest}Enable, vkCmdSetDepthCompareOp
+struct DynamicDepthArgs {
+    enum Which : uint8_t { DepthTest, DepthWrite, StencilTest, DepthBoundsTest, CompareOp } which;
+    uint32_t value;  // a VkBool32, or a VkCompareOp
 };
 struct ExecuteArgs {
     std::vector<VkCommandBuffer> secondaries;
@@ -69,6 +89,7 @@ struct ExecuteArgs {
 
 enum class Op : uint8_t {
     Other,  // replayed as recorded
+    State,  // replayed as recorded; sets state only (viewport, buffers, push constants, ...)
     BindPipeline,
     BindSets,
     BeginRenderPass,
@@ -86,7 +107,7 @@ enum class Op : uint8_t {
 
 using Payload = std::variant<std::monostate, BindPipelineArgs, BindSetsArgs, RenderPassArgs,
                              RenderingArgs, DrawArgs, LabelArgs, QueryArgs, DynamicDepthArgs,
-                             ExecuteArgs>;
+                             ExecuteArgs, VertexBuffersArgs, IndexBufferArgs>;
 
 struct Command {
     Op op = Op::Other;

@@ -36,6 +36,7 @@ Config Config::from_environment() {
     } else {
         c.error = "DEPTHSCOPE_LAYER_MODE is neither list nor capture";
     }
+    std::map<std::string, std::string> settings;
     std::istringstream pairs(env("DEPTHSCOPE_LAYER_SETTINGS"));
     for (std::string pair; std::getline(pairs, pair, ';');) {
         const auto eq = pair.find('=');
@@ -43,7 +44,12 @@ Config Config::from_environment() {
             c.error = "DEPTHSCOPE_LAYER_SETTINGS: '" + pair + "' is not k=v";
             continue;
         }
-        c.settings[pair.substr(0, eq)] = pair.substr(eq + 1);
+        settings[pair.substr(0, eq)] = pair.substr(eq + 1);
+    }
+    try {
+        c.settings = parse_layer_settings(settings);
+    } catch (const Error& e) {
+        c.error = e.what();
     }
     if (!c.error.empty()) c.mode = Mode::Passive;
     return c;

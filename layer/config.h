@@ -3,13 +3,15 @@
 //   DEPTHSCOPE_LAYER_OUT       the folder it writes (none: the layer only passes calls on)
 //   DEPTHSCOPE_LAYER_MODE      list | capture
 //   DEPTHSCOPE_LAYER_FRAME     the frame to capture (from 1)
-//   DEPTHSCOPE_LAYER_SETTINGS  k=v pairs separated by ';' (unused so far)
+//   DEPTHSCOPE_LAYER_SETTINGS  k=v pairs separated by ';' (renderer/common/layer_settings.h)
 //   DEPTHSCOPE_LAYER_LOG       1: a line on stderr per device and submission (debugging)
 #include <cstdint>
 #include <map>
 #include <string>
 
 #include <cstdio>
+
+#include "renderer/common/layer_settings.h"
 
 namespace ds::layer {
 
@@ -18,7 +20,7 @@ struct Config {
     Mode mode = Mode::Passive;
     std::string out;
     uint64_t frame = 0;
-    std::map<std::string, std::string> settings;
+    LayerSettings settings;
     std::string error;  // what was wrong with the environment (the layer then stays passive)
     bool log = false;
 

@@ -22,6 +22,7 @@ struct PassSummary {
     uint32_t x = 0, y = 0;           // and offset
     uint32_t view_mask = 0;
     VkFormat depth_format = VK_FORMAT_UNDEFINED;  // UNDEFINED: no depth attachment
+    VkImage depth_image = VK_NULL_HANDLE;         // its image, where the layer knows it
     uint32_t samples = 1;
     uint32_t draws = 0;
 };

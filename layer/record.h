@@ -25,11 +25,20 @@ inline void unrecordable(DeviceData& d, VkCommandBuffer cb, const std::string& w
 
 // A command whose arguments are all values: passed on, and recorded as they are.
 template <typename Pfn, typename... Args>
-void plain(VkCommandBuffer cb, Pfn DeviceTable::*fn, Args... args) {
+void plain_as(Op op, VkCommandBuffer cb, Pfn DeviceTable::*fn, Args... args) {
     DeviceData& d = device_of(cb);
     (d.t.*fn)(cb, args...);
-    record(d, cb, Op::Other, {},
+    record(d, cb, op, {},
            [fn, args...](const DeviceTable& t, VkCommandBuffer c) { (t.*fn)(c, args...); });
+}
+template <typename Pfn, typename... Args>
+void plain(VkCommandBuffer cb, Pfn DeviceTable::*fn, Args... args) {
+    plain_as(Op::Other, cb, fn, args...);
+}
+// The same for a command that only sets state (replayed by the Z-fight re-draws too).
+template <typename Pfn, typename... Args>
+void plain_state(VkCommandBuffer cb, Pfn DeviceTable::*fn, Args... args) {
+    plain_as(Op::State, cb, fn, args...);
 }
 
 template <typename T>

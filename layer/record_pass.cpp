@@ -168,33 +168,33 @@ void draw(VkCommandBuffer cb, DrawArgs a, Pfn DeviceTable::*fn, Args... args) {
 
 VKAPI_ATTR void VKAPI_CALL CmdDraw(VkCommandBuffer cb, uint32_t n, uint32_t inst, uint32_t first,
                                    uint32_t first_inst) {
-    draw(cb, {DrawKind::Draw, n, inst}, &DeviceTable::CmdDraw, n, inst, first, first_inst);
+    draw(cb, {DrawKind::Draw, n, inst, first, 0, first_inst}, &DeviceTable::CmdDraw, n, inst, first, first_inst);
 }
 VKAPI_ATTR void VKAPI_CALL CmdDrawIndexed(VkCommandBuffer cb, uint32_t n, uint32_t inst,
                                           uint32_t first, int32_t offset, uint32_t first_inst) {
-    draw(cb, {DrawKind::Indexed, n, inst}, &DeviceTable::CmdDrawIndexed, n, inst, first, offset,
+    draw(cb, {DrawKind::Indexed, n, inst, first, offset, first_inst}, &DeviceTable::CmdDrawIndexed, n, inst, first, offset,
          first_inst);
 }
 VKAPI_ATTR void VKAPI_CALL CmdDrawIndirect(VkCommandBuffer cb, VkBuffer b, VkDeviceSize o,
                                            uint32_t n, uint32_t stride) {
-    draw(cb, {DrawKind::Indirect, n, 0}, &DeviceTable::CmdDrawIndirect, b, o, n, stride);
+    draw(cb, {DrawKind::Indirect, n, 0, 0, 0, 0, b, o}, &DeviceTable::CmdDrawIndirect, b, o, n, stride);
 }
 VKAPI_ATTR void VKAPI_CALL CmdDrawIndexedIndirect(VkCommandBuffer cb, VkBuffer b, VkDeviceSize o,
                                                   uint32_t n, uint32_t stride) {
-    draw(cb, {DrawKind::IndexedIndirect, n, 0}, &DeviceTable::CmdDrawIndexedIndirect, b, o, n,
+    draw(cb, {DrawKind::IndexedIndirect, n, 0, 0, 0, 0, b, o}, &DeviceTable::CmdDrawIndexedIndirect, b, o, n,
          stride);
 }
 VKAPI_ATTR void VKAPI_CALL CmdDrawIndirectCount(VkCommandBuffer cb, VkBuffer b, VkDeviceSize o,
                                                 VkBuffer cb_buf, VkDeviceSize co, uint32_t n,
                                                 uint32_t stride) {
-    draw(cb, {DrawKind::IndirectCount, n, 0}, &DeviceTable::CmdDrawIndirectCount, b, o, cb_buf,
+    draw(cb, {DrawKind::IndirectCount, n, 0, 0, 0, 0, b, o}, &DeviceTable::CmdDrawIndirectCount, b, o, cb_buf,
          co, n, stride);
 }
 VKAPI_ATTR void VKAPI_CALL CmdDrawIndexedIndirectCount(VkCommandBuffer cb, VkBuffer b,
                                                        VkDeviceSize o, VkBuffer cb_buf,
                                                        VkDeviceSize co, uint32_t n,
                                                        uint32_t stride) {
-    draw(cb, {DrawKind::IndexedIndirectCount, n, 0}, &DeviceTable::CmdDrawIndexedIndirectCount, b,
+    draw(cb, {DrawKind::IndexedIndirectCount, n, 0, 0, 0, 0, b, o}, &DeviceTable::CmdDrawIndexedIndirectCount, b,
          o, cb_buf, co, n, stride);
 }
 

@@ -20,7 +20,7 @@ VKAPI_ATTR void VKAPI_CALL CmdSetViewport(VkCommandBuffer cb, uint32_t first, ui
                                           const VkViewport* v) {
     DeviceData& d = device_of(cb);
     d.t.CmdSetViewport(cb, first, n, v);
-    record(d, cb, Op::Other, {}, [first, v = copy(v, n)](const DeviceTable& t, VkCommandBuffer c) {
+    record(d, cb, Op::State, {}, [first, v = copy(v, n)](const DeviceTable& t, VkCommandBuffer c) {
         t.CmdSetViewport(c, first, uint32_t(v.size()), v.data());
     });
 }
@@ -29,7 +29,7 @@ VKAPI_ATTR void VKAPI_CALL CmdSetScissor(VkCommandBuffer cb, uint32_t first, uin
                                          const VkRect2D* r) {
     DeviceData& d = device_of(cb);
     d.t.CmdSetScissor(cb, first, n, r);
-    record(d, cb, Op::Other, {}, [first, r = copy(r, n)](const DeviceTable& t, VkCommandBuffer c) {
+    record(d, cb, Op::State, {}, [first, r = copy(r, n)](const DeviceTable& t, VkCommandBuffer c) {
         t.CmdSetScissor(c, first, uint32_t(r.size()), r.data());
     });
 }
@@ -38,7 +38,7 @@ VKAPI_ATTR void VKAPI_CALL CmdSetViewportWithCount(VkCommandBuffer cb, uint32_t 
                                                    const VkViewport* v) {
     DeviceData& d = device_of(cb);
     d.t.CmdSetViewportWithCount(cb, n, v);
-    record(d, cb, Op::Other, {}, [v = copy(v, n)](const DeviceTable& t, VkCommandBuffer c) {
+    record(d, cb, Op::State, {}, [v = copy(v, n)](const DeviceTable& t, VkCommandBuffer c) {
         t.CmdSetViewportWithCount(c, uint32_t(v.size()), v.data());
     });
 }
@@ -47,38 +47,38 @@ VKAPI_ATTR void VKAPI_CALL CmdSetScissorWithCount(VkCommandBuffer cb, uint32_t n
                                                   const VkRect2D* r) {
     DeviceData& d = device_of(cb);
     d.t.CmdSetScissorWithCount(cb, n, r);
-    record(d, cb, Op::Other, {}, [r = copy(r, n)](const DeviceTable& t, VkCommandBuffer c) {
+    record(d, cb, Op::State, {}, [r = copy(r, n)](const DeviceTable& t, VkCommandBuffer c) {
         t.CmdSetScissorWithCount(c, uint32_t(r.size()), r.data());
     });
 }
 
 VKAPI_ATTR void VKAPI_CALL CmdSetLineWidth(VkCommandBuffer cb, float w) {
-    plain(cb, &DeviceTable::CmdSetLineWidth, w);
+    plain_state(cb, &DeviceTable::CmdSetLineWidth, w);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetDepthBias(VkCommandBuffer cb, float c, float clamp, float s) {
-    plain(cb, &DeviceTable::CmdSetDepthBias, c, clamp, s);
+    plain_state(cb, &DeviceTable::CmdSetDepthBias, c, clamp, s);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetBlendConstants(VkCommandBuffer cb, const float k[4]) {
     DeviceData& d = device_of(cb);
     d.t.CmdSetBlendConstants(cb, k);
     std::array<float, 4> v{k[0], k[1], k[2], k[3]};
-    record(d, cb, Op::Other, {},
+    record(d, cb, Op::State, {},
            [v](const DeviceTable& t, VkCommandBuffer c) { t.CmdSetBlendConstants(c, v.data()); });
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetDepthBounds(VkCommandBuffer cb, float lo, float hi) {
-    plain(cb, &DeviceTable::CmdSetDepthBounds, lo, hi);
+    plain_state(cb, &DeviceTable::CmdSetDepthBounds, lo, hi);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetStencilCompareMask(VkCommandBuffer cb, VkStencilFaceFlags f,
                                                     uint32_t m) {
-    plain(cb, &DeviceTable::CmdSetStencilCompareMask, f, m);
+    plain_state(cb, &DeviceTable::CmdSetStencilCompareMask, f, m);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetStencilWriteMask(VkCommandBuffer cb, VkStencilFaceFlags f,
                                                   uint32_t m) {
-    plain(cb, &DeviceTable::CmdSetStencilWriteMask, f, m);
+    plain_state(cb, &DeviceTable::CmdSetStencilWriteMask, f, m);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetStencilReference(VkCommandBuffer cb, VkStencilFaceFlags f,
                                                   uint32_t r) {
-    plain(cb, &DeviceTable::CmdSetStencilReference, f, r);
+    plain_state(cb, &DeviceTable::CmdSetStencilReference, f, r);
 }
 
 VKAPI_ATTR void VKAPI_CALL CmdBindDescriptorSets(VkCommandBuffer cb, VkPipelineBindPoint bp,
@@ -97,14 +97,19 @@ VKAPI_ATTR void VKAPI_CALL CmdBindDescriptorSets(VkCommandBuffer cb, VkPipelineB
 
 VKAPI_ATTR void VKAPI_CALL CmdBindIndexBuffer(VkCommandBuffer cb, VkBuffer b, VkDeviceSize o,
                                               VkIndexType type) {
-    plain(cb, &DeviceTable::CmdBindIndexBuffer, b, o, type);
+    DeviceData& d = device_of(cb);
+    d.t.CmdBindIndexBuffer(cb, b, o, type);
+    record(d, cb, Op::State, IndexBufferArgs{b, o, type},
+           [b, o, type](const DeviceTable& t, VkCommandBuffer c) {
+               t.CmdBindIndexBuffer(c, b, o, type);
+           });
 }
 
 VKAPI_ATTR void VKAPI_CALL CmdBindVertexBuffers(VkCommandBuffer cb, uint32_t first, uint32_t n,
                                                 const VkBuffer* b, const VkDeviceSize* o) {
     DeviceData& d = device_of(cb);
     d.t.CmdBindVertexBuffers(cb, first, n, b, o);
-    record(d, cb, Op::Other, {},
+    record(d, cb, Op::State, VertexBuffersArgs{first, copy(b, n), copy(o, n)},
            [first, b = copy(b, n), o = copy(o, n)](const DeviceTable& t, VkCommandBuffer c) {
                t.CmdBindVertexBuffers(c, first, uint32_t(b.size()), b.data(), o.data());
            });
@@ -116,7 +121,7 @@ VKAPI_ATTR void VKAPI_CALL CmdBindVertexBuffers2(VkCommandBuffer cb, uint32_t fi
                                                  const VkDeviceSize* strides) {
     DeviceData& d = device_of(cb);
     d.t.CmdBindVertexBuffers2(cb, first, n, b, o, sizes, strides);
-    record(d, cb, Op::Other, {},
+    record(d, cb, Op::State, VertexBuffersArgs{first, copy(b, n), copy(o, n)},
            [first, n, b = copy(b, n), o = copy(o, n), s = copy(sizes, n),
             st = copy(strides, n)](const DeviceTable& t, VkCommandBuffer c) {
                t.CmdBindVertexBuffers2(c, first, n, b.data(), o.data(), data_or_null(s),
@@ -131,7 +136,7 @@ VKAPI_ATTR void VKAPI_CALL CmdPushConstants(VkCommandBuffer cb, VkPipelineLayout
     d.t.CmdPushConstants(cb, layout, stages, offset, size, values);
     std::vector<uint8_t> bytes(size);
     std::memcpy(bytes.data(), values, size);
-    record(d, cb, Op::Other, {},
+    record(d, cb, Op::State, {},
            [layout, stages, offset, bytes](const DeviceTable& t, VkCommandBuffer c) {
                t.CmdPushConstants(c, layout, stages, offset, uint32_t(bytes.size()),
                                   bytes.data());
@@ -139,33 +144,36 @@ VKAPI_ATTR void VKAPI_CALL CmdPushConstants(VkCommandBuffer cb, VkPipelineLayout
 }
 
 VKAPI_ATTR void VKAPI_CALL CmdSetDeviceMask(VkCommandBuffer cb, uint32_t mask) {
-    plain(cb, &DeviceTable::CmdSetDeviceMask, mask);
+    plain_state(cb, &DeviceTable::CmdSetDeviceMask, mask);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetCullMode(VkCommandBuffer cb, VkCullModeFlags m) {
-    plain(cb, &DeviceTable::CmdSetCullMode, m);
+    plain_state(cb, &DeviceTable::CmdSetCullMode, m);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetFrontFace(VkCommandBuffer cb, VkFrontFace f) {
-    plain(cb, &DeviceTable::CmdSetFrontFace, f);
+    plain_state(cb, &DeviceTable::CmdSetFrontFace, f);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetPrimitiveTopology(VkCommandBuffer cb, VkPrimitiveTopology p) {
-    plain(cb, &DeviceTable::CmdSetPrimitiveTopology, p);
+    plain_state(cb, &DeviceTable::CmdSetPrimitiveTopology, p);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetDepthCompareOp(VkCommandBuffer cb, VkCompareOp op) {
-    plain(cb, &DeviceTable::CmdSetDepthCompareOp, op);
+    DeviceData& d = device_of(cb);
+    d.t.CmdSetDepthCompareOp(cb, op);
+    record(d, cb, Op::DynamicDepth, DynamicDepthArgs{DynamicDepthArgs::CompareOp, uint32_t(op)},
+           [op](const DeviceTable& t, VkCommandBuffer c) { t.CmdSetDepthCompareOp(c, op); });
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetStencilOp(VkCommandBuffer cb, VkStencilFaceFlags f,
                                            VkStencilOp fail, VkStencilOp pass,
                                            VkStencilOp depth_fail, VkCompareOp op) {
-    plain(cb, &DeviceTable::CmdSetStencilOp, f, fail, pass, depth_fail, op);
+    plain_state(cb, &DeviceTable::CmdSetStencilOp, f, fail, pass, depth_fail, op);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetRasterizerDiscardEnable(VkCommandBuffer cb, VkBool32 e) {
-    plain(cb, &DeviceTable::CmdSetRasterizerDiscardEnable, e);
+    plain_state(cb, &DeviceTable::CmdSetRasterizerDiscardEnable, e);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetDepthBiasEnable(VkCommandBuffer cb, VkBool32 e) {
-    plain(cb, &DeviceTable::CmdSetDepthBiasEnable, e);
+    plain_state(cb, &DeviceTable::CmdSetDepthBiasEnable, e);
 }
 VKAPI_ATTR void VKAPI_CALL CmdSetPrimitiveRestartEnable(VkCommandBuffer cb, VkBool32 e) {
-    plain(cb, &DeviceTable::CmdSetPrimitiveRestartEnable, e);
+    plain_state(cb, &DeviceTable::CmdSetPrimitiveRestartEnable, e);
 }
 
 // The depth and stencil switches the measurement draw turns off and back on.

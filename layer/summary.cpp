@@ -9,6 +9,7 @@ struct Walker {
     std::vector<PassSummary> passes;
     std::vector<std::string> labels;
     const RenderPassInfo* render_pass = nullptr;
+    std::vector<VkImageView> attachments;  // the render pass instance's views
     bool in_pass = false;
 
     std::string label() const { return labels.empty() ? "" : labels.back(); }
@@ -27,16 +28,27 @@ struct Walker {
             if (depth != VK_ATTACHMENT_UNUSED && depth < render_pass->formats.size()) {
                 p.depth_format = render_pass->formats[depth];
                 p.samples = render_pass->samples[depth];
+                if (depth < attachments.size()) p.depth_image = image_of(attachments[depth]);
             }
         }
         passes.push_back(p);
         in_pass = true;
     }
 
+    // Under device.mutex.
+    VkImage image_of(VkImageView view) const {
+        auto it = device.views.find(view);
+        return it == device.views.end() ? VK_NULL_HANDLE : it->second.image;
+    }
+
     void begin_render_pass(const RenderPassArgs& a) {
         std::lock_guard lock(device.mutex);
         auto it = device.render_passes.find(a.render_pass);
         render_pass = it == device.render_passes.end() ? nullptr : &it->second;
+        attachments = a.attachments;
+        if (auto fb = device.framebuffers.find(a.framebuffer);
+            attachments.empty() && fb != device.framebuffers.end())
+            attachments = fb->second.views;
         subpass(0, a.area);
     }
 
@@ -56,7 +68,10 @@ struct Walker {
         if (a.depth_view != VK_NULL_HANDLE) {
             std::lock_guard lock(device.mutex);
             auto it = device.views.find(a.depth_view);
-            if (it != device.views.end()) p.depth_format = it->second.format;
+            if (it != device.views.end()) {
+                p.depth_format = it->second.format;
+                p.depth_image = it->second.image;
+            }
         }
         passes.push_back(p);
         in_pass = true;
@@ -68,6 +83,7 @@ struct Walker {
             case Op::NextSubpass:
                 if (!passes.empty()) {
                     const PassSummary last = passes.back();
+                    std::lock_guard lock(device.mutex);
                     subpass(last.subpass + 1,
                             {{int32_t(last.x), int32_t(last.y)}, {last.width, last.height}});
                 }
@@ -90,7 +106,7 @@ struct Walker {
 }  // namespace
 
 std::vector<PassSummary> summarize(DeviceData& device, const CommandBufferState& cb) {
-    Walker w{device, {}, {}};
+    Walker w{device, {}, {}, nullptr, {}, false};
     for (const Command& c : cb.commands) w.step(c);
     return w.passes;
 }

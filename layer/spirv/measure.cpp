@@ -278,34 +278,32 @@ void copy_names(const Module& stage, const std::unordered_map<uint32_t, uint32_t
 }
 
 // Fragment entry point "main" with `inputs` (and FragCoord, and from SPIR-V 1.4 on the
-// buffers) in its interface; its body counts the fragment rasterized.
-void add_entry(Module& fs, const Counters& c, const std::vector<uint32_t>& inputs) {
+// buffers) in its interface; its body counts the fragment rasterized (`c` null: does nothing).
+void add_entry(Module& fs, const Counters* c, const std::vector<uint32_t>& inputs) {
     const uint32_t void_type = fs.type(spv::OpTypeVoid, {});
     const uint32_t function_type = fs.type(spv::OpTypeFunction, {void_type});
     const uint32_t main = fs.new_id();
     std::vector<uint32_t> ep{spv::ExecutionModelFragment, main};
     for (uint32_t w : string_words("main")) ep.push_back(w);
     ep.insert(ep.end(), inputs.begin(), inputs.end());
-    ep.push_back(c.frag_coord);
-    if (fs.version() >= kSpirv14) ep.insert(ep.end(), {c.draw, c.pixel});
+    if (c) ep.push_back(c->frag_coord);
+    if (c && fs.version() >= kSpirv14) ep.insert(ep.end(), {c->draw, c->pixel});
     fs.add(Section::EntryPoint, spv::OpEntryPoint, std::move(ep));
     fs.add(Section::ExecutionMode, spv::OpExecutionMode, {main, spv::ExecutionModeOriginUpperLeft});
     add_name(fs, main, "main");
 
-    const uint32_t slot = fs.constant(c.uint_type, kRasterizedSlot);
     std::vector<Instruction>& body = fs.section(Section::Function);
     body.push_back(
         {spv::OpFunction, {void_type, main, spv::FunctionControlMaskNone, function_type}});
     body.push_back({spv::OpLabel, {fs.new_id()}});
-    emit_count(fs, c, slot, body);
+    if (c) emit_count(fs, *c, fs.constant(c->uint_type, kRasterizedSlot), body);
     body.push_back({spv::OpReturn, {}});
     body.push_back({spv::OpFunctionEnd, {}});
 }
 
-}  // namespace
-
-std::vector<uint32_t> measurement_fragment(std::span<const uint32_t> spirv, std::string_view entry,
-                                           const CounterBindings& b) {
+// The fragment shader mirroring `spirv`'s entry's outputs; `b` null: it counts nothing.
+std::vector<uint32_t> mirroring_fragment(std::span<const uint32_t> spirv, std::string_view entry,
+                                         const CounterBindings* b) {
     const Module stage(spirv);
     const size_t ep =
         find_entry_point(stage, entry,
@@ -314,7 +312,7 @@ std::vector<uint32_t> measurement_fragment(std::span<const uint32_t> spirv, std:
     if (ep == SIZE_MAX)
         throw Error("SPIR-V: the module has no Vertex, TessellationEvaluation or Geometry " +
                     ("entry point named \"" + std::string(entry) + "\""));
-    if (b.draw_binding == b.pixel_binding)
+    if (b && b->draw_binding == b->pixel_binding)
         throw Error("SPIR-V measure: the draw and pixel counters need different bindings");
     const StageIndex s = index_stage(stage);
 
@@ -324,7 +322,8 @@ std::vector<uint32_t> measurement_fragment(std::span<const uint32_t> spirv, std:
     fs.add(Section::Capability, spv::OpCapability, {spv::CapabilityShader});
     fs.add(Section::MemoryModel, spv::OpMemoryModel,
            {spv::AddressingModelLogical, spv::MemoryModelGLSL450});
-    const Counters c = add_counter_globals(fs, b);
+    Counters c;
+    if (b) c = add_counter_globals(fs, *b);
 
     TypeCopier types(s, fs);
     std::vector<uint32_t> inputs;
@@ -336,8 +335,20 @@ std::vector<uint32_t> measurement_fragment(std::span<const uint32_t> spirv, std:
     copies.insert(types.structs().begin(), types.structs().end());
     add_capabilities(stage, types, fs);
     copy_names(stage, copies, fs);
-    add_entry(fs, c, inputs);
+    add_entry(fs, b ? &c : nullptr, inputs);
     return fs.words();
+}
+
+}  // namespace
+
+std::vector<uint32_t> measurement_fragment(std::span<const uint32_t> spirv, std::string_view entry,
+                                           const CounterBindings& b) {
+    return mirroring_fragment(spirv, entry, &b);
+}
+
+std::vector<uint32_t> passthrough_fragment(std::span<const uint32_t> spirv,
+                                           std::string_view entry) {
+    return mirroring_fragment(spirv, entry, nullptr);
 }
 
 }  // namespace ds::layer

@@ -40,5 +40,9 @@ namespace ds::layer {
 // bindings in `b`.
 std::vector<uint32_t> measurement_fragment(std::span<const uint32_t> stage, std::string_view entry,
                                            const CounterBindings& b);
+// The same module without counters or FragCoord: `main` does nothing. What the Z-fight and
+// EQUAL re-draws of a pipeline without a fragment shader rewrite (survival.h).
+std::vector<uint32_t> passthrough_fragment(std::span<const uint32_t> stage,
+                                           std::string_view entry);
 
 }  // namespace ds::layer

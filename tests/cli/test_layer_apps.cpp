@@ -41,7 +41,11 @@ json comparable(const json& report) {
             for (auto& [kind, image] : c["images"].items()) c["images"][kind] = image.at("total");
         passes.push_back(c);
     }
-    return {{"draws", draws}, {"passes", passes}, {"not_analysed", report.at("not_analysed")}};
+    return {{"draws", draws},
+            {"passes", passes},
+            {"not_analysed", report.at("not_analysed")},
+            {"zfight", report.value("zfight", json())},
+            {"equal_check", report.value("equal_check", json())}};
 }
 
 TEST(LayerVkcube, ListsFramesAndCapturesFrameFiveLiveAndReplayed) {
@@ -63,8 +67,11 @@ TEST(LayerVkcube, ListsFramesAndCapturesFrameFiveLiveAndReplayed) {
         gfxr.string() + " GFXRECON_CAPTURE_FILE_TIMESTAMP=false vkcube --validate --c 8");
     ASSERT_EQ(record.exit_code, 0) << record.err;
     ASSERT_TRUE(std::filesystem::exists(gfxr)) << record.err;
-    const ProcessResult live = under_xvfb(
-        layer("--frame 5 --out " + (dir / "live").string() + " -- vkcube --validate --c 8"));
+    // With the Z-fight and EQUAL checks on: a cube has no coplanar surfaces and no EQUAL pass.
+    const std::string checks = "--set zfight=on --set equal_check=on ";
+    const ProcessResult live = under_xvfb(layer("--frame 5 " + checks + "--out " +
+                                                (dir / "live").string() +
+                                                " -- vkcube --validate --c 8"));
     ASSERT_EQ(live.exit_code, 0) << live.err;
     EXPECT_EQ((live.out + live.err).find("VALIDATION"), std::string::npos) << live.out << live.err;
     const json a = json::parse(read_file(dir / "live" / "report.json"));
@@ -76,9 +83,14 @@ TEST(LayerVkcube, ListsFramesAndCapturesFrameFiveLiveAndReplayed) {
     EXPECT_EQ(draw.at("shaded"), draw.at("rasterized"));
     EXPECT_EQ(draw.at("samples_passed"), draw.at("rasterized"));
     EXPECT_EQ(a.at("pipelines")[0].at("early_z"), "guaranteed");
+    EXPECT_EQ(a.at("zfight").at("pairs").size(), 0u) << a.at("zfight").dump();
+    EXPECT_EQ(a.at("zfight").at("pixels"), 0);
+    EXPECT_EQ(draw.value("depth_recorded", false), true) << draw.dump();
+    EXPECT_EQ(a.at("equal_check").at("holes"), 0);
 
-    const ProcessResult replay = under_xvfb(layer("--frame 5 --out " + (dir / "replay").string() +
-                                                  " -- gfxrecon-replay " + gfxr.string()));
+    const ProcessResult replay =
+        under_xvfb(layer("--frame 5 " + checks + "--out " + (dir / "replay").string() +
+                         " -- gfxrecon-replay " + gfxr.string()));
     ASSERT_EQ(replay.exit_code, 0) << replay.err;
     const json b = json::parse(read_file(dir / "replay" / "report.json"));
     EXPECT_EQ(comparable(a), comparable(b));
@@ -86,7 +98,7 @@ TEST(LayerVkcube, ListsFramesAndCapturesFrameFiveLiveAndReplayed) {
     const ProcessResult diff =
         run_depthscope("diff " + (dir / "live").string() + " " + (dir / "replay").string());
     EXPECT_EQ(diff.exit_code, 0) << diff.out << diff.err;
-    EXPECT_EQ(diff.out.rfind("same: 1 draws and 3 count images equal", 0), 0u) << diff.out;
+    EXPECT_EQ(diff.out.rfind("same: 1 draws and 4 count images equal", 0), 0u) << diff.out;
     // The inspector opens it read-only (no scene to render again) in a real window.
     const ProcessResult view = under_xvfb(std::string(DS_EXECUTABLE) + " view --capture " +
                                           (dir / "live").string() + " --frames 10");
@@ -103,8 +115,14 @@ TEST(LayerLauncher, RefusesBadInputWithOneLine) {
     expect_one_error_line(run_depthscope("layer --list -- no-such-app-here"), 1,
                           "no-such-app-here");
     expect_one_error_line(run_depthscope("layer --frame 0 -- vkcube"), 2, "--frame");
-    expect_one_error_line(run_depthscope("layer --list --set zfight=on -- vkcube"), 2,
-                          "unknown setting 'zfight'");
+    expect_one_error_line(run_depthscope("layer --list --set bogus=on -- vkcube"), 2,
+                          "unknown setting 'bogus'");
+    expect_one_error_line(run_depthscope("layer --list --set zfight=maybe -- vkcube"), 2,
+                          "expects on or off");
+    expect_one_error_line(run_depthscope("layer --list --set zfight_steps=2000 -- vkcube"), 2,
+                          "from 0 to 1024");
+    expect_one_error_line(run_depthscope("layer --list --set zfight_steps=-1 -- vkcube"), 2,
+                          "from 0 to 1024");
     // A frame that never comes: the application (depthscope, two submissions) ends first.
     const auto out = dir / "never";
     expect_one_error_line(
