@@ -52,8 +52,8 @@ void add_frag_coord(Module& m, Counters& c) {
     add_name(m, c.frag_coord, "ds_FragCoord");
 }
 
-// A Block struct of `members` uints (and a trailing runtime array of them when `runtime` is
-// set), std430 offsets, in a StorageBuffer variable at (set, binding). Returns the variable.
+}  // namespace
+
 uint32_t add_buffer(Module& m, const Counters& c, std::string_view type_name, uint32_t set,
                     uint32_t binding, uint32_t runtime_array) {
     const uint32_t block = m.new_id();
@@ -74,21 +74,6 @@ uint32_t add_buffer(Module& m, const Counters& c, std::string_view type_name, ui
     add_name(m, variable, std::string("ds_") + std::string(type_name));
     return variable;
 }
-
-// Appends instructions with a result to a block of function code.
-struct Emitter {
-    Module& m;
-    std::vector<Instruction>& out;
-
-    uint32_t operator()(spv::Op op, uint32_t type, std::vector<uint32_t> operands) {
-        const uint32_t id = m.new_id();
-        operands.insert(operands.begin(), {type, id});
-        out.push_back({op, std::move(operands)});
-        return id;
-    }
-};
-
-}  // namespace
 
 void add_name(Module& m, uint32_t id, std::string_view text) {
     std::vector<uint32_t> operands = string_words(text);
@@ -127,7 +112,7 @@ size_t find_entry_point(const Module& m, std::string_view name,
     return SIZE_MAX;
 }
 
-Counters add_counter_globals(Module& m, const CounterBindings& b) {
+Counters add_common_globals(Module& m) {
     Counters c;
     c.uint_type = m.type(spv::OpTypeInt, {32, 0});
     c.bool_type = m.type(spv::OpTypeBool, {});
@@ -137,19 +122,57 @@ Counters add_counter_globals(Module& m, const CounterBindings& b) {
     c.four = m.constant(c.uint_type, 4);
     c.scope = vulkan_memory_model(m) ? m.constant(c.uint_type, spv::ScopeQueueFamily)
                                      : m.constant(c.uint_type, spv::ScopeDevice);
+    return c;
+}
 
-    const uint32_t counts = m.new_id();
-    m.add(Section::Global, spv::OpTypeRuntimeArray, {counts, c.uint_type});
-    m.add(Section::Annotation, spv::OpDecorate, {counts, spv::DecorationArrayStride, 4});
+uint32_t add_uint_runtime_array(Module& m, uint32_t uint_type) {
+    const uint32_t id = m.new_id();
+    m.add(Section::Global, spv::OpTypeRuntimeArray, {id, uint_type});
+    m.add(Section::Annotation, spv::OpDecorate, {id, spv::DecorationArrayStride, 4});
+    return id;
+}
+
+void require_storage_buffer_class(Module& m) {
+    if (m.version() < kSpirv13 && !has_extension(m, kStorageBufferExtension))
+        m.add(Section::Extension, spv::OpExtension, string_words(kStorageBufferExtension));
+}
+
+Counters add_counter_globals(Module& m, const CounterBindings& b) {
+    Counters c = add_common_globals(m);
+    const uint32_t counts = add_uint_runtime_array(m, c.uint_type);
     c.draw = add_buffer(m, c, "DrawCounters", b.set, b.draw_binding, 0);
     c.pixel = add_buffer(m, c, "PixelCounters", b.set, b.pixel_binding, counts);
     c.uint_pointer = m.new_id();
     m.add(Section::Global, spv::OpTypePointer,
           {c.uint_pointer, spv::StorageClassStorageBuffer, c.uint_type});
-
-    if (m.version() < kSpirv13 && !has_extension(m, kStorageBufferExtension))
-        m.add(Section::Extension, spv::OpExtension, string_words(kStorageBufferExtension));
+    require_storage_buffer_class(m);
     return c;
+}
+
+std::unordered_set<uint32_t> non_semantic_sets(const Module& m) {
+    std::unordered_set<uint32_t> out;
+    for (const Instruction& in : m.section(Section::ExtInstImport))
+        if (read_string(std::span(in.operands).subspan(1)).starts_with("NonSemantic."))
+            out.insert(in.operand(0));
+    return out;
+}
+
+bool leads_first_block(const Instruction& in, const std::unordered_set<uint32_t>& debug_sets) {
+    return in.op == spv::OpVariable || in.op == spv::OpLine || in.op == spv::OpNoLine ||
+           (in.op == spv::OpExtInst && debug_sets.contains(in.operand(2)));
+}
+
+size_t function_start(const Module& m, uint32_t function) {
+    const std::unordered_set<uint32_t> debug_sets = non_semantic_sets(m);
+    const std::vector<Instruction>& code = m.section(Section::Function);
+    size_t i = 0;
+    while (i < code.size() && !(code[i].op == spv::OpFunction && code[i].operand(1) == function))
+        ++i;
+    while (i < code.size() && code[i].op != spv::OpLabel && code[i].op != spv::OpFunctionEnd) ++i;
+    if (i == code.size() || code[i].op != spv::OpLabel)
+        throw Error("SPIR-V: the entry point's function has no body in the module");
+    for (++i; i < code.size() && leads_first_block(code[i], debug_sets);) ++i;
+    return i;
 }
 
 void emit_count(Module& m, const Counters& c, uint32_t slot, std::vector<Instruction>& out) {

@@ -69,16 +69,6 @@ bool may_add_early_tests(const Module& m, uint32_t entry_fn, std::span<const uin
     return true;
 }
 
-// The ids of the module's non-semantic extended instruction sets (their OpExtInst may sit
-// among a function's OpVariables).
-std::unordered_set<uint32_t> non_semantic_sets(const Module& m) {
-    std::unordered_set<uint32_t> out;
-    for (const Instruction& in : m.section(Section::ExtInstImport))
-        if (read_string(std::span(in.operands).subspan(1)).starts_with("NonSemantic."))
-            out.insert(in.operand(0));
-    return out;
-}
-
 // What the walk over the functions found.
 struct Walk {
     uint32_t discard_sites = 0;
@@ -91,16 +81,12 @@ struct Walk {
 // discarded count before every discard of any function.
 Walk instrument_functions(Module& m, const Counters& c, uint32_t entry_fn) {
     const std::unordered_set<uint32_t> debug_sets = non_semantic_sets(m);
-    auto leads_block = [&](const Instruction& in) {
-        return in.op == spv::OpVariable || in.op == spv::OpLine || in.op == spv::OpNoLine ||
-               (in.op == spv::OpExtInst && debug_sets.contains(in.operand(2)));
-    };
     enum class Start { Before, AwaitLabel, InFirstBlock, Done } start = Start::Before;
     Walk walk;
     uint32_t function = 0;
     std::vector<Instruction> out;
     for (Instruction& in : m.section(Section::Function)) {
-        if (start == Start::InFirstBlock && !leads_block(in)) {
+        if (start == Start::InFirstBlock && !leads_first_block(in, debug_sets)) {
             emit_count(m, c, c.zero, out);  // slot 0: shaded
             start = Start::Done;
         }

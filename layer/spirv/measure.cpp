@@ -10,6 +10,7 @@
 
 #include "layer/spirv/counters.h"
 #include "layer/spirv/module.h"
+#include "layer/spirv/module_index.h"
 #include "renderer/common/error.h"
 
 namespace ds::layer {
@@ -18,63 +19,6 @@ namespace {
 
 constexpr uint32_t kRasterizedSlot = 2;  // DrawCounters member and counts[] offset
 constexpr uint32_t kSpirv10 = 0x00010000;
-
-// The stage module's globals and decorations, by id.
-struct StageIndex {
-    std::unordered_map<uint32_t, const Instruction*> defs;  // types, constants, variables
-    std::unordered_map<uint32_t, std::vector<const Instruction*>> decorations;  // (member) decorate
-};
-
-StageIndex index_stage(const Module& m) {
-    StageIndex s;
-    for (const Instruction& in : m.section(Section::Global)) {
-        bool has_result = false, has_type = false;
-        spv::HasResultAndType(in.op, &has_result, &has_type);
-        if (has_result) s.defs[in.operand(has_type ? 1 : 0)] = &in;
-    }
-    for (const Instruction& in : m.section(Section::Annotation))
-        if (in.op == spv::OpDecorate || in.op == spv::OpMemberDecorate)
-            s.decorations[in.operand(0)].push_back(&in);
-    return s;
-}
-
-const Instruction& def_of(const StageIndex& s, uint32_t id) {
-    const auto it = s.defs.find(id);
-    if (it == s.defs.end())
-        throw Error("SPIR-V: id " + std::to_string(id) + " is not a type, constant or variable");
-    return *it->second;
-}
-
-const std::vector<const Instruction*>& decorations_of(const StageIndex& s, uint32_t id) {
-    static const std::vector<const Instruction*> none;
-    const auto it = s.decorations.find(id);
-    return it == s.decorations.end() ? none : it->second;
-}
-
-// Whether `id` has OpDecorate `d`.
-bool decorated(const StageIndex& s, uint32_t id, spv::Decoration d) {
-    return std::any_of(decorations_of(s, id).begin(), decorations_of(s, id).end(),
-                       [&](const Instruction* in) {
-                           return in->op == spv::OpDecorate && in->operand(1) == uint32_t(d);
-                       });
-}
-
-// Whether a member of struct `id` is BuiltIn (gl_PerVertex).
-bool member_builtin(const StageIndex& s, uint32_t id) {
-    return std::any_of(
-        decorations_of(s, id).begin(), decorations_of(s, id).end(), [](const Instruction* in) {
-            return in->op == spv::OpMemberDecorate && in->operand(2) == spv::DecorationBuiltIn;
-        });
-}
-
-// `type` without its (outer) array dimensions.
-uint32_t element_type(const StageIndex& s, uint32_t type) {
-    for (size_t depth = 0; def_of(s, type).op == spv::OpTypeArray; ++depth) {
-        if (depth > 64) throw Error("SPIR-V: an array type contains itself");
-        type = def_of(s, type).operand(1);
-    }
-    return type;
-}
 
 // The copy of a stage type in the fragment module, and whether an Input of it must be Flat.
 struct Copied {
@@ -86,7 +30,7 @@ struct Copied {
 // module, each once; scalars, vectors and matrices are shared with the fragment module's own.
 class TypeCopier {
   public:
-    TypeCopier(const StageIndex& from, Module& to) : from_(from), to_(to) {}
+    TypeCopier(const ModuleIndex& from, Module& to) : from_(from), to_(to) {}
 
     Copied type(uint32_t id);
     // The scalar types copied, (OpTypeInt or OpTypeFloat, width): the capabilities they need.
@@ -99,7 +43,7 @@ class TypeCopier {
     Copied copy_struct(const Instruction& t);
     uint32_t constant(uint32_t id);
 
-    const StageIndex& from_;
+    const ModuleIndex& from_;
     Module& to_;
     std::unordered_map<uint32_t, Copied> done_;
     std::unordered_set<uint32_t> open_;  // being copied: a type that contains itself
@@ -192,29 +136,9 @@ uint32_t TypeCopier::constant(uint32_t id) {
     return operands[1];
 }
 
-// The entry's user outputs: the Output variables of its interface that are neither BuiltIn nor
-// (arrays of) structs with BuiltIn members.
-std::vector<const Instruction*> user_outputs(const StageIndex& s, const Instruction& ep) {
-    std::vector<const Instruction*> out;
-    for (size_t i = interface_start(ep); i < ep.operands.size(); ++i) {
-        const Instruction& v = def_of(s, ep.operands[i]);
-        if (v.op != spv::OpVariable)
-            throw Error("SPIR-V: an entry point's interface lists a non-variable");
-        if (v.operand(2) != spv::StorageClassOutput) continue;
-        const Instruction& pointer = def_of(s, v.operand(0));
-        if (pointer.op != spv::OpTypePointer)
-            throw Error("SPIR-V: a variable's type is not a pointer");
-        if (decorated(s, v.operand(1), spv::DecorationBuiltIn) ||
-            member_builtin(s, element_type(s, pointer.operand(2))))
-            continue;
-        out.push_back(&v);
-    }
-    return out;
-}
-
 // The Input variable mirroring `output`: its type, Location and Component; Flat when its type
 // needs it (on the members of a struct type, copy_struct's).
-uint32_t add_input(const StageIndex& s, TypeCopier& types, Module& fs, const Instruction& output) {
+uint32_t add_input(const ModuleIndex& s, TypeCopier& types, Module& fs, const Instruction& output) {
     const uint32_t pointee = def_of(s, output.operand(0)).operand(2);
     const Copied t = types.type(pointee);
     const uint32_t pointer = fs.type(spv::OpTypePointer, {spv::StorageClassInput, t.id});
@@ -314,7 +238,7 @@ std::vector<uint32_t> mirroring_fragment(std::span<const uint32_t> spirv, std::s
                     ("entry point named \"" + std::string(entry) + "\""));
     if (b && b->draw_binding == b->pixel_binding)
         throw Error("SPIR-V measure: the draw and pixel counters need different bindings");
-    const StageIndex s = index_stage(stage);
+    const ModuleIndex s = index_module(stage);
 
     const std::array<uint32_t, 5> header{spv::MagicNumber, std::max(stage.version(), kSpirv10), 0,
                                          1, 0};
