@@ -12,8 +12,8 @@
 #include "capture/layer_capture.h"
 #include "capture/layer_frames.h"
 #include "capture/output_dir.h"
-#include "renderer/common/layer_settings.h"
 #include "renderer/common/error.h"
+#include "renderer/common/layer_settings.h"
 
 namespace ds::app {
 

@@ -67,9 +67,11 @@ class Replacement {
             records += uint64_t(depth_pixels.back().width) * depth_pixels.back().height *
                        kRecordsPerPixel;
         }
+        // The record buffer is one binding: at most maxStorageBufferRange (header, scratch).
+        const uint64_t fits = (uint64_t(d.properties.limits.maxStorageBufferRange) - 32) / 16;
         res_ = std::make_unique<CaptureResources>(
             d, fc_.pipelines.set_layout(), plan_.counted_draws, pixels, depth_pixels,
-            uint32_t(std::min<uint64_t>(records, kMaxRecords)));
+            uint32_t(std::min({records, kMaxRecords, fits})));
         if (!res_->ok()) fc_.not_analysed.push_back("the frame's counters: " + res_->error());
     }
 
@@ -132,7 +134,7 @@ void Replacement::read_back(uint32_t pass_base) {
     const CountingRecorder::Bases bases{pass_base, uint32_t(fc_.draws.size())};
     for (const std::string& n : recorder_->notes) fc_.not_analysed.push_back(n);
     for (size_t i = 0; i < plan_.passes.size(); ++i) {
-        CapturedPass p{plan_.passes[i], plan_.pass_counted[i], fc_.submissions, {}, 0, 0};
+        CapturedPass p{plan_.passes[i], plan_.pass_counted[i], fc_.submissions, {}, 0, 0, {}, {}};
         if (p.summary.view_mask != 0 && p.summary.depth_format != VK_FORMAT_UNDEFINED)
             fc_.not_analysed.push_back("pass " + std::to_string(fc_.passes.size()) +
                                        ": multiview; its draws are not counted");

@@ -9,9 +9,10 @@ namespace ds::layer {
 
 bool same_geometry(const DrawGeometry& a, const DrawGeometry& b) {
     const DrawArgs &x = a.args, &y = b.args;
-    if (x.kind != y.kind || x.count != y.count || x.instances != y.instances ||
-        x.first != y.first || x.vertex_offset != y.vertex_offset ||
-        x.first_instance != y.first_instance || x.indirect != y.indirect ||
+    // Instances may be drawn in other groupings (a prepass sorted per instance, a forward pass
+    // by mesh): the index or vertex range decides.
+    if (x.indexed() != y.indexed() || x.count != y.count || x.first != y.first ||
+        x.vertex_offset != y.vertex_offset || x.indirect != y.indirect ||
         x.indirect_offset != y.indirect_offset)
         return false;
     if (a.indexed != b.indexed) return false;

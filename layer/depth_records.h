@@ -33,8 +33,8 @@ struct DrawGeometry {
     std::map<uint32_t, std::pair<VkBuffer, VkDeviceSize>> vertex;  // the pipeline's bindings
     DrawArgs args{};
 };
-// The same draw ranges, index buffer, and the same buffer and offset at every vertex binding
-// both pipelines read.
+// The same index or vertex range (instances may be grouped differently), index buffer, and the
+// same buffer and offset at every vertex binding both pipelines read.
 bool same_geometry(const DrawGeometry& a, const DrawGeometry& b);
 
 // How a draw tests and writes depth (static or dynamic state as it was at the draw).

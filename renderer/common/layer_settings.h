@@ -37,8 +37,7 @@ inline uint32_t steps(const std::string& value) {
                         value.find_first_not_of("0123456789") == std::string::npos;
     if (!digits || std::stoul(value) > LayerSettings::kMaxZfightSteps)
         throw UsageError("layer: setting 'zfight_steps' expects a whole number from 0 to " +
-                         std::to_string(LayerSettings::kMaxZfightSteps) + ", got '" + value +
-                         "'");
+                         std::to_string(LayerSettings::kMaxZfightSteps) + ", got '" + value + "'");
     return uint32_t(std::stoul(value));
 }
 

@@ -69,9 +69,9 @@ TEST(LayerVkcube, ListsFramesAndCapturesFrameFiveLiveAndReplayed) {
     ASSERT_TRUE(std::filesystem::exists(gfxr)) << record.err;
     // With the Z-fight and EQUAL checks on: a cube has no coplanar surfaces and no EQUAL pass.
     const std::string checks = "--set zfight=on --set equal_check=on ";
-    const ProcessResult live = under_xvfb(layer("--frame 5 " + checks + "--out " +
-                                                (dir / "live").string() +
-                                                " -- vkcube --validate --c 8"));
+    const ProcessResult live =
+        under_xvfb(layer("--frame 5 " + checks + "--out " + (dir / "live").string() +
+                         " -- vkcube --validate --c 8"));
     ASSERT_EQ(live.exit_code, 0) << live.err;
     EXPECT_EQ((live.out + live.err).find("VALIDATION"), std::string::npos) << live.out << live.err;
     const json a = json::parse(read_file(dir / "live" / "report.json"));

@@ -14,7 +14,7 @@
 
 #include "tests/support/run_process.h"
 
-namespace ds::test {
+namespace ds::test::layer_depth {
 namespace {
 
 using nlohmann::json;
@@ -29,9 +29,9 @@ json read_report(const std::filesystem::path& dir) {
 json layer_checks(const std::string& scene, const std::string& sets,
                   const std::filesystem::path& dir, const std::string& app_flags = "") {
     const ProcessResult r = run_depthscope(
-        "layer --frame 1 --set zfight=on --set equal_check=on --out " +
-        (dir / "layer").string() + " -- " DS_EXECUTABLE " capture --resources none " + app_flags +
-        " --scene " + scene + " " + kSize + " " + sets + " --out " + (dir / "app").string());
+        "layer --frame 1 --set zfight=on --set equal_check=on --out " + (dir / "layer").string() +
+        " -- " DS_EXECUTABLE " capture --resources none " + app_flags + " --scene " + scene + " " +
+        kSize + " " + sets + " --out " + (dir / "app").string());
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return read_report(dir / "layer");
 }
@@ -40,7 +40,8 @@ json own_checks(const std::string& scene, const std::string& sets,
                 const std::filesystem::path& dir) {
     const ProcessResult r =
         run_depthscope("capture --resources none --scene " + scene + " " + kSize + " " + sets +
-                       " --set zfight=on --set equal_check=on --out " + (dir / "own").string());
+                       " --set zfight=on --set equal_check=on --set count_draws=on --out " +
+                       (dir / "own").string());
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return read_report(dir / "own");
 }
@@ -123,11 +124,11 @@ TEST_P(LayerEqualOracle, HolesAndTiesEqualDepthscopesOwn) {
         EXPECT_EQ(layer.at("equal_check").at(other), own.at("equal_check").at(other)) << other;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    BuiltInScenes, LayerEqualOracle,
-    testing::Values(std::make_tuple("atrium", "--set invariant=off", "holes"),
-                    std::make_tuple("decals", "--set decal_pass=off", "multiple")),
-    [](const auto& info) { return std::string(std::get<0>(info.param)); });
+INSTANTIATE_TEST_SUITE_P(BuiltInScenes, LayerEqualOracle,
+                         testing::Values(std::make_tuple("atrium", "--set invariant=off", "holes"),
+                                         std::make_tuple("decals", "--set decal_pass=off",
+                                                         "multiple")),
+                         [](const auto& info) { return std::string(std::get<0>(info.param)); });
 
 // No coplanar surfaces: no pair in any depth format; the application's image unchanged and no
 // validation message added with the checks on.
@@ -167,4 +168,4 @@ TEST(LayerDepth, EverySurvivalShaderPassesSpirvVal) {
 }
 
 }  // namespace
-}  // namespace ds::test
+}  // namespace ds::test::layer_depth
