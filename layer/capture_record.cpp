@@ -58,21 +58,11 @@ void CountingRecorder::step(const Command& c) {
             break;
         }
         case Op::BindSets: bind_sets(std::get<BindSetsArgs>(c.payload)); break;
-        case Op::BeginRenderPass:
-            begin_pass(false);
-            instance_first_pass_ = pass_;
-            instance_cb_ = cb_;
-            suspending_ = false;
-            break;
+        case Op::BeginRenderPass: begin_instance(false, false); break;
         case Op::NextSubpass: begin_pass(false); break;
         case Op::BeginRendering: {
             const auto& a = std::get<RenderingArgs>(c.payload);
-            begin_pass(a.resuming);
-            if (!a.resuming) {
-                instance_first_pass_ = pass_;
-                instance_cb_ = cb_;
-            }
-            suspending_ = a.suspending;
+            begin_instance(a.resuming, a.suspending);
             break;
         }
         case Op::EndRenderPass:
@@ -107,6 +97,16 @@ void CountingRecorder::step(const Command& c) {
         default: break;
     }
     c.call(d_.t, out_);
+}
+
+// A render pass instance (or a dynamic rendering, which may resume a suspended one).
+void CountingRecorder::begin_instance(bool resuming, bool suspending) {
+    begin_pass(resuming);
+    if (!resuming) {
+        instance_first_pass_ = pass_;
+        instance_cb_ = cb_;
+    }
+    suspending_ = suspending;
 }
 
 void CountingRecorder::begin_pass(bool dynamic_resume) {

@@ -87,6 +87,7 @@ class CountingRecorder {
     void bind_sets(const BindSetsArgs& a);
     bool compatible(VkPipelineLayout a, VkPipelineLayout b, uint32_t set);
     void begin_pass(bool dynamic_resume);
+    void begin_instance(bool resuming, bool suspending);
     void draw(const Command& c);
     void counted_draw(const Command& c, const CountingPipeline& p, CapturedDraw& draw);
     void use_pipeline(VkPipeline p);
