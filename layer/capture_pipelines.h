@@ -36,6 +36,7 @@ struct CountingPipeline {
     bool depth_test = false, depth_write = false;
     VkCompareOp compare_op = VK_COMPARE_OP_ALWAYS;
     bool dynamic_compare_op = false;
+    uint32_t samples = 1;  // rasterizationSamples
     std::vector<uint32_t> vertex_bindings;
     // zfight / equal_check (capture_pipelines_depth.cpp): `depth_record` re-draws in the
     // layer's attachment-less pass, `equal` in the application's pass; a reason when absent.

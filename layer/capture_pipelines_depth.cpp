@@ -36,6 +36,7 @@ void CountingPipelines::build_depth(CountingPipeline& p, const PipelineRecipe& r
     p.depth_write = r.has_depth_stencil && r.depth_stencil.depthWriteEnable;
     p.compare_op = r.has_depth_stencil ? r.depth_stencil.depthCompareOp : VK_COMPARE_OP_ALWAYS;
     p.dynamic_compare_op = r.is_dynamic(VK_DYNAMIC_STATE_DEPTH_COMPARE_OP);
+    p.samples = r.has_multisample ? uint32_t(r.multisample.rasterizationSamples) : 1;
     for (const VkVertexInputBindingDescription& b : r.bindings)
         p.vertex_bindings.push_back(b.binding);
     const LayerSettings& s = config().settings;

@@ -60,8 +60,11 @@ void CountingRecorder::depth_draw(const CountingPipeline& p, CapturedDraw& draw)
         }
     }
     if (!s.equal_check || !draw.depth.equal_like()) return;
-    if (!p.equal) {
-        draw.depth_why = p.equal_why;
+    if (!p.equal || p.samples > 1) {
+        // Survivors are counted per pixel: at msaa > 1 two surfaces sharing a pixel's samples
+        // would read as a tie.
+        draw.depth_why = p.equal ? "a multisampled pass (the EQUAL check counts per pixel)"
+                                 : p.equal_why;
         return;
     }
     for (auto pass = depth_passes_.rbegin(); pass != depth_passes_.rend(); ++pass) {
