@@ -66,10 +66,13 @@ LayerCaptureData load_layer_capture(const std::filesystem::path& dir) {
             LayerPassImages images;
             images.pass = pass.at("index").get<uint32_t>();
             images.name = pass.at("name").get<std::string>();
-            for (size_t k = 0; k < kLayerCountKinds.size(); ++k) {
-                const auto& entry = pass.at("images").at(kLayerCountKinds[k]);
+            for (size_t k = 0; k < kLayerImageKinds.size(); ++k) {
+                if (k >= kLayerCountKinds.size() &&
+                    !pass.at("images").contains(kLayerImageKinds[k]))
+                    continue;
+                const auto& entry = pass.at("images").at(kLayerImageKinds[k]);
                 const ExrImage exr = read_exr(dir / entry.at("exr").get<std::string>());
-                const ExrChannel* count = exr.find("count");
+                const ExrChannel* count = exr.find("count") ? exr.find("count") : exr.find("mark");
                 if (!count || !count->is_uint)
                     throw Error(entry.at("exr").get<std::string>() + ": no UINT count channel");
                 images.width = exr.width;

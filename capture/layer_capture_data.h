@@ -15,9 +15,11 @@ struct LayerPassImages {
     uint32_t pass = 0;  // index into report["passes"]
     std::string name;
     uint32_t width = 0, height = 0;
-    // shaded, discarded, rasterized: width * height counts, row 0 = top.
-    std::array<std::vector<uint32_t>, 3> counts;
-    std::array<uint32_t, 3> max{};
+    // shaded, discarded, rasterized, and where the capture has them (settings zfight,
+    // equal_check) zfight (competitors) and equal_check (marks: 1 hole, 2 tie); width * height
+    // values each (empty: absent), row 0 = top.
+    std::array<std::vector<uint32_t>, 5> counts;
+    std::array<uint32_t, 5> max{};
 };
 
 struct LayerCaptureData {
@@ -28,6 +30,9 @@ struct LayerCaptureData {
 
 inline constexpr std::array<const char*, 3> kLayerCountKinds = {"shaded", "discarded",
                                                                 "rasterized"};
+// Every per-pixel image a pass may have: the counts, then the depth checks' (optional).
+inline constexpr std::array<const char*, 5> kLayerImageKinds = {"shaded", "discarded", "rasterized",
+                                                                "zfight", "equal_check"};
 
 // Throws ds::Error when `dir` is not a readable layer capture.
 LayerCaptureData load_layer_capture(const std::filesystem::path& dir);

@@ -9,6 +9,7 @@ namespace ds::ui {
 namespace {
 
 constexpr float kColumn = 460.0f;  // the left column's width, pixels
+constexpr size_t kEqualKind = 4;   // capture::kLayerImageKinds: the EQUAL check's marks
 
 std::string text(const nlohmann::json& j, const char* key) {
     if (!j.contains(key)) return "";
@@ -28,7 +29,9 @@ void LayerViewer::select(size_t image, size_t kind) {
     ++version_;
     if (image_ >= data_.images.size()) return;
     const capture::LayerPassImages& p = data_.images[image_];
-    rgba_ = capture::count_heat_rgba(p.counts[kind_], p.max[kind_]);
+    if (p.counts[kind_].empty()) kind_ = 0;  // this pass has no such image
+    rgba_ = kind_ == kEqualKind ? capture::marks_rgba(p.counts[kind_])
+                                : capture::count_heat_rgba(p.counts[kind_], p.max[kind_]);
 }
 
 void LayerViewer::draw(TargetSize target) {
@@ -38,6 +41,7 @@ void LayerViewer::draw(TargetSize target) {
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     draw_summary();
     draw_passes();
+    draw_depth_checks();
     draw_draws();
     ImGui::End();
     update_blit(target);
@@ -69,12 +73,40 @@ void LayerViewer::draw_passes() {
                                   std::to_string(p.height) + "##pass" + std::to_string(i);
         if (ImGui::Selectable(label.c_str(), i == image_)) select(i, kind_);
     }
-    for (size_t k = 0; k < capture::kLayerCountKinds.size(); ++k) {
+    if (image_ >= data_.images.size()) return;
+    const capture::LayerPassImages& p = data_.images[image_];
+    for (size_t k = 0; k < capture::kLayerImageKinds.size(); ++k) {
+        if (p.counts[k].empty()) continue;
         if (k) ImGui::SameLine();
-        if (ImGui::RadioButton(capture::kLayerCountKinds[k], k == kind_)) select(image_, k);
+        if (ImGui::RadioButton(capture::kLayerImageKinds[k], k == kind_)) select(image_, k);
     }
-    if (image_ < data_.images.size())
-        ImGui::Text("heat map: black 0 .. white %u", data_.images[image_].max[kind_]);
+    if (kind_ == kEqualKind)
+        ImGui::TextUnformatted("magenta: hole, yellow: tie");
+    else
+        ImGui::Text("heat map: black 0 .. white %u", p.max[kind_]);
+}
+
+// The Z-fight pairs and the EQUAL check's totals (settings zfight, equal_check).
+void LayerViewer::draw_depth_checks() {
+    const nlohmann::json& r = data_.report;
+    if (r.contains("zfight") &&
+        ImGui::CollapsingHeader(
+            ("Z-fight pairs (" + std::to_string(r["zfight"]["pairs"].size()) + ")").c_str())) {
+        ImGui::Text("within %s steps; %s pixels", text(r["zfight"], "steps").c_str(),
+                    text(r["zfight"], "pixels").c_str());
+        for (const auto& pair : r["zfight"]["pairs"]) {
+            const auto who = [](const nlohmann::json& x) {
+                return text(x, "name") + (x.contains("instance") ? " #" + text(x, "instance") : "");
+            };
+            ImGui::Bullet();
+            ImGui::TextWrapped("%s / %s: %s px, %s steps (%s)", who(pair["a"]).c_str(),
+                               who(pair["b"]).c_str(), text(pair, "pixels").c_str(),
+                               text(pair, "min_steps").c_str(), text(pair, "pass").c_str());
+        }
+    }
+    if (r.contains("equal_check"))
+        ImGui::Text("EQUAL check: %s holes, %s ties", text(r["equal_check"], "holes").c_str(),
+                    text(r["equal_check"], "multiple").c_str());
 }
 
 void LayerViewer::draw_draws() {
@@ -138,6 +170,9 @@ void LayerViewer::update_readout(TargetSize target) {
     readout_ = std::to_string((*texel)[0]) + ", " + std::to_string((*texel)[1]) + ": shaded " +
                std::to_string(p.counts[0][i]) + ", discarded " + std::to_string(p.counts[1][i]) +
                ", rasterized " + std::to_string(p.counts[2][i]);
+    if (!p.counts[3].empty()) readout_ += ", competing " + std::to_string(p.counts[3][i]);
+    if (!p.counts[kEqualKind].empty() && p.counts[kEqualKind][i])
+        readout_ += p.counts[kEqualKind][i] == 1 ? ", EQUAL hole" : ", EQUAL tie";
     ImGui::SetNextWindowPos({mouse.x + 16, mouse.y + 16});
     ImGui::BeginTooltip();
     ImGui::TextUnformatted(readout_.c_str());

@@ -15,9 +15,10 @@ namespace {
 
 using nlohmann::json;
 
-// A command under its own X server (xvfb-run picks a free display).
+// A command under its own X server (xvfb-run picks a free display from 100 on: the window
+// tests start at 70 and 80, so a search started together never races for one).
 ProcessResult under_xvfb(const std::string& command, int timeout_s = 180) {
-    return run_command("xvfb-run -a -s '-screen 0 640x480x24' " + command, timeout_s);
+    return run_command("xvfb-run -a -n 100 -s '-screen 0 640x480x24' " + command, timeout_s);
 }
 
 std::string layer(const std::string& args) {

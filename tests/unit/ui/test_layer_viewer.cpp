@@ -79,5 +79,36 @@ TEST_F(LayerViewerTest, FitsThePassImageBesideTheColumnAndReadsTheHoveredPixel) 
     EXPECT_GT((*viewer.blit().rgba8)[1 * 4 + 2], 0);
 }
 
+// With the depth checks on: the Z-fight competitors and EQUAL marks are two more images, the
+// readout says them, and a pass without them falls back to shaded.
+TEST_F(LayerViewerTest, ShowsTheZfightAndEqualImagesWhereThePassHasThem) {
+    capture::LayerCaptureData data = two_by_two();
+    data.report["zfight"] = {{"steps", 4}, {"pixels", 1}, {"pairs", nlohmann::json::array()}};
+    data.report["equal_check"] = {{"holes", 1}, {"multiple", 1}};
+    data.images[0].counts[3] = {0, 0, 1, 0};
+    data.images[0].max[3] = 1;
+    data.images[0].counts[4] = {1, 0, 2, 0};
+    data.images[0].max[4] = 2;
+    data.images.push_back(data.images[0]);
+    data.images[1].counts[3].clear();
+    data.images[1].counts[4].clear();
+    LayerViewer viewer(std::move(data));
+    viewer.select(0, 4);
+    frame(viewer, {-1, -1});
+    // Pixel 0 a hole (magenta), pixel 2 a tie (yellow), pixel 1 nothing (transparent).
+    const std::vector<uint8_t>& rgba = *viewer.blit().rgba8;
+    EXPECT_EQ(rgba[0], 255);
+    EXPECT_EQ(rgba[2], 255);
+    EXPECT_EQ(rgba[2 * 4 + 1], 230);
+    EXPECT_EQ(rgba[1 * 4 + 3], 0);
+    frame(viewer, {460 + 150, 450});
+    frame(viewer, {460 + 150, 450});
+    EXPECT_EQ(viewer.readout(),
+              "0, 1: shaded 2, discarded 1, rasterized 2, competing 1, EQUAL tie");
+    viewer.select(1, 3);  // the second pass has no Z-fight image: shaded instead
+    frame(viewer, {-1, -1});
+    EXPECT_EQ((*viewer.blit().rgba8)[2 * 4], 255);
+}
+
 }  // namespace
 }  // namespace ds::ui
