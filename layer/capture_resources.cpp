@@ -43,7 +43,9 @@ CaptureResources::CaptureResources(DeviceData& d, VkDescriptorSetLayout layout, 
     std::memset(draw_map_, 0, draw_bytes_);
     std::memset(pixel_map_, 0, pixel_bytes_);
     std::memset(depth_map_, 0, depth_bytes_);
-    std::memset(record_map_, 0, record_bytes_);
+    // The records are read up to the count the shaders leave: only the header and the scratch
+    // record need values (hundreds of MiB with a large shadow map).
+    std::memset(record_map_, 0, std::min<VkDeviceSize>(record_bytes_, 32));
     static_cast<uint32_t*>(record_map_)[1] = records;
     for (size_t p = 0; p < pass_pixels.size(); ++p) {
         auto* header = reinterpret_cast<uint32_t*>(static_cast<uint8_t*>(pixel_map_) +
@@ -67,13 +69,16 @@ bool CaptureResources::make_buffer(VkDeviceSize size, VkBuffer& buffer, VkDevice
         return (error_ = "cannot create a counter buffer"), false;
     VkMemoryRequirements req;
     d_.t.GetBufferMemoryRequirements(d_.device, buffer, &req);
+    // Host-coherent, and cached where the device has such a type: the host reads the counters
+    // and records back (hundreds of MiB with the depth checks; uncached reads crawl).
     const VkMemoryPropertyFlags want =
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     uint32_t type = UINT32_MAX;
-    for (uint32_t i = 0; i < d_.memory.memoryTypeCount && type == UINT32_MAX; ++i)
-        if ((req.memoryTypeBits & (1u << i)) &&
-            (d_.memory.memoryTypes[i].propertyFlags & want) == want)
-            type = i;
+    for (const VkMemoryPropertyFlags flags : {want | VK_MEMORY_PROPERTY_HOST_CACHED_BIT, want})
+        for (uint32_t i = 0; i < d_.memory.memoryTypeCount && type == UINT32_MAX; ++i)
+            if ((req.memoryTypeBits & (1u << i)) &&
+                (d_.memory.memoryTypes[i].propertyFlags & flags) == flags)
+                type = i;
     if (type == UINT32_MAX) return (error_ = "no host-visible memory for the counters"), false;
     auto m = typed<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
     m.allocationSize = req.size;

@@ -75,12 +75,11 @@ struct PairAcc {
 
 // One pixel's records (sorted by draw, instance): its winner, and each competitor once.
 void analyse_pixel(std::span<const DepthRecord> px, uint32_t depth_bits, uint32_t max_steps,
-                   const std::map<uint32_t, DepthUse>& uses, DepthPassAnalysis& out,
+                   const std::vector<VkCompareOp>& ops, DepthPassAnalysis& out,
                    std::map<std::pair<DrawInstance, DrawInstance>, PairAcc>& pairs) {
     const DepthRecord* winner = nullptr;
     for (const DepthRecord& r : px) {
-        const auto use = uses.find(r.draw);
-        const VkCompareOp op = use == uses.end() ? VK_COMPARE_OP_LESS : use->second.op;
+        const VkCompareOp op = r.draw < ops.size() ? ops[r.draw] : VK_COMPARE_OP_LESS;
         if (!winner || replaces(op, depth_steps_value(depth_bits, r.depth),
                                 depth_steps_value(depth_bits, winner->depth)))
             winner = &r;
@@ -118,18 +117,27 @@ DepthPassAnalysis analyse_depth_pass(std::span<const DepthRecord> records, uint3
     const size_t n = size_t(width) * height;
     out.competitors.assign(n, 0);
     out.winners.assign(n, DrawInstance{UINT32_MAX, 0});
-    std::vector<DepthRecord> sorted;
+    // Records by pixel (a counting sort: millions of records for a shadow map), then each
+    // pixel's few by draw and instance.
+    std::vector<uint32_t> start(n + 1, 0);
     for (const DepthRecord& r : records)
-        if (r.pixel < n) sorted.push_back(r);
-    std::sort(sorted.begin(), sorted.end(), [](const DepthRecord& a, const DepthRecord& b) {
-        return std::tie(a.pixel, a.draw, a.instance) < std::tie(b.pixel, b.draw, b.instance);
-    });
+        if (r.pixel < n) ++start[r.pixel + 1];
+    for (size_t p = 0; p < n; ++p) start[p + 1] += start[p];
+    std::vector<DepthRecord> sorted(start[n]);
+    std::vector<uint32_t> next(start.begin(), start.end() - 1);
+    for (const DepthRecord& r : records)
+        if (r.pixel < n) sorted[next[r.pixel]++] = r;
+    // Each draw's compare op by its index.
+    std::vector<VkCompareOp> ops(uses.empty() ? 0 : uses.rbegin()->first + 1, VK_COMPARE_OP_LESS);
+    for (const auto& [draw, use] : uses) ops[draw] = use.op;
     std::map<std::pair<DrawInstance, DrawInstance>, PairAcc> pairs;
-    for (size_t i = 0; i < sorted.size();) {
-        size_t j = i;
-        while (j < sorted.size() && sorted[j].pixel == sorted[i].pixel) ++j;
-        analyse_pixel(std::span(sorted).subspan(i, j - i), depth_bits, max_steps, uses, out, pairs);
-        i = j;
+    for (size_t p = 0; p < n; ++p) {
+        if (start[p] == start[p + 1]) continue;
+        const auto px = std::span(sorted).subspan(start[p], start[p + 1] - start[p]);
+        std::sort(px.begin(), px.end(), [](const DepthRecord& a, const DepthRecord& b) {
+            return std::tie(a.draw, a.instance) < std::tie(b.draw, b.instance);
+        });
+        analyse_pixel(px, depth_bits, max_steps, ops, out, pairs);
     }
     for (const auto& [key, acc] : pairs)
         out.pairs.push_back({key.first, key.second, acc.pixels, acc.min_steps});

@@ -56,13 +56,22 @@ Pair make_pair(std::string a, std::string b, uint64_t pixels, uint32_t steps) {
     return {a, b, pixels, steps};
 }
 
+// depthscope's own pairs between two instances (it also counts overlapping triangles of one
+// instance, a == b, which the layer's (draw, instance) pairs leave out by definition).
 std::vector<Pair> own_pairs(const json& own) {
     std::vector<Pair> out;
     for (const json& p : own.at("zfight").at("pairs"))
-        out.push_back(make_pair(p.at("a").at("mesh"), p.at("b").at("mesh"), p.at("pixels"),
-                                p.at("min_steps")));
+        if (p.at("a") != p.at("b"))
+            out.push_back(make_pair(p.at("a").at("mesh"), p.at("b").at("mesh"), p.at("pixels"),
+                                    p.at("min_steps")));
     std::sort(out.begin(), out.end());
     return out;
+}
+
+bool own_has_self_pairs(const json& own) {
+    for (const json& p : own.at("zfight").at("pairs"))
+        if (p.at("a") == p.at("b")) return true;
+    return false;
 }
 
 // The layer's pairs of the camera's prepass, meshes from the own report's draw groups.
@@ -87,47 +96,40 @@ uint64_t prepass_pixels(const json& layer) {
     return 0;
 }
 
-class LayerZfightOracle : public testing::TestWithParam<std::tuple<const char*, const char*>> {};
+// One frame, both checks: the pairs (with their pixels and least steps) and the pixels with a
+// competitor equal depthscope's own zfight; the holes and ties its own equal_check. zfight:
+// coplanar pairs; decals without their pass: decals fight and tie with their bases; atrium
+// with a forward vertex shader that is not invariant: holes.
+class LayerDepthOracle
+    : public testing::TestWithParam<std::tuple<const char*, const char*, const char*>> {};
 
-TEST_P(LayerZfightOracle, PairsAndPixelsEqualDepthscopesOwn) {
-    const auto [scene, sets] = GetParam();
-    const auto dir = fresh_dir(std::string("layer_zfight_") + scene);
+TEST_P(LayerDepthOracle, PairsHolesAndTiesEqualDepthscopesOwn) {
+    const auto [scene, sets, expected] = GetParam();
+    const auto dir = fresh_dir(std::string("layer_depth_") + scene);
     const json layer = layer_checks(scene, sets, dir);
     const json own = own_checks(scene, sets, dir);
     const auto want = own_pairs(own);
-    ASSERT_FALSE(want.empty());
     EXPECT_EQ(layer_pairs(layer, own), want);
-    EXPECT_EQ(prepass_pixels(layer), own.at("zfight").at("pixels").get<uint64_t>());
+    if (!own_has_self_pairs(own)) {
+        EXPECT_EQ(prepass_pixels(layer), own.at("zfight").at("pixels").get<uint64_t>());
+    }
     EXPECT_FALSE(layer.at("zfight").contains("dropped_records"));
+    for (const char* key : {"holes", "multiple"})
+        EXPECT_EQ(layer.at("equal_check").at(key), own.at("equal_check").at(key)) << key;
+    // What each scene is there for is found at all.
+    const std::string what = expected;
+    if (what == "pairs") {
+        EXPECT_FALSE(want.empty());
+    } else {
+        EXPECT_GT(own.at("equal_check").at(what).get<uint64_t>(), 0u);
+    }
 }
 
-INSTANTIATE_TEST_SUITE_P(BuiltInScenes, LayerZfightOracle,
-                         testing::Values(std::make_tuple("zfight", ""),
-                                         std::make_tuple("decals", "--set decal_pass=off")),
-                         [](const auto& info) { return std::string(std::get<0>(info.param)); });
-
-// The forward pass's EQUAL draws against the prepass: atrium with a forward vertex shader that
-// is not invariant has holes; decals drawn in the prepass and forward tie.
-class LayerEqualOracle
-    : public testing::TestWithParam<std::tuple<const char*, const char*, const char*>> {};
-
-TEST_P(LayerEqualOracle, HolesAndTiesEqualDepthscopesOwn) {
-    const auto [scene, sets, key] = GetParam();
-    const auto dir = fresh_dir(std::string("layer_equal_") + scene);
-    const json layer = layer_checks(scene, sets, dir);
-    const json own = own_checks(scene, sets, dir);
-    const uint64_t want = own.at("equal_check").at(key);
-    ASSERT_GT(want, 0u) << own.at("equal_check").dump();
-    EXPECT_EQ(layer.at("equal_check").at(key).get<uint64_t>(), want)
-        << layer.at("equal_check").dump();
-    for (const char* other : {"holes", "multiple"})
-        EXPECT_EQ(layer.at("equal_check").at(other), own.at("equal_check").at(other)) << other;
-}
-
-INSTANTIATE_TEST_SUITE_P(BuiltInScenes, LayerEqualOracle,
-                         testing::Values(std::make_tuple("atrium", "--set invariant=off", "holes"),
+INSTANTIATE_TEST_SUITE_P(BuiltInScenes, LayerDepthOracle,
+                         testing::Values(std::make_tuple("zfight", "", "pairs"),
                                          std::make_tuple("decals", "--set decal_pass=off",
-                                                         "multiple")),
+                                                         "multiple"),
+                                         std::make_tuple("atrium", "--set invariant=off", "holes")),
                          [](const auto& info) { return std::string(std::get<0>(info.param)); });
 
 // No coplanar surfaces: no pair in any depth format; the application's image unchanged and no
@@ -142,12 +144,13 @@ TEST_P(LayerNoFight, OverdrawHasNoPairInAnyDepthFormat) {
     EXPECT_GT(layer.at("zfight").at("passes").size(), 0u);
     EXPECT_EQ(layer.at("equal_check").at("holes"), 0);
     EXPECT_EQ(layer.at("equal_check").at("multiple"), 0);
+    EXPECT_GT(layer.at("cost").at("depth_record_bytes").get<uint64_t>(), 0u);
+    if (std::string(GetParam()) != "d32f") return;  // the image: once is enough
     const ProcessResult plain =
         run_depthscope("capture --resources none --scene overdraw " + std::string(kSize) + " " +
                        sets + " --validate --out " + (dir / "plain").string());
     ASSERT_EQ(plain.exit_code, 0) << plain.err;
     EXPECT_EQ(read_file(dir / "app" / "final.png"), read_file(dir / "plain" / "final.png"));
-    EXPECT_GT(layer.at("cost").at("counter_bytes").get<uint64_t>(), 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(DepthFormats, LayerNoFight, testing::Values("d32f", "d24", "d16"));
