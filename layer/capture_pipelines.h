@@ -48,6 +48,8 @@ struct CountingPipeline {
 
 // The last stage before rasterization (geometry, else tessellation evaluation, else vertex).
 const StageRecipe* last_geometry_stage(const PipelineRecipe& r);
+// A copy's colour writes masked, blending, alpha to coverage and alpha to one off.
+void mask_colour_and_coverage(PipelineRecipe& r);
 
 class CountingPipelines {
   public:

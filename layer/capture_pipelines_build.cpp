@@ -54,6 +54,17 @@ void CountingPipelines::build(CountingPipeline& p, PipelineRecipe r) {
         p.why = "the counting copy of the pipeline failed to build";
 }
 
+void mask_colour_and_coverage(PipelineRecipe& r) {
+    for (auto& a : r.blend_attachments) {
+        a.blendEnable = VK_FALSE;
+        a.colorWriteMask = 0;
+    }
+    if (r.has_multisample) {
+        r.multisample.alphaToCoverageEnable = VK_FALSE;
+        r.multisample.alphaToOneEnable = VK_FALSE;
+    }
+}
+
 // The measurement shader mirrors its outputs.
 const StageRecipe* last_geometry_stage(const PipelineRecipe& r) {
     for (VkShaderStageFlagBits stage :
@@ -94,14 +105,9 @@ void CountingPipelines::build_measure(CountingPipeline& p, PipelineRecipe& origi
         r.depth_stencil.stencilTestEnable = VK_FALSE;
         r.depth_stencil.depthBoundsTestEnable = VK_FALSE;
     }
-    for (auto& a : r.blend_attachments) {
-        a.blendEnable = VK_FALSE;
-        a.colorWriteMask = 0;
-    }
+    mask_colour_and_coverage(r);
     if (r.has_multisample) {
         r.multisample.sampleShadingEnable = VK_FALSE;
-        r.multisample.alphaToCoverageEnable = VK_FALSE;
-        r.multisample.alphaToOneEnable = VK_FALSE;
         r.sample_mask.clear();
     }
     if (d_.t.CreateGraphicsPipelines(d_.device, VK_NULL_HANDLE, 1, &r.info(), nullptr,

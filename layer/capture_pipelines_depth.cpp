@@ -142,14 +142,7 @@ void CountingPipelines::build_equal(CountingPipeline& p, PipelineRecipe r) {
         st->failOp = st->passOp = st->depthFailOp = VK_STENCIL_OP_KEEP;
         st->writeMask = 0;
     }
-    for (auto& a : r.blend_attachments) {
-        a.blendEnable = VK_FALSE;
-        a.colorWriteMask = 0;
-    }
-    if (r.has_multisample) {
-        r.multisample.alphaToCoverageEnable = VK_FALSE;
-        r.multisample.alphaToOneEnable = VK_FALSE;
-    }
+    mask_colour_and_coverage(r);
     r.flags &= ~VkPipelineCreateFlags(VK_PIPELINE_CREATE_DERIVATIVE_BIT);
     if (d_.t.CreateGraphicsPipelines(d_.device, VK_NULL_HANDLE, 1, &r.info(), nullptr,
                                      &p.equal) != VK_SUCCESS)

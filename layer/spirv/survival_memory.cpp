@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "layer/spirv/counters.h"
+#include "renderer/spirv/spirv_facts.h"
 
 namespace ds::layer {
 
@@ -77,30 +78,8 @@ void drop_output_interface(Module& m, const std::unordered_set<uint32_t>& output
     }
 }
 
-bool atomic_read_modify_write(spv::Op op) {
-    switch (op) {
-        case spv::OpAtomicExchange:
-        case spv::OpAtomicCompareExchange:
-        case spv::OpAtomicCompareExchangeWeak:
-        case spv::OpAtomicIIncrement:
-        case spv::OpAtomicIDecrement:
-        case spv::OpAtomicIAdd:
-        case spv::OpAtomicISub:
-        case spv::OpAtomicSMin:
-        case spv::OpAtomicUMin:
-        case spv::OpAtomicSMax:
-        case spv::OpAtomicUMax:
-        case spv::OpAtomicAnd:
-        case spv::OpAtomicOr:
-        case spv::OpAtomicXor:
-        case spv::OpAtomicFAddEXT:
-        case spv::OpAtomicFMinEXT:
-        case spv::OpAtomicFMaxEXT:
-            return true;
-        default:
-            return false;
-    }
-}
+// A read-modify-write atomic (OpAtomicFlagTestAndSet has its own case).
+bool atomic_read_modify_write(spv::Op op) { return spirv::atomic_write_pointer(op) == 2u; }
 
 // The storage class of every pointer-typed result of the module.
 class PointerClasses {

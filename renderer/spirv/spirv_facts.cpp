@@ -78,36 +78,6 @@ struct Pointers {
     }
 };
 
-// An atomic's pointer operand (an index into its operands), or none for non-writing ones.
-std::optional<size_t> atomic_pointer(spv::Op op) {
-    switch (op) {
-        case spv::OpAtomicStore:
-        case spv::OpAtomicFlagClear:
-            return 0;
-        case spv::OpAtomicExchange:
-        case spv::OpAtomicCompareExchange:
-        case spv::OpAtomicCompareExchangeWeak:
-        case spv::OpAtomicIIncrement:
-        case spv::OpAtomicIDecrement:
-        case spv::OpAtomicIAdd:
-        case spv::OpAtomicISub:
-        case spv::OpAtomicSMin:
-        case spv::OpAtomicUMin:
-        case spv::OpAtomicSMax:
-        case spv::OpAtomicUMax:
-        case spv::OpAtomicAnd:
-        case spv::OpAtomicOr:
-        case spv::OpAtomicXor:
-        case spv::OpAtomicFlagTestAndSet:
-        case spv::OpAtomicFMinEXT:
-        case spv::OpAtomicFMaxEXT:
-        case spv::OpAtomicFAddEXT:
-            return 2;  // after result type and result
-        default:
-            return std::nullopt;
-    }
-}
-
 // Everything the second walk needs: decorations, entry point, pointers.
 struct Module {
     std::vector<Instruction> code;
@@ -157,6 +127,35 @@ void note_store(const Module& m, uint32_t pointer, FragmentFacts& f) {
 
 }  // namespace
 
+std::optional<size_t> atomic_write_pointer(uint32_t opcode) {
+    switch (spv::Op(opcode)) {
+        case spv::OpAtomicStore:
+        case spv::OpAtomicFlagClear:
+            return 0;
+        case spv::OpAtomicExchange:
+        case spv::OpAtomicCompareExchange:
+        case spv::OpAtomicCompareExchangeWeak:
+        case spv::OpAtomicIIncrement:
+        case spv::OpAtomicIDecrement:
+        case spv::OpAtomicIAdd:
+        case spv::OpAtomicISub:
+        case spv::OpAtomicSMin:
+        case spv::OpAtomicUMin:
+        case spv::OpAtomicSMax:
+        case spv::OpAtomicUMax:
+        case spv::OpAtomicAnd:
+        case spv::OpAtomicOr:
+        case spv::OpAtomicXor:
+        case spv::OpAtomicFlagTestAndSet:
+        case spv::OpAtomicFMinEXT:
+        case spv::OpAtomicFMaxEXT:
+        case spv::OpAtomicFAddEXT:
+            return 2;  // after result type and result
+        default:
+            return std::nullopt;
+    }
+}
+
 FragmentFacts read_fragment_facts(std::span<const uint32_t> spirv) {
     const Module m(spirv);
     FragmentFacts f;
@@ -182,7 +181,7 @@ FragmentFacts read_fragment_facts(std::span<const uint32_t> spirv) {
                 note_store(m, in.operand(0), f);
                 break;
             default:
-                if (const std::optional<size_t> p = atomic_pointer(in.op))
+                if (const std::optional<size_t> p = atomic_write_pointer(in.op))
                     note_store(m, in.operand(*p), f);
         }
     }

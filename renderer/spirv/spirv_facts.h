@@ -3,6 +3,7 @@
 // reader of the word stream (5-word header, then instructions of (word count << 16 | opcode)),
 // no SPIRV-Tools. The verdict adds the one pipeline state that matters (alpha to coverage).
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -29,5 +30,10 @@ FragmentFacts read_fragment_facts(std::span<const uint32_t> spirv);
 // empty `fragment` (depth only) is "guaranteed": there is no shader to wait for.
 std::string early_z_verdict(std::span<const uint32_t> fragment, bool alpha_to_coverage);
 std::string early_z_verdict(const FragmentFacts& facts, bool alpha_to_coverage);
+
+// Where a writing atomic instruction (`opcode`, a spv::Op) has its pointer: the index of that
+// operand (2, after the result type and id; 0 for OpAtomicStore and OpAtomicFlagClear), or none
+// for any other instruction (OpAtomicLoad among them).
+std::optional<size_t> atomic_write_pointer(uint32_t opcode);
 
 }  // namespace ds::spirv
