@@ -1,6 +1,7 @@
 #include "layer/capture_pipelines.h"
 
 #include <chrono>
+#include <optional>
 #include <span>
 
 #include "layer/spirv/instrument.h"
@@ -102,9 +103,12 @@ const CountingPipeline& CountingPipelines::get(VkPipeline app) {
             copy = std::make_unique<PipelineRecipe>(*it->second.recipe);
     }
     if (copy) {
-        const PipelineRecipe original = *copy;
+        read_depth_state(p, *copy);
+        // The depth checks' copies start from the recipe as the application gave it.
+        std::optional<PipelineRecipe> original;
+        if (config().settings.depth_records()) original = *copy;
         build(p, std::move(*copy));
-        build_depth(p, original);
+        if (original) build_depth(p, *original);
     }
     build_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
                                                            start).count();

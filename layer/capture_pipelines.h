@@ -48,6 +48,8 @@ struct CountingPipeline {
 
 // The last stage before rasterization (geometry, else tessellation evaluation, else vertex).
 const StageRecipe* last_geometry_stage(const PipelineRecipe& r);
+// The depth state and vertex bindings `p` keeps of its recipe (capture_pipelines_depth.cpp).
+void read_depth_state(CountingPipeline& p, const PipelineRecipe& r);
 // A copy's colour writes masked, blending, alpha to coverage and alpha to one off.
 void mask_colour_and_coverage(PipelineRecipe& r);
 
@@ -72,7 +74,7 @@ class CountingPipelines {
     VkPipelineLayout extended_layout(VkPipelineLayout app, uint32_t& app_sets, std::string& why);
     void build(CountingPipeline& p, PipelineRecipe recipe_copy);
     void build_measure(CountingPipeline& p, PipelineRecipe& r);
-    void build_depth(CountingPipeline& p, const PipelineRecipe& r);
+    void build_depth(CountingPipeline& p, const PipelineRecipe& r);  // zfight / equal_check on
     void build_depth_record(CountingPipeline& p, PipelineRecipe r);
     void build_equal(CountingPipeline& p, PipelineRecipe r);
     std::vector<uint32_t> survival(CountingPipeline& p, PipelineRecipe& r, bool early_tests,

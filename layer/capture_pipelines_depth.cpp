@@ -31,7 +31,7 @@ bool equal_capable(const CountingPipeline& p) {
 
 }  // namespace
 
-void CountingPipelines::build_depth(CountingPipeline& p, const PipelineRecipe& r) {
+void read_depth_state(CountingPipeline& p, const PipelineRecipe& r) {
     p.depth_test = r.has_depth_stencil && r.depth_stencil.depthTestEnable;
     p.depth_write = r.has_depth_stencil && r.depth_stencil.depthWriteEnable;
     p.compare_op = r.has_depth_stencil ? r.depth_stencil.depthCompareOp : VK_COMPARE_OP_ALWAYS;
@@ -39,8 +39,11 @@ void CountingPipelines::build_depth(CountingPipeline& p, const PipelineRecipe& r
     p.samples = r.has_multisample ? uint32_t(r.multisample.rasterizationSamples) : 1;
     for (const VkVertexInputBindingDescription& b : r.bindings)
         p.vertex_bindings.push_back(b.binding);
+}
+
+void CountingPipelines::build_depth(CountingPipeline& p, const PipelineRecipe& r) {
     const LayerSettings& s = config().settings;
-    if (!s.depth_records() || !p.why.empty()) return;
+    if (!p.why.empty()) return;
     if (const StageRecipe* fs = fragment_stage(r);
         fs && spirv::read_fragment_facts(*fs->code).writes_depth) {
         p.depth_record_why = p.equal_why = "its fragment shader writes gl_FragDepth";

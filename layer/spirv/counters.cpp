@@ -199,4 +199,15 @@ void emit_count(Module& m, const Counters& c, uint32_t slot, std::vector<Instruc
     e(spv::OpAtomicIAdd, u, {draw, c.scope, c.zero, c.one});
 }
 
+uint32_t add_flat_uint(Module& m, uint32_t uint_type, spv::StorageClass storage,
+                       uint32_t location) {
+    const uint32_t pointer = m.type(spv::OpTypePointer, {uint32_t(storage), uint_type});
+    const uint32_t id = m.new_id();
+    m.add(Section::Global, spv::OpVariable, {pointer, id, uint32_t(storage)});
+    m.add(Section::Annotation, spv::OpDecorate, {id, spv::DecorationLocation, location});
+    m.add(Section::Annotation, spv::OpDecorate, {id, spv::DecorationFlat});
+    add_name(m, id, "ds_instance");
+    return id;
+}
+
 }  // namespace ds::layer

@@ -80,6 +80,10 @@ void require_storage_buffer_class(Module& m);
 // StorageBuffer storage class.
 Counters add_counter_globals(Module& m, const CounterBindings& b);
 
+// A new Flat uint variable of `storage` (Input or Output) at `location`, named ds_instance.
+uint32_t add_flat_uint(Module& m, uint32_t uint_type, spv::StorageClass storage,
+                       uint32_t location);
+
 // Appends to `out`: DrawCounters[slot] += 1; counts[(y * width + x) * 4 + slot] += 1 inside
 // width x height, else counts[0] += 0 (no branch: the block stays whole). `slot` is the id of
 // a uint constant.

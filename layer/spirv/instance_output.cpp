@@ -117,17 +117,6 @@ uint32_t add_instance_index(Module& m) {
     return id;
 }
 
-// The Flat uint Output at `location`.
-uint32_t add_flat_output(Module& m, uint32_t uint_type, uint32_t location) {
-    const uint32_t pointer = m.type(spv::OpTypePointer, {spv::StorageClassOutput, uint_type});
-    const uint32_t id = m.new_id();
-    m.add(Section::Global, spv::OpVariable, {pointer, id, spv::StorageClassOutput});
-    m.add(Section::Annotation, spv::OpDecorate, {id, spv::DecorationLocation, location});
-    m.add(Section::Annotation, spv::OpDecorate, {id, spv::DecorationFlat});
-    add_name(m, id, "ds_instance");
-    return id;
-}
-
 }  // namespace
 
 InstanceOutput add_instance_output(std::span<const uint32_t> vertex, std::string_view entry) {
@@ -147,7 +136,7 @@ InstanceOutput add_instance_output(std::span<const uint32_t> vertex, std::string
     }
     if (!instance) instance = add_instance_index(m);
     const uint32_t uint_type = m.type(spv::OpTypeInt, {32, 0});
-    const uint32_t output = add_flat_output(m, uint_type, result.location);
+    const uint32_t output = add_flat_uint(m, uint_type, spv::StorageClassOutput, result.location);
 
     // output = uint(gl_InstanceIndex) at the start of the entry's function.
     const uint32_t function = m.section(Section::EntryPoint)[ep].operand(1);

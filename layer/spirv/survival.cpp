@@ -48,17 +48,6 @@ void check_survival_bindings(const Module& m, const SurvivalBindings& b, const S
     }
 }
 
-// The Flat uint Input at `location`.
-uint32_t add_instance_input(Module& m, uint32_t uint_type, uint32_t location) {
-    const uint32_t pointer = m.type(spv::OpTypePointer, {spv::StorageClassInput, uint_type});
-    const uint32_t id = m.new_id();
-    m.add(Section::Global, spv::OpVariable, {pointer, id, spv::StorageClassInput});
-    m.add(Section::Annotation, spv::OpDecorate, {id, spv::DecorationLocation, location});
-    m.add(Section::Annotation, spv::OpDecorate, {id, spv::DecorationFlat});
-    add_name(m, id, "ds_instance");
-    return id;
-}
-
 SurvivalIds add_survival_globals(Module& m, const SurvivalBindings& b, const SurvivalOptions& o) {
     SurvivalIds s;
     s.c = add_common_globals(m);
@@ -70,7 +59,7 @@ SurvivalIds add_survival_globals(Module& m, const SurvivalBindings& b, const Sur
     s.uint_pointer = m.type(spv::OpTypePointer, {spv::StorageClassStorageBuffer, u});
     require_storage_buffer_class(m);
     if (o.instance_location != UINT32_MAX)
-        s.instance = add_instance_input(m, u, o.instance_location);
+        s.instance = add_flat_uint(m, u, spv::StorageClassInput, o.instance_location);
 
     s.two = m.constant(u, 2), s.three = m.constant(u, 3), s.sixteen = m.constant(u, 16);
     s.low16 = m.constant(u, 0xFFFF), s.bits32 = m.constant(u, 32), s.bits24 = m.constant(u, 24);

@@ -11,18 +11,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/cli/layer_test_helpers.h"
 #include "tests/support/run_process.h"
 
 namespace ds::test {
 namespace {
 
 using nlohmann::json;
-
-constexpr const char* kSize = "--size 320x180";
-
-json read_report(const std::filesystem::path& dir) {
-    return json::parse(read_file(dir / "report.json"));
-}
 
 // depthscope capture --resources none submits one frame (with resources, a second submission
 // reads the images back): the layer captures it.
@@ -32,7 +27,7 @@ json layer_capture(const std::string& scene, const std::string& sets,
     const ProcessResult r =
         run_depthscope("layer --frame 1 --out " + (dir / "layer").string() +
                        " -- " DS_EXECUTABLE " capture --resources none " + app_flags + " --scene " +
-                       scene + " " + kSize + " " + sets + " --out " + app_out.string());
+                       scene + " " + kLayerTestSize + " " + sets + " --out " + app_out.string());
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return read_report(dir / "layer");
 }
@@ -87,7 +82,7 @@ TEST_P(LayerOracle, PerGroupCountsEqualDepthscopesOwn) {
     const auto dir = fresh_dir(std::string("layer_oracle_") + scene);
     const json layer = layer_capture(scene, sets, dir);
     const ProcessResult own = run_depthscope(
-        "capture --scene " + std::string(scene) + " " + kSize + " " + sets +
+        "capture --scene " + std::string(scene) + " " + kLayerTestSize + " " + sets +
         " --set count_draws=on --set count_fragments=on --out " + (dir / "own").string());
     ASSERT_EQ(own.exit_code, 0) << own.err;
     const json mine = read_report(dir / "own");
@@ -131,7 +126,7 @@ TEST_P(LayerUnchanged, LeavesTheApplicationsOutputUnchangedAndAddsNoValidationMe
     const json layer = layer_capture("foliage", sets, dir, "--validate");
     ASSERT_FALSE(layer.at("draws").empty());
     const ProcessResult plain =
-        run_depthscope("capture --scene foliage " + std::string(kSize) + " " + sets +
+        run_depthscope("capture --scene foliage " + std::string(kLayerTestSize) + " " + sets +
                        " --validate --out " + (dir / "plain").string());
     ASSERT_EQ(plain.exit_code, 0) << plain.err;
     EXPECT_EQ(read_file(dir / "app" / "final.png"), read_file(dir / "plain" / "final.png"));

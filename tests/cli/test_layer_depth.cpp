@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/cli/layer_test_helpers.h"
 #include "tests/support/run_process.h"
 
 namespace ds::test::layer_depth {
@@ -19,19 +20,13 @@ namespace {
 
 using nlohmann::json;
 
-constexpr const char* kSize = "--size 320x180";
-
-json read_report(const std::filesystem::path& dir) {
-    return json::parse(read_file(dir / "report.json"));
-}
-
 // depthscope capture under the layer with its checks on; `validate`: the validation layer too.
 json layer_checks(const std::string& scene, const std::string& sets,
                   const std::filesystem::path& dir, const std::string& app_flags = "") {
     const ProcessResult r = run_depthscope(
         "layer --frame 1 --set zfight=on --set equal_check=on --out " + (dir / "layer").string() +
         " -- " DS_EXECUTABLE " capture --resources none " + app_flags + " --scene " + scene + " " +
-        kSize + " " + sets + " --out " + (dir / "app").string());
+        kLayerTestSize + " " + sets + " --out " + (dir / "app").string());
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return read_report(dir / "layer");
 }
@@ -39,8 +34,8 @@ json layer_checks(const std::string& scene, const std::string& sets,
 json own_checks(const std::string& scene, const std::string& sets,
                 const std::filesystem::path& dir) {
     const ProcessResult r =
-        run_depthscope("capture --resources none --scene " + scene + " " + kSize + " " + sets +
-                       " --set zfight=on --set equal_check=on --set count_draws=on --out " +
+        run_depthscope("capture --resources none --scene " + scene + " " + kLayerTestSize + " " +
+                       sets + " --set zfight=on --set equal_check=on --set count_draws=on --out " +
                        (dir / "own").string());
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return read_report(dir / "own");
@@ -147,8 +142,8 @@ TEST_P(LayerNoFight, OverdrawHasNoPairInAnyDepthFormat) {
     EXPECT_GT(layer.at("cost").at("depth_record_bytes").get<uint64_t>(), 0u);
     if (std::string(GetParam()) != "d32f") return;  // the image: once is enough
     const ProcessResult plain =
-        run_depthscope("capture --resources none --scene overdraw " + std::string(kSize) + " " +
-                       sets + " --validate --out " + (dir / "plain").string());
+        run_depthscope("capture --resources none --scene overdraw " + std::string(kLayerTestSize) +
+                       " " + sets + " --validate --out " + (dir / "plain").string());
     ASSERT_EQ(plain.exit_code, 0) << plain.err;
     EXPECT_EQ(read_file(dir / "app" / "final.png"), read_file(dir / "plain" / "final.png"));
 }
