@@ -300,9 +300,9 @@ double parse_percent(const std::string& option, const std::string& text) {
 CLI::App* add_diff_command(CLI::App& app, Options& o) {
     auto* diff = app.add_subcommand(
         "diff",
-        "compare two captures: % of pixels over the threshold per image, the passes' GPU ms "
-        "and counters; exit 0 when final.png's % is at most --max-percent, 1 beyond, 2 on "
-        "error");
+        "compare two captures: % of pixels over the threshold per image, final.png's SSIM, "
+        "the passes' GPU ms and counters; exit 0 when final.png's % is at most --max-percent, "
+        "1 beyond, 2 on error");
     diff->add_option("a", o.diff_a, "capture folder A (the baseline)")->required();
     diff->add_option("b", o.diff_b, "capture folder B")->required();
     add_count_option(*diff, "--threshold", o.diff_threshold, 1, 255,

@@ -8,6 +8,9 @@
 #include "capture/exr_file.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
+#include "renderer/metrics/luma.h"
+#include "renderer/metrics/ssim.h"
+#include "renderer/metrics/threshold.h"
 
 namespace ds::capture {
 namespace {
@@ -139,7 +142,7 @@ std::optional<ImageDiff> diff_resource(const ResourceRef& a, const ResourceRef& 
         why = "EXR channels " + ca + " vs " + cb;
         return std::nullopt;
     }
-    ImageDiff d{a.name, a.format, a.semantic, a.width, a.height, a.samples, 0, {}, {}};
+    ImageDiff d{a.name, a.format, a.semantic, a.width, a.height, a.samples, 0, {}, {}, {}};
     Accumulators acc(d.pixels());
     for (size_t c = 0; c < ea.channels.size(); ++c)
         compare_channel(ea.channels[c], eb.channels[c], a, threshold, acc);
@@ -211,17 +214,21 @@ bool DiffResult::passed() const {
 }
 
 ImageDiff diff_final(const Rgba8Image& a, const Rgba8Image& b, int threshold) {
-    ImageDiff d{"final.png", "RGBA8", "LdrColor", a.width, a.height, 1, 0, {}, {}};
+    ImageDiff d{"final.png", "RGBA8", "LdrColor", a.width, a.height, 1, 0, {}, {}, {}};
+    const metrics::Rgba8View va{a.width, a.height, a.rgba}, vb{b.width, b.height, b.rgba};
     Accumulators acc(d.pixels());
     RuleAccumulator& r = acc.of(DiffRule::Bytes8);
-    for (size_t p = 0; p < d.pixels(); ++p) {
-        int largest = 0;
-        for (size_t c = 0; c < 4; ++c)
-            largest = std::max(largest, std::abs(int(a.rgba[p * 4 + c]) - int(b.rgba[p * 4 + c])));
-        r.add(p, largest >= threshold ? double(largest) : 0.0);
-    }
+    const std::vector<uint8_t> largest = metrics::largest_channel_differences(va, vb);
+    for (size_t p = 0; p < largest.size(); ++p)
+        r.add(p, metrics::over_threshold(largest[p], threshold) ? double(largest[p]) : 0.0);
     acc.finish(d);
     return d;
+}
+
+std::optional<double> final_ssim(const Rgba8Image& a, const Rgba8Image& b) {
+    if (a.width < metrics::kSsimWindow || a.height < metrics::kSsimWindow) return std::nullopt;
+    const metrics::Rgba8View va{a.width, a.height, a.rgba}, vb{b.width, b.height, b.rgba};
+    return metrics::ssim(metrics::luma(va), metrics::luma(vb)).mean;
 }
 
 std::string why_not_comparable(const ResourceRef& a, const ResourceRef& b) {
@@ -269,6 +276,7 @@ DiffResult diff_captures(const CaptureFolder& a, const CaptureFolder& b, const D
     const Rgba8Image& fb = b.final_image;
     if (fa.width == fb.width && fa.height == fb.height) {
         ImageDiff d = diff_final(fa, fb, options.threshold);
+        d.ssim = final_ssim(fa, fb);
         if (on_image) on_image(d);
         d.heat = {};
         out.final_image = std::move(d);

@@ -4,7 +4,8 @@
 // command. No Vulkan: it reads the captures' files (capture_folder.h, read_exr).
 //
 // When a pixel differs (a pixel differs when any channel of any sample layer differs):
-//  - final.png: its RGBA8 bytes; a channel differs by >= threshold (of 255; default 8).
+//  - final.png: its RGBA8 bytes; a channel differs by >= threshold (of 255; default 8), the
+//    rule of renderer/metrics/threshold.h. Its SSIM is reported beside (metrics/ssim.h).
 //  - a resource: the values of its EXR, channel by channel, by the channel's rule:
 //      8-bit   the format is 8 bits per channel UNORM or SRGB (R8_UNORM, R8G8B8A8_SRGB,
 //              B8G8R8A8_UNORM, …): the stored 8-bit codes, round(v * 255) of the EXR's
@@ -60,6 +61,9 @@ struct ImageDiff {
     // there over the image's largest of the same rule (1 for a NaN or infinity). Heat maps
     // are made from it; emptied once on_image (diff_captures) has seen it.
     std::vector<float> heat;
+    // final.png only: the mean SSIM of the two images' luma (renderer/metrics/ssim.h); absent
+    // for a resource, and for an image under 11 pixels on a side.
+    std::optional<double> ssim;
 
     uint64_t pixels() const { return uint64_t(width) * height; }
     double percent() const { return pixels() ? 100.0 * double(differing) / double(pixels()) : 0; }
@@ -99,6 +103,10 @@ DiffResult diff_captures(const CaptureFolder& a, const CaptureFolder& b, const D
 
 // The parts, for tests.
 ImageDiff diff_final(const Rgba8Image& a, const Rgba8Image& b, int threshold);
+// The mean SSIM of two images of one size (their luma; metrics/ssim.h); none under 11 pixels
+// on a side. diff_captures fills final.png's ImageDiff::ssim with it (diff_final does not: the
+// inspector's compare view calls that on every frame).
+std::optional<double> final_ssim(const Rgba8Image& a, const Rgba8Image& b);
 // Why two entries of one name cannot be compared ("" when they can).
 std::string why_not_comparable(const ResourceRef& a, const ResourceRef& b);
 std::vector<PassRow> match_passes(const std::vector<PassNumbers>& a,

@@ -50,6 +50,12 @@ std::string largest_list(const ImageDiff& d) {
     return out.empty() ? "0" : out;
 }
 
+// "SSIM 0.9873", or why there is none.
+std::string ssim_text(const ImageDiff& d) {
+    if (!d.ssim) return "SSIM n/a (under 11 pixels on a side)";
+    return printf_text("SSIM %.4f", *d.ssim);
+}
+
 // Cells in columns: the first `left` columns left-aligned, the rest right-aligned (the last
 // one left-aligned too when `last_left`).
 class Table {
@@ -305,7 +311,7 @@ std::string diff_summary(const DiffResult& r, const DiffNames& names) {
         const ImageDiff& f = *r.final_image;
         out += "final.png " + size_text(f.width, f.height) + ": " + percent_text(f.percent()) +
                " (" + std::to_string(f.differing) + " of " + std::to_string(f.pixels()) +
-               " pixels), largest " + largest_list(f) + "\n";
+               " pixels), largest " + largest_list(f) + ", " + ssim_text(f) + "\n";
     } else {
         out += "final.png: not comparable: " + r.final_not_comparable + "\n";
     }
@@ -325,6 +331,7 @@ json diff_json(const DiffResult& r, const DiffNames& names) {
     json final_json = r.final_image
                           ? image_json(*r.final_image, maps)
                           : json{{"name", "final.png"}, {"not_comparable", r.final_not_comparable}};
+    if (r.final_image) final_json["ssim"] = optional_json(r.final_image->ssim);
     return {
         {"tool", "depthscope"},
         {"command", "diff"},
@@ -336,7 +343,10 @@ json diff_json(const DiffResult& r, const DiffNames& names) {
          {{"8-bit", "stored 8-bit codes differ by >= threshold (of 255)"},
           {"uint", "any difference"},
           {"float", "|a - b| > max(" + printf_text("%g", kFloatRelative) + " * max(|a|, |b|), " +
-                        printf_text("%g", kFloatAbsolute) + "); NaN against a number differs"}}},
+                        printf_text("%g", kFloatAbsolute) + "); NaN against a number differs"},
+          {"ssim",
+           "final.ssim: mean SSIM (Wang et al. 2004, Gaussian window sigma 1.5) of the "
+           "luma 0.2126 R + 0.7152 G + 0.0722 B; null under 11 pixels on a side"}}},
         {"final", final_json},
         {"resources", resources},
         {"not_comparable", not_comparable},

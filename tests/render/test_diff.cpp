@@ -75,6 +75,8 @@ TEST(Diff, ACaptureAgainstItsReplayIsTheSameEverywhere) {
     const nlohmann::json j = read_json(out / "diff.json");
     ASSERT_TRUE(j.is_object());
     EXPECT_EQ(j["final"]["differing"], 0);
+    EXPECT_EQ(j["final"]["ssim"], 1.0);  // identical images
+    EXPECT_NE(r.out.find("largest 0/255, SSIM 1.0000\n"), std::string::npos) << r.out;
     EXPECT_EQ(j["verdict"]["same"], true);
     ASSERT_EQ(j["resources"].size(), a.report["resources"].size());
     EXPECT_GE(j["resources"].size(), 10u);
@@ -111,6 +113,9 @@ TEST(Diff, PrepassOnAndOffPassWithinATenthOfAPercent) {
     const nlohmann::json j = read_json(out / "diff.json");
     EXPECT_LT(j["final"]["percent"].get<double>(), 0.1);
     EXPECT_EQ(j["final"]["differing"].get<long>(), summary_final_count(r.out));
+    // Structurally the same image: SSIM near 1 (0.99988 on lavapipe).
+    EXPECT_GT(j["final"]["ssim"].get<double>(), 0.99) << r.out;
+    EXPECT_LE(j["final"]["ssim"].get<double>(), 1.0) << r.out;
     EXPECT_EQ(j["resources"].size(), 2u);  // depth and hdr, in both
     // The passes side by side: the prepass in A only, forward's shaded fragments in both, and
     // without the prepass forward shades more (the overdraw the prepass saves).
@@ -145,6 +150,7 @@ TEST(Diff, WithoutInvarianceTheHolesFailAndShowInTheHeatMap) {
     EXPECT_EQ(long(non_black(heat)), counted) << r.out;
     const nlohmann::json j = read_json(out / "diff.json");
     EXPECT_EQ(j["final"]["differing"].get<long>(), counted);
+    EXPECT_LT(j["final"]["ssim"].get<double>(), 1.0);  // the holes are structure that differs
 
     // Each differing pixel is one of the holes (equal_check 1 in the invariance-off capture).
     const capture::ExrImage holes = capture::read_exr(off.dir / "resources/equal_check.exr");
@@ -161,7 +167,8 @@ TEST(Diff, WithoutInvarianceTheHolesFailAndShowInTheHeatMap) {
     EXPECT_GT(counted, 1000) << r.out;
     EXPECT_EQ(differing_holes, counted);
     EXPECT_GE(differing_holes, reported_holes * 9 / 10) << "most holes visible";
-    std::printf("invariant off: %ld pixels differ, %ld holes\n", counted, reported_holes);
+    std::printf("invariant off: %ld pixels differ, %ld holes, SSIM %.4f\n", counted, reported_holes,
+                j["final"]["ssim"].get<double>());
 }
 
 // Input that is no capture: one line, exit 2 (diff's "trouble"), nothing on stdout, no --out.

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -199,7 +200,8 @@ TEST(DiffReport, SummaryAndJsonSayTheSame) {
     const DiffResult r = diff_captures(ca, cb, {8, 0.5}, {});
     const DiffNames names{"A", "B", "OUT"};
     const std::string text = diff_summary(r, names);
-    EXPECT_NE(text.find("final.png 10x10: 1.000 % (1 of 100 pixels), largest 9/255"),
+    EXPECT_NE(text.find("final.png 10x10: 1.000 % (1 of 100 pixels), largest 9/255, SSIM n/a "
+                        "(under 11 pixels on a side)\n"),
               std::string::npos)
         << text;
     EXPECT_NE(text.find("resources: none listed"), std::string::npos) << text;
@@ -214,12 +216,42 @@ TEST(DiffReport, SummaryAndJsonSayTheSame) {
     EXPECT_EQ(j["tool"], "depthscope");
     EXPECT_EQ(j["final"]["differing"], 1);
     EXPECT_EQ(j["final"]["heat_map"], "final.png");
+    EXPECT_TRUE(j["final"]["ssim"].is_null());  // 10x10: under SSIM's window
     EXPECT_EQ(j["passes"][0]["b_over_a"]["shaded_fragments"], 1.5);
     EXPECT_TRUE(j["passes"][0]["b_over_a"]["discarded_fragments"].is_null());  // 0 / 0
     EXPECT_EQ(j["frame"]["gpu_ms"]["b_over_a"], 1.5);
     EXPECT_EQ(j["verdict"]["same"], false);
     EXPECT_EQ(j["verdict"]["exit_code"], 1);
     EXPECT_EQ(diff_exit_code(diff_captures(ca, cb, {8, 1.0}, {})), 0);  // 1 % allowed
+}
+
+// final.png's SSIM (renderer/metrics/ssim.h) beside its pixel counts: 1 for equal images, less
+// where they differ, in the summary and diff.json.
+TEST(DiffReport, FinalSsim) {
+    CaptureFolder ca, cb;
+    ca.final_image = grey_image(16, 12, 100);
+    for (size_t p = 0; p < ca.final_image.rgba.size(); ++p)
+        ca.final_image.rgba[p] = uint8_t((p * 37) % 251);
+    cb.final_image = ca.final_image;
+    EXPECT_EQ(final_ssim(ca.final_image, cb.final_image), 1.0);
+    const DiffResult same = diff_captures(ca, cb, {}, {});
+    ASSERT_TRUE(same.final_image);
+    EXPECT_EQ(same.final_image->ssim, 1.0);
+    EXPECT_NE(diff_summary(same, {"A", "B", ""}).find("largest 0/255, SSIM 1.0000\n"),
+              std::string::npos)
+        << diff_summary(same, {"A", "B", ""});
+
+    for (size_t p = 0; p < cb.final_image.rgba.size(); p += 8) cb.final_image.rgba[p] ^= 0x40;
+    const DiffResult r = diff_captures(ca, cb, {}, {});
+    ASSERT_TRUE(r.final_image && r.final_image->ssim);
+    const double s = *r.final_image->ssim;
+    EXPECT_LT(s, 0.99);
+    EXPECT_GT(s, -1.0);
+    char expected[32];
+    std::snprintf(expected, sizeof expected, "SSIM %.4f\n", s);
+    EXPECT_NE(diff_summary(r, {"A", "B", ""}).find(expected), std::string::npos);
+    EXPECT_EQ(diff_json(r, {"A", "B", ""})["final"]["ssim"], s);
+    EXPECT_FALSE(diff_final(ca.final_image, cb.final_image, 8).ssim);  // the compare view's
 }
 
 // A folder that is no capture is refused with one line naming the file and the fault.
