@@ -1,4 +1,5 @@
 #include "app/cli.h"
+#include "app/cli_options.h"
 
 #include <algorithm>
 #include <charconv>
@@ -26,115 +27,8 @@ struct Subcommands {
     CLI::App* layer = nullptr;
     CLI::App* diff = nullptr;
     CLI::App* diagnose = nullptr;
+    TuneCommands tune;
 };
-
-// --size texts, parsed once the command is known: the window's (view) or the render's. Unset
-// when the option is absent; an empty text given on the command line is an error, not the
-// default.
-struct SizeTexts {
-    std::optional<std::string> render;
-    std::optional<std::string> window;
-    std::optional<std::string> at;       // pixel --at
-    std::optional<std::string> look_at;  // --look-at (the view)
-};
-
-// A whole-number option's value in min..max; throws UsageError naming the option.
-int parse_count(const std::string& option, const std::string& text, int min, int max) {
-    const std::optional<uint32_t> value = parse_digits(text);
-    if (!value || *value < uint32_t(min) || *value > uint32_t(max))
-        throw UsageError(option + " expects a whole number in " + std::to_string(min) + ".." +
-                         std::to_string(max) + ", got " + quote(text));
-    return int(*value);
-}
-
-// A whole-number option read by parse_count rather than CLI11's own conversion.
-CLI::Option* add_count_option(CLI::App& cmd, const std::string& name, int& target, int min, int max,
-                              const std::string& help) {
-    return cmd
-        .add_option_function<std::string>(
-            name,
-            [&target, name, min, max](const std::string& text) {
-                target = parse_count(name, text, min, max);
-            },
-            help)
-        ->type_name("N");
-}
-
-// A path option: an empty value is an error, not "no path" (which would mean the default).
-CLI::Option* add_path_option(CLI::App& cmd, const std::string& name, std::string& target,
-                             const std::string& help) {
-    return cmd
-        .add_option_function<std::string>(
-            name,
-            [&target, name](const std::string& text) {
-                if (text.empty()) throw UsageError(name + " expects a path, got ''");
-                target = text;
-            },
-            help)
-        ->type_name("PATH");
-}
-
-// A text option that remembers whether it was given (an empty value included).
-CLI::Option* add_text_option(CLI::App& cmd, const std::string& name,
-                             std::optional<std::string>& target, const std::string& help) {
-    return cmd.add_option_function<std::string>(
-        name, [&target](const std::string& text) { target = text; }, help);
-}
-
-// Options every rendering subcommand shares.
-// Every command that loads a scene takes it (scene::ImportOptions::strict).
-void add_strict_flag(CLI::App& cmd, Options& o) {
-    cmd.add_flag("--strict", o.strict,
-                 "refuse a scene file whose texture is missing, does not decode or is in an "
-                 "unsupported format (one error) instead of dropping that texture with a warning");
-}
-
-void add_render_options(CLI::App& cmd, Options& o, bool with_scene) {
-    cmd.add_flag("--validate", o.validate,
-                 "enable VK_LAYER_KHRONOS_validation; any validation message makes the exit "
-                 "code 3");
-    cmd.add_option("--device", o.device, "Vulkan device: index or name substring (see `info`)");
-    add_strict_flag(cmd, o);
-    if (with_scene) {
-        cmd.add_option("--scene", o.scene, "built-in scene name (see `scenes`) or .gltf/.glb path");
-    }
-    cmd.add_option("--set", o.sets, "setting as name=value, repeatable (see `settings`)")
-        ->type_name("NAME=VALUE");
-}
-
-// --camera NAME|INDEX and --look-at, which exclude each other: the view a command renders
-// (app/view_camera.h). `what` says what the view replaces ("the scene's camera").
-struct ViewChoice {
-    CLI::Option* camera = nullptr;
-    CLI::Option* look_at = nullptr;
-};
-
-ViewChoice add_view_choice(CLI::App& cmd, Options& o, std::optional<std::string>& look_at_text,
-                           const std::string& what) {
-    ViewChoice v;
-    v.camera = cmd.add_option_function<std::string>(
-                      "--camera",
-                      [&o](const std::string& text) {
-                          if (text.empty())
-                              throw UsageError(
-                                  "--camera expects a camera node's name or index (see "
-                                  "`depthscope cameras SCENE`), got ''");
-                          o.camera = text;
-                      },
-                      "instead of " + what +
-                          ": the scene's camera node NAME (exact) or INDEX, as `depthscope "
-                          "cameras SCENE` lists them (perspective ones)")
-                   ->type_name("NAME|INDEX");
-    v.look_at = add_text_option(cmd, "--look-at", look_at_text,
-                                "instead of " + what +
-                                    ": a camera at EX,EY,EZ looking at TX,TY,TZ, up +Y, with a "
-                                    "vertical field of view of FOV degrees (10..120; default the "
-                                    "scene camera's); the scene camera's near plane, the far "
-                                    "plane holding the whole scene")
-                    ->type_name("EX,EY,EZ:TX,TY,TZ[:FOV]");
-    v.camera->excludes(v.look_at);
-    return v;
-}
 
 // The inspector: `depthscope [view] [--scene NAME|PATH] [--set k=v]... [--frames N]`.
 void add_view_options(CLI::App& cmd, Options& o, std::optional<std::string>& window_text,
@@ -191,6 +85,11 @@ CLI::App* add_capture_command(CLI::App& app, Options& o, SizeTexts& texts) {
     capture->add_flag("--advise", o.advise,
                       "also render the frame without (or with) the prepass and write the "
                       "prepass advisor's `advice` into report.json");
+    capture->add_flag("--reference", o.reference,
+                      "also render the supersampled reference (4x4 samples per pixel, box "
+                      "resolve in linear HDR; what `tune` scores against) into "
+                      "resources/reference.png, .exr and reference_edges.png, and score "
+                      "final.png against it in report.json `reference`");
     return capture;
 }
 
@@ -395,6 +294,7 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     c.diff = add_diff_command(app, o);
     c.diagnose = add_diagnose_command(app, o, sizes);
     c.layer = add_layer_command(app, o);
+    c.tune = add_tune_command(app, o, sizes);
     return c;
 }
 
@@ -425,6 +325,8 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
     if (c.diff->parsed()) o.command = Command::Diff;
     if (c.diagnose->parsed()) o.command = Command::Diagnose;
     if (c.layer->parsed()) o.command = Command::Layer;
+    if (c.tune.msaa->parsed()) o.command = Command::TuneMsaa;
+    if (c.tune.alpha->parsed()) o.command = Command::TuneAlpha;
     if (sizes.at) parse_at(*sizes.at, o.at_x, o.at_y);
     if (sizes.look_at) o.look_at = parse_look_at(*sizes.look_at);
     if (sizes.render) o.size = parse_size(*sizes.render);
@@ -432,7 +334,8 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
         o.window = parse_size(*sizes.window);
         if (o.command == Command::Default) o.size = o.window;  // the headless fallback
     }
-    for (CLI::App* cmd : {&app, c.view, c.capture, c.bench, c.pixel, c.diagnose})
+    for (CLI::App* cmd :
+         {&app, c.view, c.capture, c.bench, c.pixel, c.diagnose, c.tune.msaa, c.tune.alpha})
         if (cmd->count("--scene")) o.scene_given = true;
     const bool inspector = o.command == Command::View || o.command == Command::Default;
     if (inspector && !o.capture_in.empty() && o.scene_given)

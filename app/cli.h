@@ -22,7 +22,9 @@ enum class Command {
     Replay,
     Diff,
     Diagnose,
-    Layer
+    Layer,
+    TuneMsaa,
+    TuneAlpha
 };
 
 struct Size {
@@ -62,8 +64,10 @@ struct Options {
     int bench_frames = 20;
     int bench_warmup = 5;
     std::vector<std::string> matrix;  // "name=v1,v2"
-    bool advise = false;   // bench / capture --advise: the prepass advisor (prepass on and off)
-    int soak_seconds = 0;  // bench --soak SECONDS (0: no soak)
+    bool advise = false;
+    bool reference = false;  // capture --reference: the supersampled reference as a resource   //
+                             // bench / capture --advise: the prepass advisor (prepass on and off)
+    int soak_seconds = 0;    // bench --soak SECONDS (0: no soak)
     // pixel: --at X,Y (checked against --size when the command runs); --json goes to `out`
     uint32_t at_x = 0, at_y = 0;
     // diff A B [--threshold N] [--max-percent P] [--out DIR]: two capture folders
@@ -81,6 +85,13 @@ struct Options {
     int layer_frame = 0;  // 0: not given
     bool layer_list = false;
     std::vector<std::string> layer_app;
+    // tune msaa|alpha [--cost ms|fragments] [--json FILE] [--plot FILE.png]; alpha:
+    // [--material NAME]… [--step S]; --frames / --warmup time --cost ms.
+    std::string tune_cost = "fragments";
+    int tune_frames = 5, tune_warmup = 1;
+    std::string plot;
+    std::vector<std::string> tune_materials;
+    float tune_step = 0.05f;
 };
 
 // Parses argv. Returns the exit code to use right away (help printed: 0), or nullopt to run.

@@ -16,6 +16,7 @@
 #include "capture/renderdoc.h"
 #include "capture/resource_capture.h"
 #include "capture/trace.h"
+#include "capture/tune/reference_files.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
 #include "renderer/device_info.h"
@@ -178,8 +179,12 @@ int write_capture(const Options& o, const CaptureJob& job) {
     nlohmann::json resources = write_resources(o, renderer, spec, frame, out);
     std::optional<capture::Advice> advice;
     if (o.advise) advice = advise(o, renderer, settings, scene);
+    std::optional<nlohmann::json> reference;
+    if (o.reference)
+        reference = tune::write_reference(renderer, scene, scene.camera, settings, frame,
+                                          out.staging_path("resources"));
     write_capture_report(renderer, spec, frame, graph, std::move(resources),
-                         advice ? &*advice : nullptr, out);
+                         advice ? &*advice : nullptr, out, reference ? &*reference : nullptr);
     if (o.dump_graph) std::printf("%s\n", graph_text.c_str());
     if (!o.trace.empty()) write_trace(o, renderer, scene, settings, frame);
     const std::string warning = out.commit();

@@ -21,6 +21,7 @@ int run_diff(const Options& options);        // 0 same, 1 differs, 2 error (its 
 int run_diagnose(const Options& options);
 // the application's exit code; depthscope's own (1, 2) for its own errors
 int run_layer(const Options& options);
+int run_tune(const Options& options);  // tune msaa | tune alpha
 bool display_available();  // $DISPLAY or $WAYLAND_DISPLAY set
 
 }  // namespace ds::app

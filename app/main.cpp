@@ -40,6 +40,9 @@ int dispatch(const ds::app::Options& o) {
             return ds::app::run_diagnose(o);
         case Command::Layer:
             return ds::app::run_layer(o);
+        case Command::TuneMsaa:
+        case Command::TuneAlpha:
+            return ds::app::run_tune(o);
         case Command::Default:
             // The inspector where there is a display; a headless capture where there is none.
             // --capture opens the inspector: without a display it fails there, not as a capture.

@@ -30,7 +30,7 @@ nlohmann::json write_capture_resources(Renderer& renderer, const CaptureSpec& sp
 void write_capture_report(const Renderer& renderer, const CaptureSpec& spec,
                           const FrameResult& frame, const nlohmann::json& graph,
                           nlohmann::json resources, const capture::Advice* advice,
-                          const capture::OutputDir& out) {
+                          const capture::OutputDir& out, const nlohmann::json* reference) {
     nlohmann::json report =
         capture::frame_report({.device = device_info(renderer),
                                .scene = spec.scene,
@@ -41,6 +41,7 @@ void write_capture_report(const Renderer& renderer, const CaptureSpec& spec,
                                .camera = &spec.camera,
                                .graph = &graph});
     report["resources"] = std::move(resources);
+    if (reference) report["reference"] = *reference;
     capture::write_json(out.staging_path("report.json"), report);
 }
 

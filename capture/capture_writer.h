@@ -40,10 +40,11 @@ nlohmann::json write_capture_resources(Renderer& renderer, const CaptureSpec& sp
 
 // report.json for `frame` (the one final.png holds) with its compiled graph (taken right after
 // that frame, before the resources' frames), the resources array and, with --advise, advice.
+// `reference`: capture --reference's section (capture/tune/reference_files.h), or none.
 void write_capture_report(const Renderer& renderer, const CaptureSpec& spec,
                           const FrameResult& frame, const nlohmann::json& graph,
                           nlohmann::json resources, const capture::Advice* advice,
-                          const capture::OutputDir& out);
+                          const capture::OutputDir& out, const nlohmann::json* reference = nullptr);
 
 // The plain capture: render_capture_frame, final.png, the resources and report.json, staged in
 // `out` (not committed). Returns the written frame. Throws like the parts (ds::Error,

@@ -185,6 +185,7 @@ void Inspector::apply(const Action& action) {
             },
             [&](const DeleteBookmark& a) { bookmarks_.remove(bookmark_key(scene_), a.name); },
             [&](const Diagnose&) { start_diagnosis(); },
+            [&](const Tune& t) { start_tuning(t); },
             [&](const SelectFinding& a) { select_finding(a.index); },
             [&](const AddOverlay& a) { viewer_.overlays.push_back({a.resource}); },
             [&](const RemoveOverlay& a) {
@@ -279,6 +280,7 @@ void Inspector::update() {
     if (camera_.update(camera_input_)) last_motion_ = std::chrono::steady_clock::now();
     camera_input_ = CameraInput{};
     collect_diagnosis();
+    if (tuning_.collect()) dirty_ = true;  // its frames left the temporal history behind
     schedule();
     // A frame the device refused: settings went back to the last good ones; render those now
     // (synchronous mode: within this update, as the user expects).

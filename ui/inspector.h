@@ -42,6 +42,7 @@
 #include "ui/render_worker.h"
 #include "ui/sample_view.h"
 #include "ui/shader_watch.h"
+#include "ui/tuning.h"
 #include "ui/view_composer.h"
 #include "ui/viewer_blit.h"
 
@@ -128,7 +129,7 @@ using Action =
     std::variant<SetSetting, SelectResource, SelectPass, LoadScene, ReloadShaders, SetAutoReload,
                  ResetSettings, MeasureAdvice, SceneCamera, GoToCamera, FitInside, AddBookmark,
                  GoToBookmark, DeleteBookmark, Diagnose, SelectFinding, AddOverlay, RemoveOverlay,
-                 MoveOverlay, PickPixel, CaptureFrame, PinCapture>;
+                 MoveOverlay, PickPixel, CaptureFrame, PinCapture, Tune>;
 
 enum class MouseTarget : uint8_t { Camera, Image, Pick };
 
@@ -223,7 +224,7 @@ class Inspector {
     bool poll_shader_watch();
     // A scene frame is rendering (or waiting), or a diagnosis runs: the viewer marks
     // "rendering… N ms" (or "diagnosing… N s"), the window draws the UI at 30 Hz meanwhile.
-    bool rendering() const { return worker_->busy() || diagnosing(); }
+    bool rendering() const { return worker_->busy() || diagnosing() || tuning_.running(); }
     double rendering_ms() const { return worker_->in_flight_ms(); }
     // Frames posted to the worker so far (each UI frame in synchronous mode).
     uint64_t frames_posted() const { return frames_posted_; }
@@ -267,6 +268,8 @@ class Inspector {
     uint64_t diagnoses_started() const { return diagnoses_started_; }
     double diagnosing_seconds() const;
     bool diagnosis_current() const;
+    // The Tuning panel's runs (ui/tuning.h): tune msaa / alpha on the current view.
+    const Tuning& tuning() const { return tuning_; }
     // The selected finding's pixels as a keep mask at the frame's size; empty when none is
     // selected, it covers none, or the view is not the one diagnosed.
     std::vector<uint8_t> selected_finding_pixels() const;
@@ -333,6 +336,7 @@ class Inspector {
         std::vector<size_t> draw_rows;          // the Draws panel's rows as last drawn
         uint64_t pixel_picks_shown = 0;         // the Pixel panel opens on a new pick
         uint64_t diagnoses_shown = 0;           // the Diagnose panel opens on a new diagnosis
+        int tune_cost = 0;                      // the Tuning panel's cost: 0 fragments, 1 ms
     };
     PanelState& panel_state() const { return panel_state_; }
     // The panels' layout: regions, tabs, splits (ui/panels/workspace.h); workspace().select(
@@ -367,7 +371,8 @@ class Inspector {
         VkExtent2D size{};
     };
     void start_diagnosis();
-    void collect_diagnosis();  // a finished diagnosis, if any (update())
+    void collect_diagnosis();          // a finished diagnosis, if any (update())
+    void start_tuning(const Tune& t);  // inspector_tuning.cpp
     void select_finding(int index);
     // A selected Z-fight finding's pair, selected in the Depth panel once a frame has it.
     void select_finding_pair();
@@ -433,6 +438,7 @@ class Inspector {
     std::chrono::steady_clock::time_point diagnosis_started_{};
     uint64_t diagnoses_started_ = 0;
     std::vector<diagnose::FindingSurface> finding_pair_;  // to select in the Depth panel
+    Tuning tuning_;
     std::optional<PixelHistory> pixel_history_;
     std::optional<DepthResult> pixel_depth_;
     std::optional<MsaaSamples> pixel_samples_;

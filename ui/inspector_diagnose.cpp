@@ -36,6 +36,7 @@ DetailsPanel details_of(const std::string& detector) {
 
 Inspector::~Inspector() {
     if (diagnosis_future_.valid()) diagnosis_future_.wait();
+    tuning_.wait();
 }
 
 double Inspector::diagnosing_seconds() const {

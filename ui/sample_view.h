@@ -17,6 +17,7 @@
 #include "renderer/passes/frame_result.h"
 #include "renderer/passes/msaa_samples.h"
 #include "renderer/passes/pixel_history.h"
+#include "renderer/renderer.h"
 #include "renderer/view/sample_positions.h"
 
 namespace ds::ui {

@@ -20,6 +20,7 @@ const std::vector<PanelEntry>& panel_list() {
         {"Overlays", Region::Bottom, overlays_panel},
         {"Compare", Region::Bottom, compare_panel},
         {"Tiler", Region::Bottom, tiler_panel},
+        {"Tuning", Region::Bottom, tuning_panel},
     };
     return panels;
 }

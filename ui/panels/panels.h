@@ -44,6 +44,7 @@ void pixel_panel(PanelIo& io);
 void compare_panel(PanelIo& io);
 void tiler_panel(PanelIo& io);
 void diagnose_panel(PanelIo& io);
+void tuning_panel(PanelIo& io);
 // A new pick wants the Pixel panel shown (once per pick), a new diagnosis the Diagnose panel.
 bool pixel_panel_wants_tab(PanelIo& io);
 bool diagnose_panel_wants_tab(PanelIo& io);
