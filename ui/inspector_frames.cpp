@@ -73,7 +73,8 @@ bool Inspector::idle() const {
     // full-size one that the next update() posts, once the camera has been still kMotionHold.
     return !worker_->busy() && !worker_->has_finished() && !moving() && !posted_moving_ &&
            !pending_capture_ && !dirty_ && !knob_value(settings_, kContinuous) &&
-           pending_.empty() && frames_drawn_ == frames_rendered_ && !diagnosing();
+           pending_.empty() && frames_drawn_ == frames_rendered_ && !diagnosing() &&
+           !tuning_.running();
 }
 
 FrameJob Inspector::next_job() const {

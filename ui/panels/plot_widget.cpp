@@ -22,9 +22,8 @@ void ranges(const capture::Plot& plot, Range& x, Range& y) {
             y.lo = any ? std::min(y.lo, py) : py, y.hi = any ? std::max(y.hi, py) : py;
             any = true;
         }
-    y.lo = std::min(y.lo, 0.0);  // errors and costs start at 0
-    const double pad_x = (x.hi - x.lo) * 0.05, pad_y = (y.hi - y.lo) * 0.08;
-    x.lo -= pad_x, x.hi += pad_x, y.hi += pad_y;
+    const double pad_x = (x.hi - x.lo) * 0.05, pad_y = (y.hi - y.lo) * 0.1;
+    x.lo -= pad_x, x.hi += pad_x, y.lo -= pad_y, y.hi += pad_y;
 }
 
 ImU32 colour(uint32_t rgb) {
@@ -59,6 +58,9 @@ void plot_widget(const char* id, const capture::Plot& plot, float height) {
                 dl->AddLine(to_screen(s.points[i - 1].first, s.points[i - 1].second), p,
                             colour(s.rgb), 2.0f);
             if (s.markers) dl->AddCircleFilled(p, 3.5f, colour(s.rgb));
+            if (i < s.point_labels.size())
+                dl->AddText(ImVec2(p.x + 5, p.y - 15), IM_COL32(200, 200, 200, 255),
+                            s.point_labels[i].c_str());
             if (ImGui::IsItemHovered() && std::hypot(mouse.x - p.x, mouse.y - p.y) < 6.0f) {
                 char text[160];
                 std::snprintf(text, sizeof text, "%s%s%s\n%s %.4g\n%s %.4g", s.label.c_str(),

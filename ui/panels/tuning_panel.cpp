@@ -81,7 +81,6 @@ void msaa_section(PanelIo& io, const tune::MsaaTune& t) {
         ImGui::SameLine();
         apply_button(io, ("msaa" + std::to_string(i)).c_str(), r.candidate.assignments());
     }
-    plot_widget("msaa_plot", tune::msaa_plot(t), 180.0f);
 }
 
 void alpha_section(PanelIo& io, const tune::AlphaTune& t) {
@@ -102,7 +101,19 @@ void alpha_section(PanelIo& io, const tune::AlphaTune& t) {
             set.push_back(std::string("alpha_to_coverage=") + (b.alpha_to_coverage ? "on" : "off"));
         apply_button(io, ("alpha" + std::to_string(i)).c_str(), set);
     }
-    plot_widget("alpha_plot", tune::alpha_plot(t), 180.0f);
+}
+
+// The section's table and buttons on the left, its plot on the right.
+template <class Left, class Right>
+void side_by_side(const char* id, Left left, Right right) {
+    if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_Resizable | ImGuiTableFlags_BordersInnerV))
+        return;
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    left();
+    ImGui::TableNextColumn();
+    right();
+    ImGui::EndTable();
 }
 
 }  // namespace
@@ -110,9 +121,15 @@ void alpha_section(PanelIo& io, const tune::AlphaTune& t) {
 void tuning_panel(PanelIo& io) {
     run_line(io, io.inspector.panel_state().tune_cost);
     const Tuning& t = io.inspector.tuning();
-    if (t.msaa()) msaa_section(io, *t.msaa());
+    if (t.msaa())
+        side_by_side(
+            "msaa_layout", [&] { msaa_section(io, *t.msaa()); },
+            [&] { plot_widget("msaa_plot", tune::msaa_plot(*t.msaa()), 200.0f); });
     if (t.msaa() && t.alpha()) ImGui::Separator();
-    if (t.alpha()) alpha_section(io, *t.alpha());
+    if (t.alpha())
+        side_by_side(
+            "alpha_layout", [&] { alpha_section(io, *t.alpha()); },
+            [&] { plot_widget("alpha_plot", tune::alpha_plot(*t.alpha()), 200.0f); });
     if (!t.msaa() && !t.alpha() && !t.running())
         ImGui::TextDisabled("Nothing scored yet: run one of the sweeps above.");
 }
