@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/common/surface_name.h"
+#include "renderer/scene/alpha_mips.h"
 #include "renderer/scene/scene.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptors.h"
@@ -149,6 +150,7 @@ class GpuScene {
     void upload_instances(const scene::Scene& scene, vk::UploadBatch& batch);
     void upload_bounds(vk::UploadBatch& batch);
     void upload_textures(const scene::Scene& scene, vk::UploadBatch& batch);
+    vk::MipFill upload_image(const vk::Image& dst, const scene::Image& img, vk::UploadBatch& batch);
     void create_samplers(const scene::Scene& scene);
     static bool texture_valid(const scene::Scene& scene, const scene::TextureRef& ref);
     // View and sampler for a texture reference; the fallback image when it is missing.
