@@ -326,6 +326,10 @@ void GpuScene::create_material_sets(const scene::Scene& scene, VkDescriptorSetLa
             writer.image(binding, view, sampler);
         };
         add(kBaseColorTexture, m.base_color, white_image_);
+        if (scene::masked_base_color_image(scene, i)) {
+            auto [view, sampler] = texture_binding(scene, m.base_color, white_image_);
+            remember_masked(scene, i, view, sampler);
+        }
         add(kMetallicRoughnessTexture, m.metallic_roughness, white_image_);
         add(kNormalTexture, m.normal, flat_normal_image_);
         add(kOcclusionTexture, m.occlusion, white_image_);
