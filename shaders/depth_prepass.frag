@@ -91,7 +91,8 @@ void main() {
     float coverage = 1.0;  // output 0's alpha: the sample mask with alpha-to-coverage
 #if ALPHA_MASK
     bool tested = ALPHA_MASK == 1 || (material.flags & kMaterialAlphaMask) != 0u;
-    float alpha = texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)).a * material.base_color_factor.a;
+    float alpha = mask_alpha(
+        in_uv0, texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)).a * material.base_color_factor.a);
     count_invoked();
 #if ALPHA_TO_COVERAGE
     float sharpened = coverage_alpha(alpha, alpha_cutoff());  // outside the branch: fwidth

@@ -89,6 +89,12 @@ std::vector<SettingDef> msaa_and_alpha_knobs() {
                   "texels as level 0 (Castaño 2010), per texture and effective cutoff (report "
                   "alpha_coverage)",
                   I::Resources),
+        bool_knob(kAlphaLevel0, "alpha", false,
+                  "the MASK alpha test (prepass, forward, shadow, decals, transparent, zfight) "
+                  "samples the base colour's alpha at mip level 0 (textureLod 0), as "
+                  "alpha-tested materials sample the texture's full-resolution level in a "
+                  "supersampled reference frame; colour keeps its mips",
+                  I::Nothing),
     };
 }
 
