@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/common/error.h"
+#include "renderer/frame/alpha_coverage_report.h"
 #include "renderer/frame/frame_memory.h"
 #include "renderer/frame/frame_passes.h"
 #include "renderer/frame/frame_targets.h"
@@ -231,6 +232,10 @@ void Renderer::Impl::collect(Slot& slot, uint64_t graph_frame, const passes::Fra
         a.pass->collect(c, own, result);
     }
     for (const FrameJoin join : frame_joins()) join(result);
+    // The frame's, not a pass's: the textures as this frame sampled them.
+    if (const auto& coverage = scene->alpha_coverage(); !coverage.empty())
+        result.slots.put(AlphaCoverageResult{coverage.front().mode, coverage},
+                         &alpha_coverage_report);
     if (slot.timestamps.count()) {
         if (auto ticks = slot.timestamps.results())
             result.gpu_ms = slot.timestamps.ticks_to_ms((*ticks)[0], (*ticks)[1]);
@@ -260,6 +265,9 @@ passes::FrameOptions Renderer::Impl::options_for(const Settings& settings,
     // material_alpha_cutoff: checked against the scene (an unknown name throws) and uploaded
     // when it changed, before this frame begins.
     scene->set_alpha_cutoff_overrides(knob_value(settings, knobs::kMaterialAlphaCutoff));
+    // alpha_mip_coverage at the cutoffs just set: replaced images retire with the last frame.
+    scene->set_alpha_mips(scene::alpha_mip_mode(settings), options.alpha_cutoff,
+                          frames->retire_list());
     if (options.samples != last_samples)
         for (const std::unique_ptr<passes::FramePass>& pass : passes)
             pass->on_sample_count_changed(options.samples);

@@ -15,6 +15,13 @@
 //   SURFACE_ID=1       also write the surface that won the depth test (u32): attachment 2
 //                      with GBUFFER=1, SURFACE_LOCATION (0, or 1 after the coverage slot)
 //                      with GBUFFER=0.
+//   COVERAGE_SLOT=1    GBUFFER=0 with alpha_to_coverage: colour slot 0 has no image; every
+//                      variant writes output 0 (an unwritten attachment draws a validation
+//                      warning), the ones without the alpha test a coverage of 1.
+//   ALPHA_MIP=1        alpha_mip=on: also write, at ALPHA_MIP_LOCATION (after surface_id),
+//                      the mip level the alpha test sampled, textureQueryLod().x (the level
+//                      accessed; 0 with alpha_level0), on MASK surfaces, and -1 ("none")
+//                      on every other surface.
 //   ALPHA_TO_COVERAGE, COUNT_DISCARDS: see common/alpha_test.glsl (with ALPHA_MASK only).
 //                      With GBUFFER=0 the sharpened alpha goes to output 0, whose attachment
 //                      slot has no image: alpha to coverage reads output 0 whatever is bound.
@@ -40,6 +47,15 @@
 #endif
 #ifndef LIGHT_SLOT
 #define LIGHT_SLOT 0
+#endif
+#ifndef ALPHA_MIP
+#define ALPHA_MIP 0
+#endif
+#ifndef COVERAGE_SLOT
+#define COVERAGE_SLOT 0
+#endif
+#ifndef ALPHA_MIP_LOCATION
+#define ALPHA_MIP_LOCATION 3
 #endif
 
 #include "common/alpha_test.glsl"
@@ -67,7 +83,8 @@ layout(location = 2) in vec2 in_uv0;
 layout(location = 0) out vec4 out_light;
 #define HAS_OUTPUT0 GBUFFER
 #else
-#define HAS_OUTPUT0 (GBUFFER || PIXEL_HISTORY || (ALPHA_MASK && ALPHA_TO_COVERAGE))
+#define HAS_OUTPUT0 \
+    (GBUFFER || PIXEL_HISTORY || (ALPHA_MASK && ALPHA_TO_COVERAGE) || COVERAGE_SLOT)
 #endif
 #if HAS_OUTPUT0
 layout(location = LIGHT_SLOT) out vec4 out_normal;
@@ -76,6 +93,9 @@ layout(location = LIGHT_SLOT) out vec4 out_normal;
 layout(location = LIGHT_SLOT + 1) out float out_roughness;
 #else  // the replay's one attachment is a stand-in for output 0: this is recorded
 float out_roughness;
+#endif
+#if ALPHA_MIP
+layout(location = ALPHA_MIP_LOCATION) out float out_alpha_mip;
 #endif
 #if SURFACE_ID
 layout(location = 4) flat in uint in_surface_base;
@@ -91,7 +111,13 @@ void main() {
     float coverage = 1.0;  // output 0's alpha: the sample mask with alpha-to-coverage
 #if ALPHA_MASK
     bool tested = ALPHA_MASK == 1 || (material.flags & kMaterialAlphaMask) != 0u;
-    float alpha = texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)).a * material.base_color_factor.a;
+    vec2 base_uv = texture_uv(kTextureBaseColor, in_uv0);
+    float alpha =
+        mask_alpha(in_uv0, texture(base_color_texture, base_uv).a * material.base_color_factor.a);
+#if ALPHA_MIP
+    // Before the discard, while the whole quad runs (implicit derivatives).
+    float sampled_level = alpha_level0() ? 0.0 : textureQueryLod(base_color_texture, base_uv).x;
+#endif
     count_invoked();
 #if ALPHA_TO_COVERAGE
     float sharpened = coverage_alpha(alpha, alpha_cutoff());  // outside the branch: fwidth
@@ -124,6 +150,11 @@ void main() {
 #endif
 #if SURFACE_ID
     out_surface = in_surface_base + uint(gl_PrimitiveID) + 1u;
+#endif
+#if ALPHA_MIP && ALPHA_MASK
+    out_alpha_mip = tested ? sampled_level : -1.0;
+#elif ALPHA_MIP
+    out_alpha_mip = -1.0;
 #endif
 #if LIGHT_SLOT
     out_light = vec4(0.0, 0.0, 0.0, coverage);

@@ -67,12 +67,15 @@ void main() {
     count_fragment();
     vec4 base = texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)) * material.base_color_factor;
     float coverage = 1.0;  // output alpha: the sample mask with alpha-to-coverage
+#if ALPHA_MASK
+    const float alpha = mask_alpha(in_uv0, base.a);
+#endif
 #if ALPHA_MASK && ALPHA_TO_COVERAGE
-    coverage = coverage_alpha(base.a, alpha_cutoff());
+    coverage = coverage_alpha(alpha, alpha_cutoff());
 #elif ALPHA_MASK
-    if (base.a < alpha_cutoff()) {
+    if (alpha < alpha_cutoff()) {
         count_discarded_fragment();
-        history_record(base.a, alpha_cutoff(), kHistoryAlphaTested | kHistoryDiscarded,
+        history_record(alpha, alpha_cutoff(), kHistoryAlphaTested | kHistoryDiscarded,
                        vec4(0.0));
         discard;
     }
@@ -95,7 +98,7 @@ void main() {
     float sun = sun_shadow(in_world_position, facing(n_vertex)) * screen_contact_shadow();
     out_color = vec4(shade(s, in_world_position, sun), coverage);
 #if ALPHA_MASK
-    history_record(base.a, alpha_cutoff(), kHistoryAlphaTested | kHistoryColor, out_color);
+    history_record(alpha, alpha_cutoff(), kHistoryAlphaTested | kHistoryColor, out_color);
 #else
     history_record(base.a, 0.0, kHistoryColor, out_color);
 #endif

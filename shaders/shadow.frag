@@ -22,7 +22,8 @@ layout(location = 0) in vec2 in_uv0;
 void main() {
     count_fragment();
 #if ALPHA_MASK
-    float alpha = texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)).a * material.base_color_factor.a;
+    float sampled = texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)).a;
+    float alpha = mask_alpha(in_uv0, sampled * material.base_color_factor.a);
     if (alpha < alpha_cutoff()) {
         count_discarded_fragment();
         discard;

@@ -32,9 +32,10 @@ void main() {
     count_fragment();
     vec4 base = texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)) * material.base_color_factor;
 #if ALPHA_MODE == 1
-    if (base.a < alpha_cutoff()) {
+    const float alpha = mask_alpha(in_uv0, base.a);
+    if (alpha < alpha_cutoff()) {
         count_discarded_fragment();
-        history_record(base.a, alpha_cutoff(), kHistoryAlphaTested | kHistoryDiscarded,
+        history_record(alpha, alpha_cutoff(), kHistoryAlphaTested | kHistoryDiscarded,
                        vec4(0.0));
         discard;
     }
@@ -47,7 +48,7 @@ void main() {
     float sun = sun_shadow(in_world_position, facing(n_vertex)) * screen_contact_shadow();
     out_color = vec4(shade(s, in_world_position, sun), ALPHA_MODE == 2 ? base.a : 1.0);
 #if ALPHA_MODE == 1
-    history_record(base.a, alpha_cutoff(), kHistoryAlphaTested | kHistoryColor, out_color);
+    history_record(alpha, alpha_cutoff(), kHistoryAlphaTested | kHistoryColor, out_color);
 #else
     history_record(base.a, 0.0, kHistoryColor, out_color);
 #endif

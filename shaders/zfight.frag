@@ -72,7 +72,9 @@ void main() {
     const uint me = in_surface_base + uint(gl_PrimitiveID) + 1u;
     if (winner == 0u || winner == me) return;
     if ((material.flags & kMaterialAlphaMask) != 0u) {
-        const float alpha = texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)).a * material.base_color_factor.a;
+        const float sampled =
+            texture(base_color_texture, texture_uv(kTextureBaseColor, in_uv0)).a;
+        const float alpha = mask_alpha(in_uv0, sampled * material.base_color_factor.a);
         if (alpha < alpha_cutoff()) return;
     }
     const float stored = texelFetch(stored_depth, p, STORED_SAMPLE).r;

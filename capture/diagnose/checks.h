@@ -50,7 +50,7 @@ void check_early_z(const CheckInput& in, CheckOutput& out);         // EARLY_Z_L
 void check_draws(const CheckInput& in, CheckOutput& out);           // OCCLUDED_DRAW, WASTED_...
 void check_advice(const CheckInput& in, CheckOutput& out);          // OVERDRAW, PREPASS_COST
 void check_precision(const CheckInput& in, CheckOutput& out);       // DEPTH_PRECISION
-void check_alpha_coverage(const CheckInput& in, CheckOutput& out);  // not built yet: skipped
+void check_alpha_coverage(const CheckInput& in, CheckOutput& out);  // ALPHA_COVERAGE
 
 // --- shared by the checks (check_util.cpp) ---
 

@@ -63,7 +63,8 @@ passes::FrameUniforms frame_uniforms(const UniformInputs& in) {
                   1.0f / float(in.size.height)};
     u.depth_params = {cam.znear, cam.zfar, in.options.reverse_z ? 1.0f : 0.0f,
                       knob_value(in.settings, knobs::kExposure)};
-    u.alpha = glm::vec4(in.options.alpha_cutoff.value_or(-1.0f), 0.0f, 0.0f, 0.0f);
+    u.alpha = glm::vec4(in.options.alpha_cutoff.value_or(-1.0f),
+                        in.options.alpha_level0 ? 1.0f : 0.0f, 0.0f, 0.0f);
     u.flags = glm::uvec4(in.flags | (in.options.reverse_z ? passes::kFrameReverseZ : 0u),
                          uint32_t(in.frame_number), 0u, 0u);
     return u;

@@ -243,7 +243,7 @@ void GpuScene::upload_textures(const scene::Scene& scene, vk::UploadBatch& batch
             vk::ImageDesc{img.width, img.height, vk::mip_level_count(img.width, img.height),
                           img.srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM, usage,
                           VK_SAMPLE_COUNT_1_BIT, img.name.c_str()});
-        mip_fills_.push_back(batch.texture(images_.back(), img.rgba8.data()));
+        mip_fills_.push_back(upload_image(images_.back(), img, batch));
     }
     // 1x1 defaults for missing textures: white (factor only) and a flat tangent-space normal.
     const uint8_t white[4] = {255, 255, 255, 255};
@@ -256,6 +256,19 @@ void GpuScene::upload_textures(const scene::Scene& scene, vk::UploadBatch& batch
     images_.emplace_back(context_, vk::ImageDesc{1, 1, 1, VK_FORMAT_R8G8B8A8_UNORM, usage,
                                                  VK_SAMPLE_COUNT_1_BIT, "default normal"});
     batch.texture(images_.back(), flat);
+}
+
+// Level 0 with blitted mips, or where the format cannot be blitted every level of the CPU's
+// box chain (scene/alpha_mips.h: sRGB colour averaged in linear light).
+vk::MipFill GpuScene::upload_image(const vk::Image& dst, const scene::Image& img,
+                                   vk::UploadBatch& batch) {
+    if (dst.mip_levels() == 1 || vk::supports_blit_mips(context_, dst.format()))
+        return batch.texture(dst, img.rgba8.data());
+    const std::vector<scene::MipImage> chain =
+        scene::box_mip_chain(img.width, img.height, img.rgba8, img.srgb);
+    std::vector<const uint8_t*> levels;
+    for (const scene::MipImage& level : chain) levels.push_back(level.rgba8.data());
+    return batch.texture(dst, levels);  // copied into the staging buffer here
 }
 
 void GpuScene::create_samplers(const scene::Scene& scene) {
@@ -313,6 +326,10 @@ void GpuScene::create_material_sets(const scene::Scene& scene, VkDescriptorSetLa
             writer.image(binding, view, sampler);
         };
         add(kBaseColorTexture, m.base_color, white_image_);
+        if (scene::masked_base_color_image(scene, i)) {
+            auto [view, sampler] = texture_binding(scene, m.base_color, white_image_);
+            remember_masked(scene, i, view, sampler);
+        }
         add(kMetallicRoughnessTexture, m.metallic_roughness, white_image_);
         add(kNormalTexture, m.normal, flat_normal_image_);
         add(kOcclusionTexture, m.occlusion, white_image_);

@@ -2,7 +2,8 @@
 // A Scene on the GPU: one vertex and one index buffer for every mesh, the instance buffer
 // (model + normal matrices), textures with mips, samplers, and one descriptor set per
 // material (lavapipe has no descriptor indexing). Immutable once built, but for the
-// material_alpha_cutoff overrides; set_scene() replaces the whole object.
+// material_alpha_cutoff overrides and the MASK base colours' mips (alpha_mip_coverage,
+// gpu_scene_alpha.cpp); set_scene() replaces the whole object.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -16,9 +17,11 @@
 #include <glm/glm.hpp>
 
 #include "renderer/common/surface_name.h"
+#include "renderer/scene/alpha_coverage.h"
 #include "renderer/scene/scene.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptors.h"
+#include "renderer/vk/destroy_list.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/upload.h"
 
@@ -144,11 +147,28 @@ class GpuScene {
     // waits for the device to be idle first: frames in flight read them.
     void set_alpha_cutoff_overrides(const std::map<std::string, float, std::less<>>& by_name);
 
+    // alpha_mip_coverage for the MASK materials with a base colour texture, at each one's
+    // effective cutoff (scene::effective_alpha_cutoff: its override as set above, else
+    // `global_cutoff`, else its own). Preserve binds, per (image, cutoff, baseColorFactor.a),
+    // an image whose mips were made on the CPU with level 0's coverage (scene::
+    // preserved_mip_chain); box binds the scene's image (blitted mips). Does only what changed:
+    // new images are uploaded (and waited for), the material sets are rewritten after the
+    // device is idle (frames in flight read them), images no longer bound are retired to
+    // `retired` (vk/destroy_list.h), never destroyed here. Call after the overrides.
+    void set_alpha_mips(scene::AlphaMipMode mode, std::optional<float> global_cutoff,
+                        vk::DestroyList& retired);
+    // Per MASK material with a base colour texture (material order), as set_alpha_mips last
+    // left them: the box chain's coverage per level, and the uploaded chain's with preserve.
+    const std::vector<scene::MaterialAlphaCoverage>& alpha_coverage() const {
+        return alpha_coverage_;
+    }
+
   private:
     void upload_geometry(const scene::Scene& scene, vk::UploadBatch& batch);
     void upload_instances(const scene::Scene& scene, vk::UploadBatch& batch);
     void upload_bounds(vk::UploadBatch& batch);
     void upload_textures(const scene::Scene& scene, vk::UploadBatch& batch);
+    vk::MipFill upload_image(const vk::Image& dst, const scene::Image& img, vk::UploadBatch& batch);
     void create_samplers(const scene::Scene& scene);
     static bool texture_valid(const scene::Scene& scene, const scene::TextureRef& ref);
     // View and sampler for a texture reference; the fallback image when it is missing.
@@ -162,6 +182,30 @@ class GpuScene {
         std::string name;
         bool masked = false;
     };
+    // A MASK material's base colour (gpu_scene_alpha.cpp): its scene image, kept on the host
+    // for preserve's chains, and the binding it has without them.
+    struct MaskedBase {
+        uint32_t material = 0;
+        uint32_t image = 0;
+        scene::Material source;
+        VkImageView view = VK_NULL_HANDLE;
+        VkSampler sampler = VK_NULL_HANDLE;
+    };
+    // One chain: an image at a cutoff and a baseColorFactor.a.
+    struct AlphaKey {
+        uint32_t image = 0;
+        float cutoff = 0.0f, factor = 1.0f;
+        auto operator<=>(const AlphaKey&) const = default;
+    };
+    struct PreservedImage {
+        vk::Image image;
+        std::vector<scene::LevelCoverage> coverage;
+    };
+    void remember_masked(const scene::Scene& scene, uint32_t material, VkImageView view,
+                         VkSampler sampler);
+    const std::vector<scene::LevelCoverage>& box_coverage(const AlphaKey& key);
+    PreservedImage& preserved(const AlphaKey& key, vk::UploadBatch& batch);
+    void bind_base_colors(const std::vector<std::optional<AlphaKey>>& want);
 
     vk::Context& context_;
     std::string scene_name_;
@@ -186,6 +230,14 @@ class GpuScene {
     SurfaceTable surfaces_;
     std::vector<std::string> group_labels_;
     std::vector<vk::MipFill> mip_fills_;
+    // alpha_mip_coverage (gpu_scene_alpha.cpp): what set_alpha_mips last made.
+    std::vector<MaskedBase> masked_;
+    std::map<uint32_t, scene::Image> masked_images_;  // masked_'s images by index (level 0)
+    std::map<AlphaKey, std::vector<scene::LevelCoverage>> box_coverage_;
+    std::map<AlphaKey, PreservedImage> preserved_;  // bound now (stable addresses)
+    std::vector<std::optional<AlphaKey>> bound_;    // per masked_: its preserved image
+    std::vector<scene::MaterialAlphaCoverage> alpha_coverage_;
+    std::optional<std::pair<scene::AlphaMipMode, std::vector<float>>> alpha_state_;
     uint32_t white_image_ = 0;  // indices into images_
     uint32_t flat_normal_image_ = 0;
 };

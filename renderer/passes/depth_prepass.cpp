@@ -64,6 +64,13 @@ ShaderStages DepthPrepass::compile(const Variant& v) const {
         vert_defines.push_back({"SURFACE_ID", "1"});
     }
     if (v.light_slot) defines.push_back({"LIGHT_SLOT", "1"});
+    if (v.alpha_mip) {
+        // After the colour outputs: normal, roughness (G-buffer) or the coverage slot, then
+        // surface_id.
+        const int first = v.gbuffer ? 2 : (v.coverage_slot ? 1 : 0);
+        defines.push_back({"ALPHA_MIP", "1"});
+        defines.push_back({"ALPHA_MIP_LOCATION", std::to_string(first + (v.surface_id ? 1 : 0))});
+    }
     if (v.history) {
         for (shader::Define& d :
              PixelHistoryReplay::defines(false, false, v.samples != VK_SAMPLE_COUNT_1_BIT))
@@ -73,7 +80,10 @@ ShaderStages DepthPrepass::compile(const Variant& v) const {
     if (!v.gbuffer) {
         // Z only: the vertex stage hands on just what the alpha test reads.
         defines.push_back({"GBUFFER", "0"});
-        if (v.coverage_slot) defines.push_back({"SURFACE_LOCATION", "1"});
+        if (v.coverage_slot) {
+            defines.push_back({"COVERAGE_SLOT", "1"});
+            defines.push_back({"SURFACE_LOCATION", "1"});
+        }
         vert_defines.push_back({"SCENE_VARYINGS", v.alpha == AlphaTest::Opaque ? "0" : "1"});
     }
     ShaderStages s;
@@ -86,7 +96,8 @@ ShaderStages DepthPrepass::compile(const Variant& v) const {
 }
 
 bool DepthPrepass::has_fragment_stage(const Variant& v) {
-    return v.gbuffer || v.alpha != AlphaTest::Opaque || v.counting || v.surface_id || v.history;
+    return v.gbuffer || v.alpha != AlphaTest::Opaque || v.counting || v.surface_id || v.history ||
+           v.alpha_mip;
 }
 
 // Distinct for every variant one frame can use; the defines that change the fragment shader's
@@ -100,6 +111,7 @@ std::string DepthPrepass::pipeline_name(const Variant& v) {
     if (v.count_discards) name += " count_discards";
     if (v.counting) name += " counting";
     if (v.history) name += " history";
+    if (v.alpha_mip) name += " alpha_mip";
     return name;
 }
 
@@ -127,6 +139,7 @@ void DepthPrepass::add(graph::RenderGraph& graph, const FrameInputs& in, FrameRe
     const FrameOptions& o = in.options;
     const Variant opaque{.counting = res.prepass_counts.valid(),
                          .surface_id = o.surface_id,
+                         .alpha_mip = alpha_mip_,
                          .samples = o.samples,
                          .count_draws = res.prepass_counts.draws.valid(),
                          .gbuffer = o.gbuffer,

@@ -26,6 +26,12 @@
 // surface_id (knob surface_id, or zfight): a third attachment, R32_UINT res.surface_id, the
 // winning surface per pixel (at msaa > 1 resolved SAMPLE_ZERO, as integers must be; the
 // samples, res.msaa_surface_id, are STOREd for the sample view and zfight).
+// alpha_mip (knob alpha_mip, dynamic path only): one more attachment after those, image
+// `alpha_mip` (R32_SFLOAT): per pixel the mip level of the base colour that the winning MASK
+// surface's alpha test sampled (textureQueryLod, 0 with alpha_level0), -1 where the winner is
+// not MASK or nothing was drawn; a Scalar shown on a heat scale (kAlphaMipDisplay). At
+// msaa > 1 the samples average, as normals and roughness do (AVERAGE resolve: a float), so a
+// pixel whose samples hold a MASK surface and another lies between -1 and the level.
 //
 // count_draws=on: the prepass decides visibility, so each of its draws is inside a precise
 // occlusion query (DrawQueries; samples_passed per draw group).
@@ -79,6 +85,8 @@ class DepthPrepass final : public FramePass {
     static constexpr VkFormat kNormalFormat = VK_FORMAT_A2B10G10R10_UNORM_PACK32;
     static constexpr VkFormat kRoughnessFormat = VK_FORMAT_R8_UNORM;
     static constexpr VkFormat kSurfaceFormat = VK_FORMAT_R32_UINT;
+    static constexpr VkFormat kAlphaMipFormat = VK_FORMAT_R32_SFLOAT;
+    static constexpr float kAlphaMipNone = -1.0f;  // alpha_mip where no MASK surface won
     // prepass_mode=depth with alpha_to_coverage: the pipelines' format for colour slot 0, which
     // the rendering leaves without an image.
     static constexpr VkFormat kCoverageSlotFormat = VK_FORMAT_R8_UNORM;
@@ -90,6 +98,7 @@ class DepthPrepass final : public FramePass {
     static constexpr Knob<bool> kPrepassSort{"prepass_sort"};
     static constexpr Knob<bool> kSurfaceId{"surface_id"};
     static constexpr Knob<bool> kCountDiscards{"count_discards"};
+    static constexpr Knob<bool> kAlphaMip{"alpha_mip"};
     static std::vector<SettingDef> knobs();
     void configure(const FrameSetup& setup, FrameOptions& options) override;
     // surface_id: on when asked for (its knob, zfight, equal_check, count_draws, the sample
@@ -112,6 +121,7 @@ class DepthPrepass final : public FramePass {
         bool alpha_to_coverage = false;  // alpha-tested pipeline only
         bool count_discards = false;     // alpha-tested pipeline only
         bool surface_id = false;         // SURFACE_ID=1: a u32 attachment after the others
+        bool alpha_mip = false;          // ALPHA_MIP=1: a float attachment after surface_id
         bool history = false;            // PIXEL_HISTORY=1: the replay's, no attachments
         VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
         bool count_draws = false;    // COUNT_DRAWS=1 (with counting)
@@ -124,7 +134,7 @@ class DepthPrepass final : public FramePass {
         size_t hash() const {
             return hash_fields(int(alpha), counting, alpha_to_coverage, count_discards, surface_id,
                                history, int(samples), count_draws, gbuffer, coverage_slot,
-                               light_slot);
+                               light_slot, alpha_mip);
         }
     };
     // Whether the variant has a fragment stage: prepass_mode=depth's plain opaque one has none.
@@ -172,7 +182,7 @@ class DepthPrepass final : public FramePass {
 
     PassServices services_;
     // This frame's options (configure).
-    bool masked_split_ = true, prepass_sort_ = true, count_discards_ = false;
+    bool masked_split_ = true, prepass_sort_ = true, count_discards_ = false, alpha_mip_ = false;
     vk::DescriptorSetLayout discard_layout_;
     GeometryInstrument instrument_;
     vk::PipelineLayout layout_;

@@ -9,6 +9,24 @@ using graph::Access;
 
 namespace {
 constexpr VkClearColorValue kNoNormal{{0.5f, 0.5f, 0.5f, 0.0f}};  // the zero vector
+constexpr VkClearColorValue kNoAlphaMip{{DepthPrepass::kAlphaMipNone, 0.0f, 0.0f, 0.0f}};
+
+// alpha_mip: mip levels on a heat scale from "none" (-1, black) up; level 0 is the first
+// colour above black, level 8 and beyond white.
+const graph::Display kAlphaMipDisplay{.range = graph::DisplayRange::fixed(-1.0f, 8.0f),
+                                      .palette = graph::Palette::Heat,
+                                      .unit = "mip level",
+                                      .legend = "alpha test mip level (-1: not MASK)",
+                                      .hover = "alpha test mip level {}",
+                                      .exr_channel = "lod"};
+
+graph::ImageDesc alpha_mip_desc(VkSampleCountFlagBits samples) {
+    return {.format = DepthPrepass::kAlphaMipFormat,
+            .size = graph::ImageSize::relative(1.0f),
+            .samples = samples,
+            .semantic = graph::Semantic::Scalar,
+            .display = kAlphaMipDisplay};
+}
 }  // namespace
 
 void DepthPrepass::declare(graph::PassBuilder& b, const FrameInputs& in, FrameResources& res) {
@@ -40,6 +58,9 @@ void DepthPrepass::declare(graph::PassBuilder& b, const FrameInputs& in, FrameRe
         // The coverage slot: no image, so the alpha it receives only makes the sample mask.
         if (!o.gbuffer && o.alpha_to_coverage) b.unused_color(kCoverageSlotFormat);
         if (res.surface_id.valid()) b.color(res.surface_id, {.load = graph::Load::Clear});
+        if (alpha_mip_)
+            b.color(b.create_image("alpha_mip", alpha_mip_desc(VK_SAMPLE_COUNT_1_BIT)),
+                    {.load = graph::Load::Clear, .clear = kNoAlphaMip});
         return;
     }
     declare_samples(b, in, res, depth);
@@ -80,6 +101,13 @@ void DepthPrepass::declare_samples(graph::PassBuilder& b, const FrameInputs& in,
         b.color(res.msaa_surface_id, {.load = graph::Load::Clear});
         b.resolve(res.msaa_surface_id, res.surface_id,
                   VK_RESOLVE_MODE_SAMPLE_ZERO_BIT);  // integers
+    }
+    if (alpha_mip_) {  // a float: AVERAGE, the one mode Vulkan allows it
+        const graph::ImageHandle samples_image =
+            b.create_image("msaa_alpha_mip", alpha_mip_desc(samples));
+        b.color(samples_image, {.load = graph::Load::Clear, .clear = kNoAlphaMip});
+        b.resolve(samples_image,
+                  b.create_image("alpha_mip", alpha_mip_desc(VK_SAMPLE_COUNT_1_BIT)));
     }
     // The nearest sample, natively; without that mode depth_resolve writes res.depth next.
     if (const VkResolveModeFlagBits mode = native_depth_resolve(services_.context.report(), o))

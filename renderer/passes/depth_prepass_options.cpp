@@ -29,6 +29,12 @@ std::vector<SettingDef> DepthPrepass::knobs() {
                   "the prepass also writes surface_id: per pixel, the surface (triangle of an "
                   "instance) that won the depth test (on whenever zfight is)",
                   I::Pipelines),
+        bool_knob(kAlphaMip, "diagnostics", false,
+                  "the prepass also writes image alpha_mip: per pixel, the mip level of the base "
+                  "colour that the winning MASK surface's alpha test sampled (textureQueryLod; 0 "
+                  "with alpha_level0), -1 on every other pixel; msaa > 1: the samples averaged; "
+                  "not on render_path=subpass",
+                  I::Pipelines),
     };
 }
 
@@ -44,6 +50,10 @@ void DepthPrepass::configure(const FrameSetup& setup, FrameOptions& o) {
     if (!o.prepass) set_skipped("prepass=off");
     if (o.subpass && surface_id) set_turned_off(kSurfaceId.name);
     if (o.subpass && discards) set_turned_off(kCountDiscards.name);
+    // One more colour attachment, which the subpass path's render pass does not have.
+    const bool alpha_mip = knob_value(s, kAlphaMip);
+    alpha_mip_ = alpha_mip && o.prepass && !o.subpass;
+    if (o.subpass && alpha_mip) set_turned_off(kAlphaMip.name);
 }
 
 // The prepass writes surface ids from gl_PrimitiveID in its fragment shader, which Vulkan

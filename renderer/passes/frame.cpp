@@ -101,6 +101,7 @@ FrameOptions FrameOptions::from(const Settings& s) {
     o.gbuffer = knob_value(s, kPrepassMode) == "gbuffer";
     o.depth_equal = knob_value(s, kDepthCompare) == "equal";
     o.alpha_cutoff = knob_value(s, kAlphaCutoff);
+    o.alpha_level0 = knob_value(s, kAlphaLevel0);
     o.reverse_z = knob_value(s, kReverseZ);
     // The registry allows 1..8; VkSampleCountFlagBits are the powers of two themselves.
     const int msaa = knob_value(s, kMsaa);

@@ -48,7 +48,7 @@ struct FrameUniforms {
     glm::vec4 ground_ambient{0.0f};                   // rgb hemispherical ambient, below
     glm::vec4 viewport{0.0f};                         // xy output size in pixels, zw 1 / size
     glm::vec4 depth_params{0.0f};              // x znear, y zfar, z 1 = reverse-Z, w exposure
-    glm::vec4 alpha{-1.0f, 0.0f, 0.0f, 0.0f};  // x global alpha cutoff, < 0: each material's
+    glm::vec4 alpha{-1.0f, 0.0f, 0.0f, 0.0f};  // x cutoff (< 0: material's), y 1 alpha_level0
     glm::uvec4 flags{0u};                      // x kFrame* bits, y frame number
 };
 static_assert(sizeof(FrameUniforms) == 7 * 64 + 9 * 16);
@@ -85,6 +85,7 @@ struct FrameOptions {
     // (gtao, contact_shadows) or instrument a pass (counts, surface_id, zfight, ...) are off.
     bool subpass = false;
     std::optional<float> alpha_cutoff;  // none: each material's own
+    bool alpha_level0 = false;          // the MASK test samples alpha at level 0 (uniform)
     bool reverse_z = true;
     bool sample_shading = false;                            // effective: also needs msaa > 1
     bool alpha_to_coverage = false;                         // effective: also needs msaa > 1

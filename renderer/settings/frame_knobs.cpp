@@ -81,6 +81,20 @@ std::vector<SettingDef> msaa_and_alpha_knobs() {
                   "msaa > 1: MASK materials turn alpha (sharpened around the cutoff) into "
                   "sample coverage instead of discarding, so cut-out edges are antialiased",
                   I::Pipelines),
+        // The textures are made again by the renderer (GpuScene), not the scene reloaded.
+        enum_knob(kAlphaMipCoverage, "alpha", {"box", "preserve"},
+                  "mips of MASK materials' base colour: box, the 2x2 box filter (vkCmdBlitImage), "
+                  "whose averaged alpha thins cut-outs with distance; preserve, mips made on the "
+                  "CPU whose alpha is scaled so that each level passes the alpha test on as many "
+                  "texels as level 0 (Castaño 2010), per texture and effective cutoff (report "
+                  "alpha_coverage)",
+                  I::Resources),
+        bool_knob(kAlphaLevel0, "alpha", false,
+                  "the MASK alpha test (prepass, forward, shadow, decals, transparent, zfight) "
+                  "samples the base colour's alpha at mip level 0 (textureLod 0), as "
+                  "alpha-tested materials sample the texture's full-resolution level in a "
+                  "supersampled reference frame; colour keeps its mips",
+                  I::Nothing),
     };
 }
 

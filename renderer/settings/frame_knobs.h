@@ -21,6 +21,8 @@ inline constexpr Knob<bool> kSampleShading{"sample_shading"};
 inline constexpr Knob<OptionalFloat> kAlphaCutoff{"alpha_cutoff"};  // none: each material's
 inline constexpr Knob<KnobMap> kMaterialAlphaCutoff{"material_alpha_cutoff"};
 inline constexpr Knob<bool> kAlphaToCoverage{"alpha_to_coverage"};
+inline constexpr Knob<KnobEnum> kAlphaMipCoverage{"alpha_mip_coverage"};  // box | preserve
+inline constexpr Knob<bool> kAlphaLevel0{"alpha_level0"};
 inline constexpr Knob<float> kSunAzimuth{"sun_azimuth"};
 inline constexpr Knob<float> kSunElevation{"sun_elevation"};
 inline constexpr Knob<float> kSunIntensity{"sun_intensity"};

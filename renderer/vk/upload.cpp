@@ -1,7 +1,10 @@
 #include "renderer/vk/upload.h"
 
 #include <algorithm>
+#include <string>
 
+#include "renderer/common/error.h"
+#include "renderer/format/format.h"
 #include "renderer/vk/barrier.h"
 #include "renderer/vk/context.h"
 
@@ -28,27 +31,6 @@ bool supports_blit_mips(const Context& context, VkFormat format) {
     return (context.format_properties(format).optimalTilingFeatures & need) == need;
 }
 
-std::vector<uint8_t> downsample_rgba8(const uint8_t* src, uint32_t width, uint32_t height) {
-    const uint32_t w = std::max(width / 2, 1u);
-    const uint32_t h = std::max(height / 2, 1u);
-    std::vector<uint8_t> out(size_t(w) * h * 4);
-    for (uint32_t y = 0; y < h; ++y) {
-        for (uint32_t x = 0; x < w; ++x) {
-            // Odd sizes: the last row/column folds into its neighbour (clamped reads).
-            const uint32_t x0 = std::min(2 * x, width - 1), x1 = std::min(2 * x + 1, width - 1);
-            const uint32_t y0 = std::min(2 * y, height - 1), y1 = std::min(2 * y + 1, height - 1);
-            for (uint32_t c = 0; c < 4; ++c) {
-                const uint32_t sum = src[(size_t(y0) * width + x0) * 4 + c] +
-                                     src[(size_t(y0) * width + x1) * 4 + c] +
-                                     src[(size_t(y1) * width + x0) * 4 + c] +
-                                     src[(size_t(y1) * width + x1) * 4 + c];
-                out[(size_t(y) * w + x) * 4 + c] = uint8_t((sum + 2) / 4);
-            }
-        }
-    }
-    return out;
-}
-
 Buffer& UploadBatch::stage(const void* data, size_t size) {
     staging_.emplace_back(context_, BufferDesc{size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                                MemoryUsage::Upload, "staging"});
@@ -67,22 +49,25 @@ void UploadBatch::buffer(const Buffer& dst, const void* data, size_t size,
     });
 }
 
-MipFill UploadBatch::texture(const Image& dst, const uint8_t* rgba8) {
-    const uint32_t levels = dst.mip_levels();
-    const bool blit = levels > 1 && supports_blit_mips(context_, dst.format());
-    const uint32_t cpu_levels = blit ? 1 : levels;
+MipFill UploadBatch::texture(const Image& dst, std::span<const uint8_t* const> levels) {
+    const uint32_t count = dst.mip_levels();
+    if (levels.empty() || (levels.size() != 1 && levels.size() != count))
+        throw Error("texture upload: " + std::to_string(levels.size()) + " levels given for " +
+                    std::to_string(count));
+    const bool blit = count > 1 && levels.size() == 1;
+    if (blit && !supports_blit_mips(context_, dst.format()))
+        throw Error("texture upload: " + format::name(dst.format()) +
+                    " cannot be blitted: every level must be given");
 
-    // Level 0, plus every CPU-filtered level, packed one after another in one staging buffer.
-    std::vector<uint8_t> packed(rgba8, rgba8 + size_t(dst.width()) * dst.height() * 4);
-    std::vector<VkBufferImageCopy> regions{level_copy(0, 0, dst.width(), dst.height())};
-    std::vector<uint8_t> level(packed);
+    // The given levels, packed one after another in one staging buffer.
+    std::vector<uint8_t> packed;
+    std::vector<VkBufferImageCopy> regions;
     uint32_t w = dst.width(), h = dst.height();
-    for (uint32_t i = 1; i < cpu_levels; ++i) {
-        level = downsample_rgba8(level.data(), w, h);
+    for (uint32_t i = 0; i < levels.size(); ++i) {
+        regions.push_back(level_copy(packed.size(), i, w, h));
+        packed.insert(packed.end(), levels[i], levels[i] + size_t(w) * h * 4);
         w = std::max(w / 2, 1u);
         h = std::max(h / 2, 1u);
-        regions.push_back(level_copy(packed.size(), i, w, h));
-        packed.insert(packed.end(), level.begin(), level.end());
     }
     VkBuffer src = stage(packed.data(), packed.size()).handle();
     const Image* image = &dst;
@@ -108,7 +93,7 @@ MipFill UploadBatch::texture(const Image& dst, const uint8_t* rgba8) {
                             .dst_stage = kSampledStages,
                             .dst_access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
     });
-    return levels == 1 ? MipFill::None : (blit ? MipFill::Blit : MipFill::Cpu);
+    return count == 1 ? MipFill::None : (blit ? MipFill::Blit : MipFill::Cpu);
 }
 
 void record_blit_mips(VkCommandBuffer cmd, const Image& image) {

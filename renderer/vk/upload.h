@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -16,16 +17,14 @@ namespace ds::vk {
 class Context;
 
 // How a texture's mip chain was filled.
-//  Blit: vkCmdBlitImage chain, when the format supports linear-filtered blits (optimal tiling).
-//  Cpu:  2x2 box filter on the CPU otherwise. For _SRGB formats it averages the encoded
-//        bytes, a small darkening bias accepted for a fallback path.
+//  Blit: vkCmdBlitImage chain from level 0, when the format supports linear-filtered blits
+//        (optimal tiling).
+//  Cpu:  every level given by the caller (made on the CPU: scene/alpha_mips.h's box chain
+//        where blits are not supported, or alpha_mip_coverage=preserve's chain).
 //  None: the image has one level.
 enum class MipFill : uint8_t { None, Blit, Cpu };
 
 bool supports_blit_mips(const Context& context, VkFormat format);
-
-// RGBA8 2x2 box filter of `src` (w x h) into the next level (max(w/2,1) x max(h/2,1)).
-std::vector<uint8_t> downsample_rgba8(const uint8_t* src, uint32_t width, uint32_t height);
 
 class UploadBatch {
   public:
@@ -33,9 +32,15 @@ class UploadBatch {
 
     // `dst` needs TRANSFER_DST usage.
     void buffer(const Buffer& dst, const void* data, size_t size, VkDeviceSize dst_offset = 0);
-    // `rgba8`: tightly packed level 0 of a 4-byte-per-texel format. `dst` needs TRANSFER_DST
-    // and SAMPLED (+ TRANSFER_SRC for blits). Ends in SHADER_READ_ONLY_OPTIMAL.
-    MipFill texture(const Image& dst, const uint8_t* rgba8);
+    // `levels`: tightly packed texels of a 4-byte-per-texel format, level 0 first, each of
+    // its level's size (halved and floored, never below 1). Every level of `dst`: copied as
+    // given; level 0 alone: the others are blitted from it, which the format must support
+    // (supports_blit_mips; throws otherwise). `dst` needs TRANSFER_DST and SAMPLED
+    // (+ TRANSFER_SRC for blits). Ends in SHADER_READ_ONLY_OPTIMAL.
+    MipFill texture(const Image& dst, std::span<const uint8_t* const> levels);
+    MipFill texture(const Image& dst, const uint8_t* rgba8) {
+        return texture(dst, std::span<const uint8_t* const>(&rgba8, 1));
+    }
     // Records, submits and waits; frees the staging memory. The batch can be reused.
     void submit();
 

@@ -63,4 +63,16 @@ float alpha_cutoff() {
     return frame.alpha.x >= 0.0 ? frame.alpha.x : material.alpha_cutoff;
 }
 
+// The alpha a MASK test compares with alpha_cutoff(): `sampled` (the base colour's alpha x
+// factor as the shader sampled it, through the mips), or with alpha_level0 (frame.alpha.y, a
+// uniform, so the branch is uniform) the base colour's alpha at mip level 0 x factor.
+bool alpha_level0() {
+    return frame.alpha.y > 0.5;
+}
+float mask_alpha(vec2 uv0, float sampled) {
+    if (!alpha_level0()) return sampled;
+    return textureLod(base_color_texture, texture_uv(kTextureBaseColor, uv0), 0.0).a *
+           material.base_color_factor.a;
+}
+
 #endif

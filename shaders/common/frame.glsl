@@ -18,7 +18,8 @@ layout(set = 0, binding = 0, std140) uniform FrameUniforms {
     vec4 ground_ambient;       // rgb
     vec4 viewport;             // xy size in pixels, zw 1 / size
     vec4 depth_params;         // x znear, y zfar, z 1 = reverse-Z, w exposure
-    vec4 alpha;                // x global alpha cutoff, < 0: each material's own
+    vec4 alpha;                // x global alpha cutoff, < 0: each material's own; y 1:
+                               // alpha_level0 (mask_alpha() samples level 0)
     uvec4 flags;               // x kFrame* bits, y frame number
 } frame;
 

@@ -130,7 +130,7 @@ TEST(Cli, MaterialAlphaCutoffErrorsAndReport) {
     } bad[] = {
         {"material_alpha_cutoff=bogus=0.5",
          "material_alpha_cutoff: no masked material \"bogus\" in foliage (masked: alpha_ramp, "
-         "alpha_ramp_leaf)"},
+         "alpha_ramp_leaf, grass)"},
         {"material_alpha_cutoff=ground=0.5", "no masked material \"ground\""},
         {"material_alpha_cutoff=alpha_ramp", "'alpha_ramp' is not NAME=V"},
         {"material_alpha_cutoff=alpha_ramp=2", "alpha_ramp: 2 is out of range 0..1"},

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 
+#include "capture/diagnose/checks.h"
 #include "capture/diagnose/diagnose_run.h"
 #include "capture/diagnose/finding.h"
 #include "renderer/device_info.h"
@@ -98,6 +100,37 @@ TEST_F(DiagnoseApi, TheMeasurementKnobsLeaveTheImageAsItWas) {
         ASSERT_FALSE(plain.rgba8.empty());
         EXPECT_TRUE(plain.rgba8 == measured.rgba8) << scene_name;
     }
+}
+
+// ALPHA_COVERAGE on foliage: its grass (thin blades) loses coverage down the box chain, so the
+// check names it, with preserve's fix; with alpha_mip_coverage=preserve the uploaded chain
+// keeps level 0's coverage and nothing is found. The check reads the scene only (no frame).
+TEST(DiagnoseAlphaCoverage, FiresOnFoliagesGrassWithBoxMipsAndNotWithPreserve) {
+    const scene::Scene foliage = scene::load_scene("foliage", Settings{});
+    const FrameResult none;
+    auto check = [&](const std::vector<std::string>& assignments) {
+        const Settings settings = test::settings_of(assignments);
+        diagnose::CheckOutput out;
+        diagnose::check_alpha_coverage(
+            {.scene = foliage, .settings = settings, .measured = none, .advice_skipped = {}}, out);
+        EXPECT_EQ(out.ran, std::vector<std::string>{"alpha_coverage"});
+        return out.findings;
+    };
+    const std::vector<diagnose::Finding> box = check({});
+    ASSERT_EQ(box.size(), 1u);
+    const diagnose::Finding& f = box.front();
+    std::printf("%s\nfix: %s\n", f.message.c_str(), f.fix.c_str());
+    EXPECT_EQ(f.code, "ALPHA_COVERAGE");
+    EXPECT_EQ(f.severity, diagnose::Severity::Warning);
+    EXPECT_NE(f.message.find("material grass"), std::string::npos) << f.message;
+    EXPECT_EQ(f.magnitude.unit, "%");
+    EXPECT_GT(f.magnitude.value, 20.0);
+    EXPECT_NE(f.fix.find("alpha_mip_coverage=preserve"), std::string::npos) << f.fix;
+    ASSERT_FALSE(f.surfaces.empty());
+    EXPECT_EQ(f.surfaces.front().material, "grass");
+    EXPECT_TRUE(check({"alpha_mip_coverage=preserve"}).empty());
+    // A lower cutoff keeps more of the blades' averaged alpha: no finding either.
+    EXPECT_TRUE(check({"material_alpha_cutoff=grass=0.1"}).empty());
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // foliage: alpha-masked cards for alpha-cutoff tuning. Every card's alpha ramps from 0 at its
 // left edge to 1 at its right edge (scene_facts.h), some also cut to a leaf shape, so moving
 // alphaCutoff moves a visible edge across each card. Cards overlap in depth, as grass does.
+// The far bushes are grass (thin blades, grass_texture): box-filtered mips average their
+// alpha away, so they thin out with distance (alpha_mip_coverage).
 #include <array>
 #include <numbers>
 #include <string>
@@ -55,10 +57,12 @@ tinygltf::Model build_foliage(const Settings& /*settings*/) {
     for (glm::vec3& p : card.positions) p.y += 1.0f;  // stands on the ground
     const int flat_card = b.add_mesh("ramp_card", card, ramp);
     const int leaf_card = b.add_mesh("leaf_card", card, leaf);
-    const int bush = b.add_mesh("leaf_bush", make_plant_cards(1.0f, 2.0f, 3, 4), leaf);
+    const int grass =
+        card_material(b, "grass", b.add_texture("foliage_grass", grass_texture(128, 11)));
+    const int bush = b.add_mesh("grass_bush", make_plant_cards(1.0f, 2.0f, 3, 4), grass);
 
-    // Far to near: bushes, then leaf cards, then flat cards facing the camera (the easiest
-    // place to read the cutoff edge), some turned to show the ramp at an angle.
+    // Far to near: grass bushes, then leaf cards, then flat cards facing the camera (the
+    // easiest place to read the cutoff edge), some turned to show the ramp at an angle.
     for (int i = 0; i < 7; ++i) {
         const float x = -6.0f + 2.0f * static_cast<float>(i);
         b.add_node("bush_" + std::to_string(i), bush,

@@ -46,7 +46,8 @@ constexpr float zfight_gap_metres(float d) {
 }
 
 // foliage: every card's base-colour alpha is u (0 at the left edge, 1 at the right), so with
-// alphaCutoff c exactly the part u >= c of each card survives.
+// alphaCutoff c exactly the part u >= c of each card survives. The far bushes (material grass)
+// are thin blades instead, whose box-filtered mips lose coverage.
 constexpr float kFoliageAlphaCutoff = 0.5f;
 
 // decals: a room corner (seed 004's coplanar overlays). Three light-grey OPAQUE bases, each a

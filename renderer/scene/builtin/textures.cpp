@@ -242,6 +242,51 @@ Pixels leaf_texture(int size, uint32_t seed) {
     return p;
 }
 
+namespace {
+
+struct Blade {
+    float root, height, lean, half_width;  // uv; half_width at the root
+    glm::vec3 tint;
+};
+
+Blade blade(int k, int blades, int size, uint32_t seed) {
+    const auto b = static_cast<uint32_t>(k);
+    return {
+        (static_cast<float>(k) + hash01(b, 1, seed)) / static_cast<float>(blades),
+        0.5f + 0.45f * hash01(b, 2, seed), (hash01(b, 3, seed) - 0.5f) * 0.3f,
+        (1.0f + 0.6f * hash01(b, 4, seed)) / static_cast<float>(size),
+        glm::mix(glm::vec3(0.2f, 0.45f, 0.1f), glm::vec3(0.45f, 0.65f, 0.2f), hash01(b, 5, seed))};
+}
+
+}  // namespace
+
+Pixels grass_texture(int size, uint32_t seed) {
+    Pixels p(size, size);
+    const glm::vec3 background(0.2f, 0.36f, 0.12f);  // grass-like, so filtering has no halo
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) p.set(x, y, glm::vec4(background, 0.0f));
+    const float s = static_cast<float>(size);
+    const int blades = size / 4;
+    for (int k = 0; k < blades; ++k) {
+        const Blade b = blade(k, blades, size, seed);
+        for (int y = 0; y < size; ++y) {
+            // 0 at the root (the bottom row), 1 at the tip.
+            const float t = (1.0f - uv_of(y, size)) / b.height;
+            if (t < 0.0f || t > 1.0f) continue;
+            const float centre = b.root + b.lean * t * t;
+            for (int x = 0; x < size; ++x) {
+                float d = std::abs(uv_of(x, size) - centre);
+                d = std::min(d, 1.0f - d);  // the texture tiles across
+                const float a = std::clamp((b.half_width * (1.0f - t) - d) * s + 0.5f, 0.0f, 1.0f);
+                const size_t i = (static_cast<size_t>(y) * size + x) * 4 + 3;
+                if (a * 255.0f <= static_cast<float>(p.rgba[i])) continue;
+                p.set(x, y, glm::vec4(b.tint * (0.6f + 0.5f * t), a));
+            }
+        }
+    }
+    return p;
+}
+
 Pixels poster_texture(int size, const glm::vec3& colour, uint32_t seed) {
     Pixels p(size, size);
     for (int y = 0; y < size; ++y) {

@@ -31,6 +31,10 @@ Pixels wood_texture(int size, const glm::vec3& light, const glm::vec3& dark, uin
 Pixels fabric_texture(int size, uint32_t seed);
 // Leaves on a transparent background: alpha is exactly 0 or 1 (crisp for MASK).
 Pixels leaf_texture(int size, uint32_t seed);
+// Grass blades on a transparent background, one blade per 4 texels across, each a few texels
+// wide at its root and tapering to nothing, edges antialiased: the thin cut-outs that a box
+// filter's mips average away (foliage's grass, alpha_mip_coverage).
+Pixels grass_texture(int size, uint32_t seed);
 // Decals: a poster (opaque inside a soft-edged frame) and a stain (soft radial alpha).
 Pixels poster_texture(int size, const glm::vec3& colour, uint32_t seed);
 Pixels stain_texture(int size, uint32_t seed);

@@ -284,7 +284,7 @@ TEST_F(Alpha, UnknownMaterialNameIsAClearError) {
         } catch (const UsageError& e) {
             EXPECT_EQ(std::string(e.what()),
                       std::string("material_alpha_cutoff: no masked material \"") + name +
-                          "\" in foliage (masked: alpha_ramp, alpha_ramp_leaf)");
+                          "\" in foliage (masked: alpha_ramp, alpha_ramp_leaf, grass)");
         }
     }
     const FrameResult f = render_cut({per_material({{kRamp, 0.5f}})});
