@@ -25,7 +25,7 @@ Settings reference_settings(const Settings& settings) {
     s.set("msaa", "1");
     s.set("sample_shading", "off");
     s.set("alpha_to_coverage", "off");
-    // s.set("alpha_level0", "on");  // TEMP
+    s.set("alpha_level0", "on");
     s.set("surface_id", "on");
     return s;
 }

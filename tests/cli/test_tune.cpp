@@ -77,6 +77,23 @@ TEST(TuneAlpha, RecommendsTheCutoffKnownByConstruction) {
     EXPECT_GT(ds::test::distinct_colours(png), 3u);
 }
 
+// Seen from far, the grass bushes sample mip levels whose box-filtered alpha lost coverage:
+// alpha_mip_coverage=preserve brings the frame's coverage of them closer to the reference's.
+TEST(TuneAlpha, PreservedMipCoverageLowersTheFarGrassCoverageError) {
+    const std::string args = "alpha --scene foliage --size 320x180 --material grass --step 0.25 "
+                             "--look-at 0,3,40:0,1,0:20 --set alpha_mip_coverage=";
+    double error[2] = {0, 0};
+    for (int preserve = 0; preserve < 2; ++preserve) {
+        const json t = run_json(preserve ? "alpha_preserve" : "alpha_box",
+                                args + (preserve ? "preserve" : "box"));
+        ASSERT_EQ(t["materials"].size(), 1u) << t.dump();
+        const json& m = t["materials"][0];
+        EXPECT_GT(m["reference_covered_pixels"].get<uint64_t>(), 100u);
+        error[preserve] = m["points"][m["current"].get<size_t>()]["coverage_error"].get<double>();
+    }
+    EXPECT_LT(error[1], error[0] * 0.8) << "box " << error[0] << ", preserve " << error[1];
+}
+
 TEST(TuneCapture, ReferenceIsAResourceAndScoresFinal) {
     const auto dir = ds::test::fresh_dir("tune_capture_reference") / "cap";
     const auto r = run_depthscope(
