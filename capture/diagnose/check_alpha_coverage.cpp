@@ -47,8 +47,9 @@ Finding coverage_finding(const scene::Scene& scene, const scene::MaterialAlphaCo
                 ", cutoff " + cutoff + ", " + scene::to_string(c.mode) + " mips) passes on " +
                 coverage_percent(levels.front().coverage) + " of level 0's texels but " +
                 coverage_percent(at.coverage) + " at level " + std::to_string(at.level) + " (" +
-                std::to_string(at.width) + "x" + std::to_string(at.height) + "), " +
-                coverage_percent(drop.drop) + " less: its cut-outs thin out with distance";
+                std::to_string(at.width) + "x" + std::to_string(at.height) +
+                "): " + coverage_percent(drop.drop) +
+                " of it lost, so its cut-outs thin out with distance";
     f.fix = c.mode == scene::AlphaMipMode::Box
                 ? "alpha_mip_coverage=preserve (mips whose alpha keeps level 0's coverage)"
                 : "author the texture's alpha so its mips can keep the coverage (preserve scales "

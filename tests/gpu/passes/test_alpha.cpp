@@ -68,9 +68,10 @@ std::string cutoff(float value) {
     return text;
 }
 
-// foliage's MASK materials: the flat ramp cards, and the leaf-shaped cards and bushes.
+// foliage's MASK materials: the flat ramp cards, the leaf-shaped cards and the grass bushes.
 constexpr const char* kRamp = "alpha_ramp";
 constexpr const char* kLeaf = "alpha_ramp_leaf";
+constexpr const char* kGrass = "grass";
 
 std::string per_material(const std::vector<std::pair<const char*, float>>& cutoffs) {
     std::string text = "material_alpha_cutoff=";
@@ -240,7 +241,8 @@ TEST_F(Alpha, PerMaterialValueEqualToTheGlobalGivesTheSameImage) {
         SCOPED_TRACE(path);
         const FrameResult global = render_cut({path, cutoff(0.7f), "count_discards=on"});
         const FrameResult each =
-            render_cut({path, per_material({{kRamp, 0.7f}, {kLeaf, 0.7f}}), "count_discards=on"});
+            render_cut({path, per_material({{kRamp, 0.7f}, {kLeaf, 0.7f}, {kGrass, 0.7f}}),
+                        "count_discards=on"});
         EXPECT_EQ(each.rgba8, global.rgba8);
         EXPECT_EQ(each.covered_pixels, global.covered_pixels);
         ASSERT_EQ((each.find<DiscardCounts>() != nullptr),
@@ -259,8 +261,8 @@ TEST_F(Alpha, PerMaterialValueEqualToTheGlobalGivesTheSameImage) {
 TEST_F(Alpha, PerMaterialValueBeatsTheGlobalOne) {
     const FrameResult both =
         render_cut({cutoff(0.9f), per_material({{kRamp, 0.1f}}), "count_discards=on"});
-    const FrameResult spelled_out =
-        render_cut({per_material({{kRamp, 0.1f}, {kLeaf, 0.9f}}), "count_discards=on"});
+    const FrameResult spelled_out = render_cut(
+        {per_material({{kRamp, 0.1f}, {kLeaf, 0.9f}, {kGrass, 0.9f}}), "count_discards=on"});
     const FrameResult global = render_cut({cutoff(0.9f), "count_discards=on"});
     ASSERT_TRUE(both.find<DiscardCounts>() && spelled_out.find<DiscardCounts>() &&
                 global.find<DiscardCounts>());
