@@ -33,6 +33,8 @@ TuneRun prepare(const Options& o) {
     if (!o.plot.empty()) capture::check_output_file("--plot", o.plot);
     r.scene = load_command_scene(o, o.scene, r.settings);
     r.camera = view_camera(o, r.scene);
+    // --material names before any Vulkan work (tune_alpha checks them again).
+    if (o.command == Command::TuneAlpha) tune::masked_material_names(r.scene, o.tune_materials);
     return r;
 }
 
