@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
+#include <vector>
 
 namespace ds::scene {
 namespace {
@@ -70,6 +72,45 @@ float coverage_scale(const Histogram& h, uint64_t texels, double target, float c
     return std::abs(coverage(hi) - target) <= std::abs(coverage(lo) - target) ? hi : lo;
 }
 
+
+// A texel's place among equal alphas: a hash of its index, so that the texels one fix-up moves
+// are spread over the level rather than its first rows.
+uint32_t scatter(uint32_t i) {
+    i ^= i >> 16;
+    i *= 0x7feb352du;
+    i ^= i >> 15;
+    i *= 0x846ca68bu;
+    return i ^ (i >> 16);
+}
+
+// Where whole groups of texels share one alpha (a ramp's columns), no scale lands on the
+// target: then the fewest texels nearest the cutoff move just across it, until the level's
+// passing texels are round(target x texels).
+void match_count(MipImage& level, double target, float cutoff, float factor) {
+    const size_t texels = level.rgba8.size() / 4;
+    const auto want = int64_t(std::llround(target * double(texels)));
+    std::vector<uint32_t> pass, fail;
+    for (uint32_t t = 0; t < texels; ++t)
+        (passes(level.rgba8[t * 4 + 3], cutoff, factor) ? pass : fail).push_back(t);
+    int64_t change = want - int64_t(pass.size());
+    if (change == 0) return;
+    uint32_t lowest_pass = 255, highest_fail = 0;
+    for (uint32_t a = 0; a < 256; ++a) {
+        if (passes(a, cutoff, factor)) lowest_pass = std::min(lowest_pass, a);
+        else highest_fail = std::max(highest_fail, a);
+    }
+    std::vector<uint32_t>& from = change > 0 ? fail : pass;
+    const auto alpha = [&](uint32_t t) { return level.rgba8[t * 4 + 3]; };
+    const auto nearer = [&](uint32_t a, uint32_t b) {  // nearer the cutoff first
+        if (alpha(a) != alpha(b)) return change > 0 ? alpha(a) > alpha(b) : alpha(a) < alpha(b);
+        return scatter(a) < scatter(b);
+    };
+    const size_t n = std::min<size_t>(size_t(std::llabs(change)), from.size());
+    std::partial_sort(from.begin(), from.begin() + long(n), from.end(), nearer);
+    for (size_t i = 0; i < n; ++i)
+        level.rgba8[from[i] * 4 + 3] = uint8_t(change > 0 ? lowest_pass : highest_fail);
+}
+
 }  // namespace
 
 uint32_t mip_chain_length(uint32_t width, uint32_t height) {
@@ -132,9 +173,10 @@ std::vector<float> preserve_alpha_coverage(std::vector<MipImage>& chain, float c
         const float s =
             coverage_scale(alpha_histogram(level), level.rgba8.size() / 4, target, cutoff, factor);
         scales[i] = s;
-        if (s == 1.0f) continue;
-        for (size_t t = 3; t < level.rgba8.size(); t += 4)
-            level.rgba8[t] = uint8_t(scaled(level.rgba8[t], s));
+        if (s != 1.0f)
+            for (size_t t = 3; t < level.rgba8.size(); t += 4)
+                level.rgba8[t] = uint8_t(scaled(level.rgba8[t], s));
+        match_count(level, target, cutoff, factor);
     }
     return scales;
 }

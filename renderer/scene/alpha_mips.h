@@ -39,7 +39,10 @@ std::vector<MipImage> box_mip_chain(uint32_t width, uint32_t height, std::span<c
 double alpha_coverage(const MipImage& level, float cutoff, float factor);
 
 // Scales every level >= 1's alpha so that its coverage matches level 0's (Castaño), each by
-// its own factor (bisection); returns those factors (1 for level 0 and kept levels).
+// its own factor (bisection); returns those factors (1 for level 0 and kept levels). Where no
+// scale lands on it (texels that share one alpha flip together, as a ramp's columns do), the
+// fewest texels nearest the cutoff are then moved just across it, so that each level passes
+// on round(level 0's coverage x its texels) texels: within one texel of level 0's.
 std::vector<float> preserve_alpha_coverage(std::vector<MipImage>& chain, float cutoff,
                                            float factor);
 

@@ -74,8 +74,8 @@ TEST(Capture, ImporterWarningsReachTheReportAndTheLog) {
 
 // report.json alpha_coverage on foliage (alpha_mip_coverage): at the levels of at least 16x16,
 // its grass's box chain passes the alpha test on more than 20 % fewer texels than level 0 at
-// some level, and the chain preserve uploads stays within 2 % of level 0 at every one; no
-// masked material falls further with preserve than with box.
+// some level, and every masked material's chain preserve uploads stays within 2 % of level 0
+// at every one (the leaf ramp's too, whose columns share one alpha).
 namespace {
 
 // The largest fall below level 0 (1 - relative) among the levels of at least 16x16.
@@ -128,9 +128,9 @@ TEST(Capture, FoliageGrassKeepsItsAlphaCoverageWithPreserve) {
         print_levels(name + " box", b["box"]);
         print_levels(name + " preserve", p["uploaded"]);
         EXPECT_LE(worst_fall(p["uploaded"]), worst_fall(b["box"]) + 1e-9);
+        EXPECT_LT(worst_off(p["uploaded"]), 0.02);
         if (name != "grass") continue;
         EXPECT_EQ(b["image"], "foliage_grass");
         EXPECT_GT(worst_fall(b["box"]), 0.2);
-        EXPECT_LT(worst_off(p["uploaded"]), 0.02);
     }
 }
