@@ -72,7 +72,6 @@ float coverage_scale(const Histogram& h, uint64_t texels, double target, float c
     return std::abs(coverage(hi) - target) <= std::abs(coverage(lo) - target) ? hi : lo;
 }
 
-
 // A texel's place among equal alphas: a hash of its index, so that the texels one fix-up moves
 // are spread over the level rather than its first rows.
 uint32_t scatter(uint32_t i) {
@@ -96,8 +95,10 @@ void match_count(MipImage& level, double target, float cutoff, float factor) {
     if (change == 0) return;
     uint32_t lowest_pass = 255, highest_fail = 0;
     for (uint32_t a = 0; a < 256; ++a) {
-        if (passes(a, cutoff, factor)) lowest_pass = std::min(lowest_pass, a);
-        else highest_fail = std::max(highest_fail, a);
+        if (passes(a, cutoff, factor))
+            lowest_pass = std::min(lowest_pass, a);
+        else
+            highest_fail = std::max(highest_fail, a);
     }
     std::vector<uint32_t>& from = change > 0 ? fail : pass;
     const auto alpha = [&](uint32_t t) { return level.rgba8[t * 4 + 3]; };

@@ -80,8 +80,9 @@ TEST(TuneAlpha, RecommendsTheCutoffKnownByConstruction) {
 // Seen from far, the grass bushes sample mip levels whose box-filtered alpha lost coverage:
 // alpha_mip_coverage=preserve brings the frame's coverage of them closer to the reference's.
 TEST(TuneAlpha, PreservedMipCoverageLowersTheFarGrassCoverageError) {
-    const std::string args = "alpha --scene foliage --size 320x180 --material grass --step 0.25 "
-                             "--look-at 0,3,40:0,1,0:20 --set alpha_mip_coverage=";
+    const std::string args =
+        "alpha --scene foliage --size 320x180 --material grass --step 0.25 "
+        "--look-at 0,3,40:0,1,0:20 --set alpha_mip_coverage=";
     double error[2] = {0, 0};
     for (int preserve = 0; preserve < 2; ++preserve) {
         const json t = run_json(preserve ? "alpha_preserve" : "alpha_box",
