@@ -6,6 +6,7 @@
 
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"
+#include "renderer/scene/alpha_coverage.h"
 
 namespace ds::tune {
 namespace {
@@ -17,15 +18,6 @@ std::vector<int32_t> materials_named(const scene::Scene& scene, const std::strin
             scene.materials[i].alpha_mode == scene::AlphaMode::Mask)
             out.push_back(int32_t(i));
     return out;
-}
-
-// The cutoff the user's settings give `name` (common/bindings.glsl's precedence).
-float effective_cutoff(const Settings& settings, const scene::Scene& scene,
-                       const std::vector<int32_t>& ids, const std::string& name) {
-    const auto overrides = settings.get_map("material_alpha_cutoff");
-    if (auto it = overrides.find(name); it != overrides.end()) return it->second;
-    if (settings.get("alpha_cutoff") != "material") return settings.get_float("alpha_cutoff");
-    return scene.materials[size_t(ids.front())].alpha_cutoff;
 }
 
 std::vector<float> coverage_of(const SurfaceSamples& s, const std::vector<int32_t>& ids) {
@@ -122,9 +114,11 @@ AlphaTune tune_alpha(Renderer& renderer, const scene::Scene& scene, const scene:
                 {}};
     Settings base = scored_settings(settings);
     base.set("surface_id", "on");  // what each sample saw (it changes no pixel)
+    // What the user's settings give each material (the shaders' precedence, one implementation).
+    const std::vector<float> cutoffs_now = scene::effective_alpha_cutoffs(scene, settings);
     for (const std::string& name : names) {
         const std::vector<int32_t> ids = materials_named(scene, name);
-        AlphaMaterial m{name, effective_cutoff(settings, scene, ids, name), 0, {}, -1, -1};
+        AlphaMaterial m{name, cutoffs_now[size_t(ids.front())], 0, {}, -1, -1};
         const std::vector<float> ref_cov = coverage_of(ref.samples, ids);
         for (float c : ref_cov) m.reference_covered += c >= 0.5f;
         for (float cutoff : cutoffs(sweep.step, m.cutoff))
