@@ -6,6 +6,7 @@
 // settings left out, then the read-backs the caller asked for (FrameResult, frame_result.h).
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,6 +34,9 @@ struct SurfaceInfo {
     uint32_t instance = 0;  // scene instance index
     uint32_t triangle = 0;  // of its mesh
 };
+// surface id -> what it names (Renderer::describe_surface, or a copy of its answers): what the
+// sample view and tune's surface samples take, so that they need no Renderer of their own.
+using DescribeSurface = std::function<std::optional<SurfaceInfo>(uint32_t)>;
 
 struct RendererOptions {
     bool validate = false;  // validation layer (+ synchronization validation) and messenger

@@ -37,8 +37,6 @@ std::optional<SampleQuery> visible_sample_rect(float centre_x, float centre_y, f
 // else an even spread on a diagonal-free grid, which the view labels approximate.
 view::SamplePosition sample_position(uint32_t samples, uint32_t i, bool& standard);
 
-using DescribeSurface = std::function<std::optional<SurfaceInfo>(uint32_t)>;
-
 // One sample of a pixel, as the hover list shows it.
 struct SampleRow {
     uint32_t index = 0;

@@ -25,9 +25,6 @@ struct SurfaceSamples {
     bool empty() const { return per_pixel == 0; }
 };
 
-// surface id -> what it names; nullopt for 0 (nothing) or an unknown id.
-using DescribeSurface = std::function<std::optional<SurfaceInfo>(uint32_t)>;
-
 // A surface-id image `factor` times the frame's size in each direction: pixel (x, y)'s samples
 // are the factor x factor block at (x * factor, y * factor).
 SurfaceSamples samples_from_blocks(const InspectedImage& ids, uint32_t factor,
