@@ -28,6 +28,7 @@ struct Subcommands {
     CLI::App* diff = nullptr;
     CLI::App* diagnose = nullptr;
     TuneCommands tune;
+    CLI::App* lint = nullptr;
 };
 
 // The inspector: `depthscope [view] [--scene NAME|PATH] [--set k=v]... [--frames N]`.
@@ -295,6 +296,7 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     c.diagnose = add_diagnose_command(app, o, sizes);
     c.layer = add_layer_command(app, o);
     c.tune = add_tune_command(app, o, sizes);
+    c.lint = add_lint_command(app, o, sizes);
     return c;
 }
 
@@ -327,6 +329,10 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
     if (c.layer->parsed()) o.command = Command::Layer;
     if (c.tune.msaa->parsed()) o.command = Command::TuneMsaa;
     if (c.tune.alpha->parsed()) o.command = Command::TuneAlpha;
+    if (c.lint->parsed()) {
+        o.command = Command::Lint;
+        if (!sizes.render) o.size = {640, 360};
+    }
     if (sizes.at) parse_at(*sizes.at, o.at_x, o.at_y);
     if (sizes.look_at) o.look_at = parse_look_at(*sizes.look_at);
     if (sizes.render) o.size = parse_size(*sizes.render);
@@ -350,8 +356,8 @@ std::optional<int> parse_command_line(int argc, char** argv, Options& o) {
         "Without a command it opens the inspector (`view`) when there is a display, else it "
         "renders a headless capture of the default scene.\n"
         "Exit codes: 0 ok, 1 runtime or input error, 2 usage error, 3 validation messages seen "
-        "(diff: 0 same, 1 differs, 2 trouble; diagnose --fail-on LEVEL: 1 when a finding is at "
-        "LEVEL or above)."};
+        "(diff: 0 same, 1 differs, 2 trouble; diagnose --fail-on LEVEL and lint: 1 when a finding "
+        "is at LEVEL or above)."};
     app.require_subcommand(0, 1);
     SizeTexts sizes;
     const Subcommands commands = add_commands(app, o, sizes);

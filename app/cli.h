@@ -24,7 +24,8 @@ enum class Command {
     Diagnose,
     Layer,
     TuneMsaa,
-    TuneAlpha
+    TuneAlpha,
+    Lint
 };
 
 struct Size {
@@ -80,7 +81,7 @@ struct Options {
     std::string camera;
     std::optional<LookAt> look_at;
     std::string camera_of;
-    std::string fail_on;  // diagnose --fail-on: "", "error" or "warning"
+    std::string fail_on;  // diagnose / lint --fail-on: "", "error", "warning" (lint: "info")
     // layer [--frame N | --list] [--out DIR] [--set k=v]… -- APP [ARGS…]
     int layer_frame = 0;  // 0: not given
     bool layer_list = false;
@@ -92,6 +93,10 @@ struct Options {
     std::string plot;
     std::vector<std::string> tune_materials;
     float tune_step = 0.05f;
+    // lint SCENE… [--json FILE] [--config FILE] [--images DIR] [--fail-on LEVEL]; --size
+    // defaults to 640x360 there.
+    std::vector<std::string> lint_scenes;
+    std::string lint_config, lint_images;
 };
 
 // Parses argv. Returns the exit code to use right away (help printed: 0), or nullopt to run.

@@ -52,5 +52,7 @@ struct TuneCommands {
     CLI::App* alpha = nullptr;
 };
 TuneCommands add_tune_command(CLI::App& app, Options& o, SizeTexts& texts);
+// lint SCENE… (cli_lint.cpp).
+CLI::App* add_lint_command(CLI::App& app, Options& o, SizeTexts& texts);
 
 }  // namespace ds::app

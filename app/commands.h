@@ -22,6 +22,8 @@ int run_diagnose(const Options& options);
 // the application's exit code; depthscope's own (1, 2) for its own errors
 int run_layer(const Options& options);
 int run_tune(const Options& options);  // tune msaa | tune alpha
+// 0, or 1 when a finding is at --fail-on's level (default error) or above; 3 validation first
+int run_lint(const Options& options);
 bool display_available();              // $DISPLAY or $WAYLAND_DISPLAY set
 
 }  // namespace ds::app

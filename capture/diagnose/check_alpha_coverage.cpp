@@ -61,22 +61,33 @@ Finding coverage_finding(const scene::Scene& scene, const scene::MaterialAlphaCo
 
 }  // namespace
 
-void check_alpha_coverage(const CheckInput& in, CheckOutput& out) {
-    const std::vector<scene::MaterialAlphaCoverage> materials =
-        scene::scene_alpha_coverage(in.scene, in.settings);
-    if (materials.empty()) {
-        out.skip("alpha_coverage", "the scene has no MASK material with a base colour texture");
-        return;
-    }
-    out.ran.push_back("alpha_coverage");
-    for (const scene::MaterialAlphaCoverage& c : materials) {
+std::vector<Finding> alpha_coverage_findings(const scene::Scene& scene, const Settings& settings,
+                                             double max_drop) {
+    std::vector<Finding> out;
+    for (const scene::MaterialAlphaCoverage& c : scene::scene_alpha_coverage(scene, settings)) {
         const std::vector<scene::LevelCoverage>& levels =
             c.mode == scene::AlphaMipMode::Preserve ? c.uploaded : c.box;
         const std::optional<scene::CoverageDrop> drop =
             scene::worst_coverage_drop(levels, kCoverageMinLevel);
-        if (drop && drop->drop > kCoverageMaxDrop)
-            out.findings.push_back(coverage_finding(in.scene, c, levels, *drop));
+        if (drop && drop->drop > max_drop) out.push_back(coverage_finding(scene, c, levels, *drop));
     }
+    return out;
+}
+
+void check_alpha_coverage(const CheckInput& in, CheckOutput& out) {
+    if (!has_masked_texture(in.scene)) {
+        out.skip("alpha_coverage", "the scene has no MASK material with a base colour texture");
+        return;
+    }
+    out.ran.push_back("alpha_coverage");
+    for (Finding& f : alpha_coverage_findings(in.scene, in.settings, kCoverageMaxDrop))
+        out.findings.push_back(std::move(f));
+}
+
+bool has_masked_texture(const scene::Scene& scene) {
+    for (uint32_t m = 0; m < scene.materials.size(); ++m)
+        if (scene::masked_base_color_image(scene, m)) return true;
+    return false;
 }
 
 }  // namespace ds::diagnose

@@ -52,6 +52,13 @@ void check_advice(const CheckInput& in, CheckOutput& out);          // OVERDRAW,
 void check_precision(const CheckInput& in, CheckOutput& out);       // DEPTH_PRECISION
 void check_alpha_coverage(const CheckInput& in, CheckOutput& out);  // ALPHA_COVERAGE
 
+// ALPHA_COVERAGE's findings for every MASK material whose uploaded chain loses more than
+// `max_drop` (0..1) of level 0's coverage at a level of at least 16 texels a side (lint's
+// ALPHA_MODE reuses them); whether the scene has a MASK material with a base colour texture.
+std::vector<Finding> alpha_coverage_findings(const scene::Scene& scene, const Settings& settings,
+                                             double max_drop);
+bool has_masked_texture(const scene::Scene& scene);
+
 // --- shared by the checks (check_util.cpp) ---
 
 // A scene instance as a finding names it, with its glTF node's pointer.

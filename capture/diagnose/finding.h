@@ -37,6 +37,9 @@ struct Finding {
     std::vector<FindingSurface> surfaces;
     std::string fix;       // what to change, one line
     std::string detector;  // the check that found it: zfight, equal_check, early_z, ...
+    // Named numbers beside the magnitude (lint's fight distance per depth format); JSON
+    // "values" {name: number} when there are any.
+    std::vector<std::pair<std::string, double>> values;
     // The pixels it covers at the render size, y * width + x (row 0 = top), ascending, each
     // once; empty when it covers none (a draw nothing of which shows). Not in the JSON.
     std::vector<uint32_t> pixels;

@@ -10,6 +10,8 @@ nlohmann::json vec3_json(const glm::vec3& v) {
     return nlohmann::json::array({double(v.x), double(v.y), double(v.z)});
 }
 
+}  // namespace
+
 nlohmann::json camera_json(const scene::Camera& c) {
     return {{"position", vec3_json(c.position)},
             {"forward", vec3_json(c.forward)},
@@ -18,6 +20,8 @@ nlohmann::json camera_json(const scene::Camera& c) {
             {"znear", double(c.znear)},
             {"zfar", double(c.zfar)}};
 }
+
+namespace {
 
 nlohmann::json surfaces_json(const std::vector<FindingSurface>& surfaces) {
     nlohmann::json out = nlohmann::json::array();
@@ -42,14 +46,16 @@ std::string grouped(double value) {
 }
 
 nlohmann::json finding_json(const Finding& f) {
-    return {{"code", f.code},
-            {"message", f.message},
-            {"severity", int(f.severity)},
-            {"pointer", f.pointer},
-            {"magnitude", {{"value", f.magnitude.value}, {"unit", f.magnitude.unit}}},
-            {"surfaces", surfaces_json(f.surfaces)},
-            {"fix", f.fix},
-            {"detector", f.detector}};
+    nlohmann::json j = {{"code", f.code},
+                        {"message", f.message},
+                        {"severity", int(f.severity)},
+                        {"pointer", f.pointer},
+                        {"magnitude", {{"value", f.magnitude.value}, {"unit", f.magnitude.unit}}},
+                        {"surfaces", surfaces_json(f.surfaces)},
+                        {"fix", f.fix},
+                        {"detector", f.detector}};
+    for (const auto& [name, value] : f.values) j["values"][name] = value;
+    return j;
 }
 
 nlohmann::json diagnosis_json(const Diagnosis& d) {

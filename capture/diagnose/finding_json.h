@@ -15,6 +15,8 @@
 namespace ds::diagnose {
 
 nlohmann::json finding_json(const Finding& f);
+// A camera as reports write it: position, forward, up, yfov, znear, zfar.
+nlohmann::json camera_json(const scene::Camera& c);
 nlohmann::json diagnosis_json(const Diagnosis& d);
 
 // The ranked findings ("error EQUAL_HOLES 21,682 px: …" and its fix), then the skipped
