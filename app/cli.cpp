@@ -28,6 +28,7 @@ struct Subcommands {
     CLI::App* diff = nullptr;
     CLI::App* diagnose = nullptr;
     TuneCommands tune;
+    CLI::App* sweep = nullptr;
 };
 
 // The inspector: `depthscope [view] [--scene NAME|PATH] [--set k=v]... [--frames N]`.
@@ -295,6 +296,7 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     c.diagnose = add_diagnose_command(app, o, sizes);
     c.layer = add_layer_command(app, o);
     c.tune = add_tune_command(app, o, sizes);
+    c.sweep = add_sweep_command(app, o);
     return c;
 }
 
@@ -327,6 +329,7 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
     if (c.layer->parsed()) o.command = Command::Layer;
     if (c.tune.msaa->parsed()) o.command = Command::TuneMsaa;
     if (c.tune.alpha->parsed()) o.command = Command::TuneAlpha;
+    if (c.sweep->parsed()) o.command = Command::Sweep;
     if (sizes.at) parse_at(*sizes.at, o.at_x, o.at_y);
     if (sizes.look_at) o.look_at = parse_look_at(*sizes.look_at);
     if (sizes.render) o.size = parse_size(*sizes.render);

@@ -24,7 +24,8 @@ enum class Command {
     Diagnose,
     Layer,
     TuneMsaa,
-    TuneAlpha
+    TuneAlpha,
+    Sweep
 };
 
 struct Size {
@@ -92,6 +93,13 @@ struct Options {
     std::string plot;
     std::vector<std::string> tune_materials;
     float tune_step = 0.05f;
+    // sweep MANIFEST --out DIR [--shard I/N | --shards N] [--baseline DIR], or
+    // sweep --merge DIR… --out DIR [--baseline DIR] (docs/sweep.md); --out goes to `out`.
+    std::string sweep_manifest;
+    std::vector<std::string> sweep_merge;
+    std::string sweep_shard;  // "I/N" as given ("" none: the environment's, if any)
+    int sweep_shards = 0;     // --shards N (Kubernetes' count; 0 none)
+    std::string sweep_baseline;
 };
 
 // Parses argv. Returns the exit code to use right away (help printed: 0), or nullopt to run.

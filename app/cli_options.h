@@ -53,4 +53,7 @@ struct TuneCommands {
 };
 TuneCommands add_tune_command(CLI::App& app, Options& o, SizeTexts& texts);
 
+// sweep (cli_sweep.cpp).
+CLI::App* add_sweep_command(CLI::App& app, Options& o);
+
 }  // namespace ds::app

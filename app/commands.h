@@ -22,6 +22,8 @@ int run_diagnose(const Options& options);
 // the application's exit code; depthscope's own (1, 2) for its own errors
 int run_layer(const Options& options);
 int run_tune(const Options& options);  // tune msaa | tune alpha
-bool display_available();              // $DISPLAY or $WAYLAND_DISPLAY set
+// 0 when every job passed (and nothing regressed against --baseline), 1 otherwise
+int run_sweep(const Options& options);
+bool display_available();  // $DISPLAY or $WAYLAND_DISPLAY set
 
 }  // namespace ds::app
