@@ -137,25 +137,23 @@ std::vector<std::string> job_ids(const std::vector<Job>& jobs) {
 int run_merge(const Options& o) {
     check_baseline(o);
     std::vector<fs::path> dirs;
+    std::vector<std::string> without;  // folders without manifest.json
     std::optional<SweepManifest> manifest;
     for (const std::string& d : o.sweep_merge) {
         dirs.emplace_back(d);
         const std::optional<SweepManifest> m = read_sweep_manifest(d);
-        if (!m) {
-            warn("--merge " + escaped(d) +
-                 ": no manifest.json (its shard wrote nothing): its "
-                 "jobs have no result unless another folder has them");
-            continue;
-        }
-        if (!manifest)
+        if (!m)
+            without.push_back(d);
+        else if (!manifest)
             manifest = m;
         else if (job_ids(m->jobs) != job_ids(manifest->jobs))
-            throw InputError("--merge " + escaped(d) +
-                             ": another sweep's folder (its "
-                             "manifest.json differs from " +
-                             escaped(o.sweep_merge.front()) + ")");
+            throw InputError("--merge " + escaped(d) + ": another sweep's folder (its " +
+                             "manifest.json differs from the first's)");
     }
     if (!manifest) throw InputError("--merge: no folder holds a sweep's manifest.json");
+    for (const std::string& d : without)
+        warn("--merge " + escaped(d) + ": no manifest.json (its shard wrote nothing): its " +
+             "jobs have no result unless another folder has them");
     prepare_sweep_folder(o.out, "--out");
     write_sweep_manifest(o.out, *manifest);
     return write_merged(*manifest, dirs, o.out, o.sweep_baseline);
