@@ -55,9 +55,12 @@ std::optional<Shard> chosen_shard(const Options& o) {
         process_environment(), o.sweep_shards ? std::optional<int>(o.sweep_shards) : std::nullopt);
 }
 
-// A baseline folder must hold a merged sweep before any work.
+// A baseline folder must hold a merged sweep before any work, and not be the one written.
 void check_baseline(const Options& o) {
     if (o.sweep_baseline.empty()) return;
+    if (same_folder(o.sweep_baseline, o.out))
+        throw UsageError("--baseline " + escaped(o.sweep_baseline) +
+                         " is the --out folder: compare with an earlier sweep's folder");
     std::error_code ec;
     if (!fs::is_regular_file(fs::path(o.sweep_baseline) / "sweep.json", ec))
         throw InputError("--baseline " + escaped(o.sweep_baseline) +

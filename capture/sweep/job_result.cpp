@@ -122,7 +122,13 @@ json job_result(const Job& job, const ChildExit& exit, const fs::path& dir) {
         }
     }
     if (exit.signal != 0 || exit.exit_code != 0) {
-        const std::string line = log_message(dir / "log.txt");
+        // The staging folder's name holds the sweep's PID: the message names the job's folder,
+        // so that a failure reads the same from every run (sweep.json compares byte for byte).
+        std::string line = log_message(dir / "log.txt");
+        const std::string staging = dir.string();
+        for (size_t at = line.find(staging); !staging.empty() && at != std::string::npos;
+             at = line.find(staging, at))
+            line.replace(at, staging.size(), "jobs/" + job.id);
         failure = exit_text(exit) + (line.empty() ? "" : ": " + line);
     }
     result["status"] = failure.empty() ? "passed" : "failed";

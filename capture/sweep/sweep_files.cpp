@@ -28,10 +28,14 @@ bool is_sweep_entry(const fs::directory_entry& entry) {
     return false;
 }
 
+// What a job writes; with ".tmp-" a child's temporary file or staging folder, left where a
+// signal ended the child (the job failed; a new run replaces the folder whole).
 bool is_job_entry(const fs::directory_entry& entry) {
     std::error_code ec;
     const std::string name = entry.path().filename().string();
     if (entry.is_symlink(ec)) return false;
+    for (const char* own : {"capture", "result.json", "log.txt", "bench.json", "lint.json"})
+        if (name.rfind(std::string(own) + ".tmp-", 0) == 0) return true;
     if (name == "capture") return entry.is_directory(ec);
     for (const char* own : {"result.json", "log.txt", "bench.json", "lint.json"})
         if (name == own) return entry.is_regular_file(ec);
