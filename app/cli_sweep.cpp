@@ -1,8 +1,6 @@
 // `depthscope sweep` (capture/sweep/, docs/sweep.md): its options.
 #include "app/cli_options.h"
 #include "capture/sweep/shard.h"
-#include "renderer/common/error.h"
-#include "renderer/common/quoted.h"
 
 namespace ds::app {
 

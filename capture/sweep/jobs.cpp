@@ -1,7 +1,6 @@
 #include "capture/sweep/jobs.h"
 
 #include <map>
-#include <set>
 
 #include "capture/sweep/sweep_files.h"
 #include "renderer/common/error.h"

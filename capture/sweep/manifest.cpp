@@ -1,6 +1,5 @@
 #include "capture/sweep/manifest.h"
 
-#include <set>
 
 #include "capture/sweep/sweep_files.h"
 #include "renderer/common/error.h"
