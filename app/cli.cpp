@@ -29,6 +29,7 @@ struct Subcommands {
     CLI::App* diagnose = nullptr;
     TuneCommands tune;
     CLI::App* lint = nullptr;
+    CLI::App* sweep = nullptr;
 };
 
 // The inspector: `depthscope [view] [--scene NAME|PATH] [--set k=v]... [--frames N]`.
@@ -297,6 +298,7 @@ Subcommands add_commands(CLI::App& app, Options& o, SizeTexts& sizes) {
     c.layer = add_layer_command(app, o);
     c.tune = add_tune_command(app, o, sizes);
     c.lint = add_lint_command(app, o, sizes);
+    c.sweep = add_sweep_command(app, o);
     return c;
 }
 
@@ -333,6 +335,7 @@ void apply_parse(CLI::App& app, const Subcommands& c, const SizeTexts& sizes, Op
         o.command = Command::Lint;
         if (!sizes.render) o.size = {640, 360};
     }
+    if (c.sweep->parsed()) o.command = Command::Sweep;
     if (sizes.at) parse_at(*sizes.at, o.at_x, o.at_y);
     if (sizes.look_at) o.look_at = parse_look_at(*sizes.look_at);
     if (sizes.render) o.size = parse_size(*sizes.render);

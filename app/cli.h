@@ -25,7 +25,8 @@ enum class Command {
     Layer,
     TuneMsaa,
     TuneAlpha,
-    Lint
+    Lint,
+    Sweep
 };
 
 struct Size {
@@ -97,6 +98,13 @@ struct Options {
     // defaults to 640x360 there.
     std::vector<std::string> lint_scenes;
     std::string lint_config, lint_images;
+    // sweep MANIFEST --out DIR [--shard I/N | --shards N] [--baseline DIR], or
+    // sweep --merge DIR… --out DIR [--baseline DIR] (docs/sweep.md); --out goes to `out`.
+    std::string sweep_manifest;
+    std::vector<std::string> sweep_merge;
+    std::string sweep_shard;  // "I/N" as given ("" none: the environment's, if any)
+    int sweep_shards = 0;     // --shards N (Kubernetes' count; 0 none)
+    std::string sweep_baseline;
 };
 
 // Parses argv. Returns the exit code to use right away (help printed: 0), or nullopt to run.

@@ -55,4 +55,7 @@ TuneCommands add_tune_command(CLI::App& app, Options& o, SizeTexts& texts);
 // lint SCENE… (cli_lint.cpp).
 CLI::App* add_lint_command(CLI::App& app, Options& o, SizeTexts& texts);
 
+// sweep (cli_sweep.cpp).
+CLI::App* add_sweep_command(CLI::App& app, Options& o);
+
 }  // namespace ds::app

@@ -45,6 +45,8 @@ int dispatch(const ds::app::Options& o) {
             return ds::app::run_tune(o);
         case Command::Lint:
             return ds::app::run_lint(o);
+        case Command::Sweep:
+            return ds::app::run_sweep(o);
         case Command::Default:
             // The inspector where there is a display; a headless capture where there is none.
             // --capture opens the inspector: without a display it fails there, not as a capture.

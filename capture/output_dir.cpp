@@ -47,13 +47,14 @@ bool is_capture_file(const fs::directory_entry& entry) {
 }
 
 // Throws when `dir` holds anything a capture did not write (a folder named report.json too).
-void check_replaceable(const fs::path& shown, const fs::path& dir) {
+void check_replaceable(const fs::path& shown, const fs::path& dir,
+                       const ReplaceableContent& content) {
     std::error_code ec;
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-        if (!is_capture_file(*it))
-            throw Error(escaped(shown.string()) + ": exists and holds more than a capture (" +
-                        quote(it->path().filename().string()) +
-                        "); a capture replaces its folder whole: choose another --out");
+        if (!content.accepts(*it))
+            throw Error(escaped(shown.string()) + ": exists and holds more than " + content.what +
+                        " (" + quote(it->path().filename().string()) + "); " + content.what +
+                        " replaces its folder whole: choose another --out");
     }
     if (ec) fail(shown, "cannot read folder", ec.value());
 }
@@ -71,12 +72,15 @@ fs::path real_target(const fs::path& given) {
 }  // namespace
 
 OutputDir::OutputDir(fs::path final_dir)
+    : OutputDir(std::move(final_dir), ReplaceableContent{is_capture_file, "a capture"}) {}
+
+OutputDir::OutputDir(fs::path final_dir, const ReplaceableContent& content)
     : final_(std::move(final_dir)), target_(real_target(final_)) {
     struct stat st {};
     final_existed_ = ::stat(target_.c_str(), &st) == 0;
     if (final_existed_ && !S_ISDIR(st.st_mode))
         throw Error(escaped(final_.string()) + ": exists and is not a folder");
-    if (final_existed_) check_replaceable(final_, target_);
+    if (final_existed_) check_replaceable(final_, target_, content);
     std::error_code ec;
     fs::create_directories(target_.parent_path(), ec);
     if (ec) fail(target_.parent_path(), "cannot create folder", ec.value());

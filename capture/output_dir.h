@@ -6,12 +6,20 @@
 // SIGPIPE, the staging folder is removed, so a failed capture leaves nothing behind and an
 // existing folder exactly as it was.
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 
 namespace ds::capture {
 
 class RemoveOnSignal;
+
+// What an existing folder may hold for an OutputDir to replace it: `accepts` says yes for
+// each entry, `what` names the folder's kind in the refusal ("a capture").
+struct ReplaceableContent {
+    std::function<bool(const std::filesystem::directory_entry&)> accepts;
+    std::string what;
+};
 
 class OutputDir {
   public:
@@ -20,6 +28,9 @@ class OutputDir {
     // resources/,
     // *.rdc): a capture replaces its folder whole, and must never take a user's other files.
     explicit OutputDir(std::filesystem::path final_dir);
+    // The same for another kind of folder (a sweep's job folder): `content` says what it may
+    // hold.
+    OutputDir(std::filesystem::path final_dir, const ReplaceableContent& content);
     ~OutputDir();
     OutputDir(const OutputDir&) = delete;
     OutputDir& operator=(const OutputDir&) = delete;
