@@ -84,9 +84,9 @@ std::optional<Finding> material_finding(const scene::Scene& scene, uint32_t mate
     const bool meaningful = m.base_color_factor.a < 1.0f || a.share_below_half >= kMeaningfulShare;
     if (m.alpha_mode == scene::AlphaMode::Opaque && meaningful)
         return mode_finding(scene, material,
-                            "OPAQUE, but " + g3(a.share_below_half * 100.0) +
-                                " % of its alpha is below 0.5 (baseColorFactor.a " +
-                                g3(m.base_color_factor.a) + "): OPAQUE ignores it",
+                            "OPAQUE, but its alpha means something (baseColorFactor.a " +
+                                g3(m.base_color_factor.a) + ", " + g3(a.share_below_half * 100.0) +
+                                " % of it below 0.5): OPAQUE ignores it",
                             "alphaMode MASK (cut-outs) or BLEND (translucency), or remove the "
                             "alpha channel",
                             a.share_below_half * 100.0, "%");

@@ -5,7 +5,8 @@ namespace ds::lint {
 namespace {
 
 using Check = void (*)(const Input&, Output&);
-constexpr Check kChecks[] = {check_decals, check_alpha_mode, check_depth_range, check_overdraw,
+constexpr Check kChecks[] = {check_surface_pairs, check_degenerate,  check_decals,
+                             check_alpha_mode,    check_depth_range, check_overdraw,
                              check_mesh_overdraw};
 
 }  // namespace

@@ -177,8 +177,9 @@ TEST(Lint, ReportReadsBackInGltfValidatorsShapeWithPointersIntoTheFile) {
         ASSERT_TRUE(s >= 0 && s <= 3);
         ++per_level[s];
         const std::string pointer = m["pointer"];
-        if (!pointer.empty())
+        if (!pointer.empty()) {
             EXPECT_TRUE(file.contains(json::json_pointer(pointer))) << pointer << " " << m["code"];
+        }
     }
     EXPECT_EQ(issues["numErrors"], per_level[0]);
     EXPECT_EQ(issues["numWarnings"], per_level[1]);

@@ -21,7 +21,9 @@ float column_z(int k) {
 }
 
 MeshData column_mesh() {
-    MeshData m = make_box({-0.45f, 0.0f, -0.45f}, {0.45f, 0.3f, 0.45f}, 1.0f);  // plinth
+    // The plinth is sunk kEmbed into what the column stands on, so its base never lies in
+    // another surface's plane (lint: COPLANAR_OVERLAP with the end walls' boxes).
+    MeshData m = make_box({-0.45f, -kEmbed, -0.45f}, {0.45f, 0.3f, 0.45f}, 1.0f);  // plinth
     MeshData shaft = make_frustum(0.32f, 0.27f, kColumnHeight - 0.6f, 20, 2.0f);
     for (glm::vec3& p : shaft.positions) p.y += 0.3f;
     m.append(shaft);
@@ -62,7 +64,7 @@ void add_shell(ModelBuilder& b, const Materials& m) {
     const float inner = kArcadeX + kArchDepth * 0.5f;
     const int slab = b.add_mesh("gallery_slab",
                                 make_box({inner, kUpperFloor - 0.3f, -kHalfLength},
-                                         {kOuterX, kUpperFloor, kHalfLength}, 0.5f),
+                                         {kOuterX, kUpperFloor + kEmbed, kHalfLength}, 0.5f),
                                 m.plaster);
     const int roof = b.add_mesh("gallery_roof",
                                 make_box({kArcadeX - 0.4f, kRoofBottom, -kHalfLength},
@@ -137,22 +139,29 @@ void add_far_loggia(ModelBuilder& b, const Materials& m, const ArcadeMeshes& arc
                    {{x, kUpperFloor, z}, glm::quat(1, 0, 0, 0), upper_column_scale});
     }
     const float scale = bay / kBay;
+    // kEmbed lower than the side arcades' arches, whose ends they meet at the corners, so the
+    // two tops never share a plane there.
+    const float lower_y = (kArchHeight - kEmbed) / kArchHeight;
+    const float upper_y = (2.0f - kEmbed) / kArchHeight;
     for (int i = 0; i < 3; ++i) {
         const float x = (static_cast<float>(i) - 1.0f) * bay;
         b.add_node("loggia_arch_" + std::to_string(i), arcade.arch,
-                   {{x, kColumnHeight, z}, glm::quat(1, 0, 0, 0), {scale, 1.0f, 1.0f}});
+                   {{x, kColumnHeight, z}, glm::quat(1, 0, 0, 0), {scale, lower_y, 1.0f}});
         b.add_node(
             "loggia_upper_arch_" + std::to_string(i), arcade.arch,
-            {{x, kUpperSpringing, z}, glm::quat(1, 0, 0, 0), {scale, kUpperArchScale, 0.8f}});
+            {{x, kUpperSpringing, z}, glm::quat(1, 0, 0, 0), {scale, upper_y, 0.8f}});
     }
-    const float front = z + kArchDepth * 0.5f;
+    // The floor and roof stop 2 kEmbed behind the arches' face, so the two faces never share
+    // the plane z = front (a band of Z-fighting across the loggia, seen from the courtyard).
+    const float front = z + kArchDepth * 0.5f - 2.0f * kEmbed;
     b.add_node("loggia_floor", b.add_mesh("loggia_floor",
                                           make_box({-kArcadeX, kUpperFloor - 0.3f, -kHalfLength},
-                                                   {kArcadeX, kUpperFloor, front}, 0.5f),
+                                                   {kArcadeX, kUpperFloor + kEmbed, front}, 0.5f),
                                           m.plaster));
     b.add_node("loggia_roof", b.add_mesh("loggia_roof",
-                                         make_box({-kArcadeX, kRoofBottom, -kHalfLength},
-                                                  {kArcadeX, kRoofBottom + 0.3f, front}, 0.5f),
+                                         make_box({-kArcadeX, kRoofBottom - kEmbed, -kHalfLength},
+                                                  {kArcadeX, kRoofBottom + 0.3f + kEmbed, front},
+                                                  0.5f),
                                          m.plaster));
 }
 
