@@ -6,7 +6,8 @@
 //   two overlays of one base, are drawn by the decal pass and do not fight).
 // - NEAR_COPLANAR_FIGHT: parallel, same-facing, overlapping surfaces whose least gap along the
 //   normal is more than epsilon yet below one depth step somewhere between the first view's
-//   planes. Seen head-on from beyond the fight distance (lint_depth.cpp's fight_distance) they
+//   planes, up to the scene's farthest corner from that view (checks.h seen_to). Seen head-on
+//   from beyond the fight distance (lint_depth.cpp's fight_distance) they
 //   store the same depth: a warning when that happens in the user's depth format, with the
 //   distance; information when only in other formats. Every format's distance is in the
 //   message and in the finding's values. Surfaces are looked for up to the coarsest step of
@@ -33,6 +34,7 @@ namespace {
 struct PairContext {
     const scene::Scene& scene;
     view::DepthConfig chosen;
+    double seen_to = 0.0;             // checks.h: the scene's farthest corner from the first view
     std::vector<int64_t> decal_base;  // per instance: its base, or -1
 };
 
@@ -106,7 +108,7 @@ std::optional<Finding> near_finding(const PairContext& c, const scene::SurfacePa
     std::string distances;
     std::optional<double> chosen, nearest;
     for (const view::DepthConfig& format : every_format(c.chosen)) {
-        const std::optional<double> d = fight_distance(format, p.min_gap);
+        const std::optional<double> d = fight_distance(format, p.min_gap, c.seen_to);
         const std::string name = depth_name(format);
         distances += "; " + name + ": " + (d ? "beyond " + g3(*d) : "never");
         if (!d) continue;
@@ -121,7 +123,8 @@ std::optional<Finding> near_finding(const PairContext& c, const scene::SurfacePa
                 " apart: seen head-on they store one depth " +
                 (chosen ? "beyond " + g3(*chosen) + " in " + depth_name(c.chosen)
                         : "only in other formats than " + depth_name(c.chosen)) +
-                " (planes " + g3(c.chosen.znear) + ".." + g3(c.chosen.zfar) + distances + ")";
+                " (planes " + g3(c.chosen.znear) + ".." + g3(c.chosen.zfar) +
+                ", the scene within " + g3(c.seen_to) + distances + ")";
     f.fix =
         "move them apart by more than a depth step at the distance they are seen from, or "
         "remove the hidden one";
@@ -132,14 +135,13 @@ std::optional<Finding> near_finding(const PairContext& c, const scene::SurfacePa
 
 void check_surface_pairs(const Input& in, Output& out) {
     out.ran.push_back("surface_pairs");
-    PairContext c{
-        in.scene,
-        depth_config(in.settings, in.views.empty() ? in.scene.camera : in.views.front().camera),
-        std::vector<int64_t>(in.scene.instances.size(), -1)};
+    const scene::Camera& camera = in.views.empty() ? in.scene.camera : in.views.front().camera;
+    PairContext c{in.scene, depth_config(in.settings, camera), seen_to(in.scene, camera),
+                  std::vector<int64_t>(in.scene.instances.size(), -1)};
     for (const scene::Decal& d : in.scene.decals) c.decal_base.at(d.instance) = d.base;
-    double reach = coarsest_step(c.chosen);
+    double reach = coarsest_step(c.chosen, c.seen_to);
     for (const view::DepthConfig& f : every_format(c.chosen))
-        if (f.bits != 16) reach = std::max(reach, coarsest_step(f));
+        if (f.bits != 16) reach = std::max(reach, coarsest_step(f, c.seen_to));
     const std::vector<scene::SurfacePair> pairs = scene::find_surface_pairs(
         in.scene.meshes, in.scene.materials, in.scene.instances, {.near_gap_max = reach});
     for (const scene::SurfacePair& p : pairs) {

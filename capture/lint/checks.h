@@ -2,6 +2,7 @@
 // lint's checks, one per file: each reads the scene (and OVERDRAW the frames it renders) and
 // appends findings, or says why it could not check. Shared here: the depth facts of
 // NEAR_COPLANAR_FIGHT and DEPTH_RANGE (lint_depth.cpp).
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,12 +39,18 @@ std::vector<view::DepthConfig> every_format(const view::DepthConfig& planes);
 // The nearest view depth in [znear, zfar] from which one depth step of `c` is at least `gap`
 // (scene units): two parallel surfaces `gap` apart, seen head-on, store the same depth from
 // there on (the step grows with the distance, in float formats up to its ULP saw-tooth: the
-// first depth reached counts). None when the step stays below `gap` up to the far plane.
-std::optional<double> fight_distance(const view::DepthConfig& c, double gap);
+// first depth reached counts). None when the step stays below `gap` up to the far plane or
+// `seen_to`, whichever is nearer.
+std::optional<double> fight_distance(const view::DepthConfig& c, double gap,
+                                     double seen_to = INFINITY);
 // The coarsest step of `c` between its planes, over kFightSamples log-spaced depths: at the
 // far end for unorm and forward-Z float; for reverse-Z float, whose stored values crowd
 // towards 0 at the far plane, below it (the model's step at the plane itself is 0).
-double coarsest_step(const view::DepthConfig& c);
+double coarsest_step(const view::DepthConfig& c, double seen_to = INFINITY);
+// How far the scene reaches from `camera`: the distance to its bounds' farthest corner. Beyond
+// it the whole scene is nearer than a fight could start, so a fight distance past it is not
+// reported (a far plane of 1e6 around a model 500 units wide would pair every parallel face).
+double seen_to(const scene::Scene& scene, const scene::Camera& camera);
 // "%.3g" of `v`.
 std::string g3(double v);
 

@@ -40,13 +40,14 @@ std::vector<view::DepthConfig> every_format(const view::DepthConfig& planes) {
     return out;
 }
 
-std::optional<double> fight_distance(const view::DepthConfig& c, double gap) {
-    if (!(c.znear > 0 && c.zfar > c.znear)) return std::nullopt;
-    const double ln = std::log(c.znear), lf = std::log(c.zfar);
+std::optional<double> fight_distance(const view::DepthConfig& c, double gap, double seen_to) {
+    const double far = std::min(c.zfar, seen_to);
+    if (!(c.znear > 0 && far > c.znear)) return std::nullopt;
+    const double ln = std::log(c.znear), lf = std::log(far);
     double below = c.znear;  // a depth whose step is below the gap
     if (view::step_at(c, c.znear) >= gap) return c.znear;
     for (int i = 1; i <= kFightSamples; ++i) {
-        const double z = i == kFightSamples ? c.zfar : std::exp(ln + (lf - ln) * i / kFightSamples);
+        const double z = i == kFightSamples ? far : std::exp(ln + (lf - ln) * i / kFightSamples);
         if (view::step_at(c, z) < gap) {
             below = z;
             continue;
@@ -61,14 +62,27 @@ std::optional<double> fight_distance(const view::DepthConfig& c, double gap) {
     return std::nullopt;
 }
 
-double coarsest_step(const view::DepthConfig& c) {
-    if (!(c.znear > 0 && c.zfar > c.znear)) return 0.0;
-    const double ln = std::log(c.znear), lf = std::log(c.zfar);
+double coarsest_step(const view::DepthConfig& c, double seen_to) {
+    const double far = std::min(c.zfar, seen_to);
+    if (!(c.znear > 0 && far > c.znear)) return 0.0;
+    const double ln = std::log(c.znear), lf = std::log(far);
     double coarsest = 0.0;
     for (int i = 0; i < kFightSamples; ++i)
         coarsest = std::max(coarsest,
                             view::step_at(c, std::exp(ln + (lf - ln) * (i + 0.5) / kFightSamples)));
     return coarsest;
+}
+
+double seen_to(const scene::Scene& scene, const scene::Camera& camera) {
+    const scene::Bounds& b = scene.bounds;
+    if (!b.valid()) return 0.0;
+    double farthest = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y,
+                               (i & 4) ? b.max.z : b.min.z);
+        farthest = std::max(farthest, double(glm::length(corner - camera.position)));
+    }
+    return farthest;
 }
 
 std::string g3(double v) {
