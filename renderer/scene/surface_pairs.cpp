@@ -110,6 +110,8 @@ class SurfacePairSearch {
   private:
     void bin_triangles();
     void bin(const dvec3& normal, const DirRef& ref);
+    // Fills entries_ (kept across bins, as its memory is).
+    void bin_entries(size_t bin, const dvec3& w);
     void search_bin(size_t bin);
     void consider(size_t bin, const dvec3& centre, const PlaneEntry& x, const PlaneEntry& y);
     bool duplicate(uint32_t a, uint32_t b) const;
@@ -118,6 +120,8 @@ class SurfacePairSearch {
     double near_gap_max_ = 0.0;
     double reach_ = 0.0;  // of a normal's ball
     std::vector<std::vector<DirRef>> bins_;
+    std::vector<PlaneEntry> entries_;                    // of the bin being searched
+    std::vector<double> eps_;                            // each entry's largest eps
     std::unordered_map<uint64_t, PairTallies> tallies_;  // key: a << 32 | b
 };
 
@@ -168,8 +172,43 @@ void SurfacePairSearch::bin_triangles() {
     }
 }
 
-// The bin's triangles as boxes in its frame (z along its centre direction), grown by half the
-// near gap and their own largest eps, against each other.
+// The bin's triangles as boxes in its frame (x, y in the plane, z along `w`), grown so that
+// two triangles whose points lie within a gap g along either's normal overlap: by their own
+// largest eps on every axis, half the near gap along z, and half of it times the largest
+// sine between a normal of the bin and `w` in the plane.
+void SurfacePairSearch::bin_entries(size_t bin, const dvec3& w) {
+    const dvec3 u =
+        glm::normalize(glm::cross(w, std::abs(w.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
+    const dvec3 v = glm::cross(w, u);
+    std::vector<PlaneEntry>& entries = entries_;
+    std::vector<double>& eps = eps_;
+    entries.clear();
+    eps.clear();
+    double lateral = 0.0;
+    WorldTriangle t;
+    for (const DirRef& ref : bins_[bin]) {
+        detail::world_triangle(instances_[ref.instance], ref.triangle, t);
+        PlaneEntry e{dvec3(std::numeric_limits<double>::infinity()),
+                     dvec3(-std::numeric_limits<double>::infinity()), ref.instance, ref.triangle};
+        double own = 0.0;
+        for (const dvec3& p : t.p) {
+            own = std::max(own, overlay_epsilon(p, t.longest));
+            const dvec3 q(glm::dot(p, u), glm::dot(p, v), glm::dot(p, w));
+            e.lo = glm::min(e.lo, q);
+            e.hi = glm::max(e.hi, q);
+        }
+        lateral = std::max(lateral, glm::length(t.n - glm::dot(t.n, w) * w));
+        entries.push_back(e);
+        eps.push_back(own);
+    }
+    for (size_t i = 0; i < entries.size(); ++i) {
+        const dvec3 grow(eps[i] + 0.5 * near_gap_max_ * lateral,
+                         eps[i] + 0.5 * near_gap_max_ * lateral, eps[i] + 0.5 * near_gap_max_);
+        entries[i].lo -= grow;
+        entries[i].hi += grow;
+    }
+}
+
 void SurfacePairSearch::search_bin(size_t bin) {
     const std::vector<DirRef>& refs = bins_[bin];
     if (refs.size() < 2 || refs.front().instance == refs.back().instance) return;
@@ -178,28 +217,8 @@ void SurfacePairSearch::search_bin(size_t bin) {
                                index / (kDirSide * kDirSide) - kDirHalf) *
                          kDirCell;
     const dvec3 w = glm::normalize(centre);
-    const dvec3 u =
-        glm::normalize(glm::cross(w, std::abs(w.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
-    const dvec3 v = glm::cross(w, u);
-    std::vector<PlaneEntry> entries;
-    entries.reserve(refs.size());
-    WorldTriangle t;
-    for (const DirRef& ref : refs) {
-        detail::world_triangle(instances_[ref.instance], ref.triangle, t);
-        double grow = 0.0;
-        PlaneEntry e{dvec3(std::numeric_limits<double>::infinity()),
-                     dvec3(-std::numeric_limits<double>::infinity()), ref.instance, ref.triangle};
-        for (const dvec3& p : t.p) {
-            grow = std::max(grow, overlay_epsilon(p, t.longest));
-            const dvec3 q(glm::dot(p, u), glm::dot(p, v), glm::dot(p, w));
-            e.lo = glm::min(e.lo, q);
-            e.hi = glm::max(e.hi, q);
-        }
-        grow += 0.5 * near_gap_max_;
-        e.lo -= grow;
-        e.hi += grow;
-        entries.push_back(e);
-    }
+    bin_entries(bin, w);
+    const std::vector<PlaneEntry>& entries = entries_;
     detail::overlapping_entries(
         entries, [&](uint32_t i, uint32_t j) { consider(bin, w, entries[i], entries[j]); });
 }

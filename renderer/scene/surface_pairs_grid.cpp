@@ -20,6 +20,7 @@ struct SpRecord {
     uint64_t key = 0;
     double lo_z = 0.0;
     uint32_t entry = 0;
+    uint32_t instance = 0;  // the entry's, to skip pairs of one instance without reading it
 };
 
 struct SpLevel {
@@ -82,9 +83,12 @@ SpGrid::SpGrid(const std::vector<PlaneEntry>& entries)
         if (levels_.size() <= level) levels_.resize(level + 1);
         level_of_[i] = static_cast<uint8_t>(level);
     }
+    std::vector<size_t> counts(levels_.size(), 0);
+    for (const uint8_t level : level_of_) ++counts[level];
     double size = base;
-    for (SpLevel& level : levels_) {
-        level.size = size;
+    for (size_t level = 0; level < levels_.size(); ++level) {
+        levels_[level].size = size;
+        levels_[level].records.reserve(4 * counts[level]);  // at most 2 x 2 cells each
         size *= kSpLevelRatio;
     }
     for (uint32_t i = 0; i < entries.size(); ++i) record(i, levels_[level_of_[i]]);
@@ -103,8 +107,8 @@ void SpGrid::record(uint32_t entry, SpLevel& level) {
     const int64_t y1 = coordinate(e.hi.y, origin_.y, level.size);
     for (int64_t x = x0; x <= x1; ++x)
         for (int64_t y = y0; y <= y1; ++y)
-            level.records.push_back(
-                {static_cast<uint64_t>(x) << 32 | static_cast<uint64_t>(y), e.lo.z, entry});
+            level.records.push_back({static_cast<uint64_t>(x) << 32 | static_cast<uint64_t>(y),
+                                     e.lo.z, entry, e.instance});
 }
 
 void SpGrid::same_level_pairs(const std::function<void(uint32_t, uint32_t)>& visit) const {
@@ -115,9 +119,9 @@ void SpGrid::same_level_pairs(const std::function<void(uint32_t, uint32_t)>& vis
             for (size_t i = begin; i < end; ++i) {
                 const PlaneEntry& a = entries_[r[i].entry];
                 for (size_t j = i + 1; j < end && r[j].lo_z <= a.hi.z; ++j) {
+                    if (r[j].instance == a.instance) continue;
                     const PlaneEntry& b = entries_[r[j].entry];
-                    if (a.instance != b.instance && sp_overlap_xy(a, b) &&
-                        owns(a, b, r[i].key, level.size))
+                    if (sp_overlap_xy(a, b) && owns(a, b, r[i].key, level.size))
                         visit(r[i].entry, r[j].entry);
                 }
             }
@@ -140,9 +144,9 @@ void SpGrid::query(uint32_t entry, const SpLevel& level,
             auto it = std::lower_bound(r.begin(), r.end(), cell,
                                        [](const SpRecord& s, uint64_t k) { return s.key < k; });
             for (; it != r.end() && it->key == cell && it->lo_z <= a.hi.z; ++it) {
+                if (it->instance == a.instance) continue;
                 const PlaneEntry& b = entries_[it->entry];
-                if (b.hi.z >= a.lo.z && a.instance != b.instance && sp_overlap_xy(a, b) &&
-                    owns(a, b, cell, level.size))
+                if (b.hi.z >= a.lo.z && sp_overlap_xy(a, b) && owns(a, b, cell, level.size))
                     visit(entry, it->entry);
             }
         }

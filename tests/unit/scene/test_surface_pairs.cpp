@@ -261,70 +261,83 @@ SpTallies sp_every_pair(const std::vector<Mesh>& meshes, const std::vector<Insta
     return out;
 }
 
-// Random triangles on 24 planes: six directions (axes, one on the fold of n and -n, one on a
-// direction bin's edge), each jittered up to 3 degrees per plane, at offsets 0, 0.003 and 0.02
-// along it; either side facing, single- and double-sided, some placed by a mirroring node.
-TEST(SurfacePairs, FindsWhatEveryTrianglePairGives) {
-    std::mt19937 random(7);
+// 400 instances of two random triangles on 24 planes: seven directions (axes, one on the fold
+// of n and -n, one on a direction bin's edge, one at a bin's corner, 8 degrees off its centre),
+// each jittered up to 3 degrees per plane but the first seven, at offsets 0, `offsets[0]` and
+// `offsets[1]` along it; either side facing, single- and double-sided, a quarter placed by a
+// mirroring node.
+struct SpRandomScene {
+    std::vector<Mesh> meshes;
+    std::vector<Instance> instances;
+};
+
+SpRandomScene sp_random_scene(uint32_t seed, std::array<double, 2> offsets) {
+    std::mt19937 random(seed);
     auto uniform = [&](double lo, double hi) {
         return std::uniform_real_distribution<double>(lo, hi)(random);
     };
     const glm::dvec3 fold = glm::normalize(glm::dvec3(1, 2, 4));
     const std::vector<glm::dvec3> directions = {
-        {1, 0, 0},
-        {0, 1, 0},
-        {0, 0, 1},
-        glm::normalize(glm::cross(fold, glm::dvec3(1, 0, 0))),
-        glm::normalize(glm::dvec3(0.1, 0, 1)),
-        glm::normalize(glm::dvec3(1, 1, 0))};
-    struct Plane {
-        glm::dvec3 n, u, v, at;
-    };
-    std::vector<Plane> planes;
-    for (int i = 0; i < 24; ++i) {
+        {1, 0, 0},   {0, 1, 0}, {0, 0, 1},       glm::cross(fold, glm::dvec3(1, 0, 0)),
+        {0.1, 0, 1}, {1, 1, 0}, {0.1, 0.1, 0.99}};
+    std::vector<glm::dmat3> planes;  // u, v, n
+    for (size_t i = 0; i < 24; ++i) {
         const glm::dvec3 jitter(uniform(-0.03, 0.03), uniform(-0.03, 0.03), uniform(-0.03, 0.03));
-        const glm::dvec3 n = glm::normalize(directions[i % 6] + (i < 6 ? glm::dvec3(0) : jitter));
+        const glm::dvec3 n = glm::normalize(directions[i % 7] + (i < 7 ? glm::dvec3(0) : jitter));
         const glm::dvec3 u = glm::normalize(glm::cross(n, glm::dvec3(0.3, 0.5, 0.7)));
-        planes.push_back({n, u, glm::cross(n, u), n * std::array{0.0, 0.003, 0.02}[i / 6 % 3]});
+        const double offset = i % 3 == 0 ? 0.0 : offsets[i % 3 - 1];
+        planes.push_back({u, glm::cross(n, u), n * offset});
     }
-    std::vector<Mesh> meshes;
-    std::vector<Instance> instances;
+    SpRandomScene out;
     const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), {-1, 1, 1});
     for (uint32_t i = 0; i < 400; ++i) {
-        const Plane& p = planes[random() % planes.size()];
+        const glm::dmat3& p = planes[random() % planes.size()];
         const bool mirrored = random() % 4 == 0;
         Mesh m;
         m.material = random() % 2;
         for (int t = 0; t < 2; ++t) {
-            const glm::dvec3 centre = p.at + p.u * uniform(-1, 1) + p.v * uniform(-1, 1);
+            const glm::dvec3 centre = p[2] + p[0] * uniform(-1, 1) + p[1] * uniform(-1, 1);
             for (int k = 0; k < 3; ++k) {
-                const glm::dvec3 q = centre + p.u * uniform(-0.8, 0.8) + p.v * uniform(-0.8, 0.8);
+                const glm::dvec3 q = centre + p[0] * uniform(-0.8, 0.8) + p[1] * uniform(-0.8, 0.8);
                 m.vertices.push_back({glm::vec3(mirrored ? glm::dvec3(-q.x, q.y, q.z) : q)});
                 m.indices.push_back(static_cast<uint32_t>(m.indices.size()));
             }
             if (random() % 2)
                 std::swap(m.indices[m.indices.size() - 1], m.indices[m.indices.size() - 2]);
         }
-        meshes.push_back(m);
-        instances.push_back({i, mirrored ? mirror : glm::mat4(1.0f), ""});
+        out.meshes.push_back(m);
+        out.instances.push_back({i, mirrored ? mirror : glm::mat4(1.0f), ""});
     }
-    const SpTallies want = sp_every_pair(meshes, instances, 0.01);
-    std::map<PairKind, size_t> kinds;
-    for (const auto& [key, tally] : want) ++kinds[std::get<2>(key)];
-    std::printf("random planes: %zu coplanar and %zu near pairs\n", kinds[PairKind::Coplanar],
-                kinds[PairKind::Near]);
-    EXPECT_GT(kinds[PairKind::Coplanar], 50u);
-    EXPECT_GT(kinds[PairKind::Near], 50u);
-    const auto found = find_surface_pairs(meshes, kSpMaterials, instances, {0.01});
-    EXPECT_EQ(found.size(), want.size());
-    for (const SurfacePair& p : found) {
-        SCOPED_TRACE(std::to_string(p.a) + " " + std::to_string(p.b) + " " + to_string(p.kind));
-        const auto it = want.find({p.a, p.b, p.kind});
-        ASSERT_NE(it, want.end());
-        EXPECT_EQ(p.triangle_pairs, it->second.count);
-        EXPECT_NEAR(p.overlap_area, it->second.area, 1e-9);
-        if (p.kind == PairKind::Near) {
-            EXPECT_EQ(p.min_gap, it->second.min_gap);
+    return out;
+}
+
+TEST(SurfacePairs, FindsWhatEveryTrianglePairGives) {
+    struct Case {
+        std::array<double, 2> offsets;
+        double near_gap_max;
+    };
+    for (const Case& c : {Case{{0.003, 0.02}, 0.01}, Case{{0.2, 0.5}, 0.6}}) {
+        SCOPED_TRACE(c.near_gap_max);
+        const SpRandomScene s = sp_random_scene(7, c.offsets);
+        const SpTallies want = sp_every_pair(s.meshes, s.instances, c.near_gap_max);
+        std::map<PairKind, size_t> kinds;
+        for (const auto& [key, tally] : want) ++kinds[std::get<2>(key)];
+        std::printf("random planes, near gap %g: %zu coplanar and %zu near pairs\n", c.near_gap_max,
+                    kinds[PairKind::Coplanar], kinds[PairKind::Near]);
+        EXPECT_GT(kinds[PairKind::Coplanar], 50u);
+        EXPECT_GT(kinds[PairKind::Near], 50u);
+        const auto found =
+            find_surface_pairs(s.meshes, kSpMaterials, s.instances, {c.near_gap_max});
+        EXPECT_EQ(found.size(), want.size());
+        for (const SurfacePair& p : found) {
+            SCOPED_TRACE(std::to_string(p.a) + " " + std::to_string(p.b) + " " + to_string(p.kind));
+            const auto it = want.find({p.a, p.b, p.kind});
+            ASSERT_NE(it, want.end());
+            EXPECT_EQ(p.triangle_pairs, it->second.count);
+            EXPECT_NEAR(p.overlap_area, it->second.area, 1e-9);
+            if (p.kind == PairKind::Near) {
+                EXPECT_EQ(p.min_gap, it->second.min_gap);
+            }
         }
     }
 }
