@@ -173,9 +173,12 @@ void SurfacePairSearch::bin_triangles() {
 }
 
 // The bin's triangles as boxes in its frame (x, y in the plane, z along `w`), grown so that
-// two triangles whose points lie within a gap g along either's normal overlap: by their own
-// largest eps on every axis, half the near gap along z, and half of it times the largest
-// sine between a normal of the bin and `w` in the plane.
+// two triangles of a pair overlap: the points of b lie within the pair's gap g of a's along
+// a's normal (|g| <= eps_a + eps_b coplanar; <= near_gap_max somewhere, near), which moves them
+// by at most |g| along z and |g| times the bin's largest tilt (the sine between a normal of
+// the bin and `w`) in the plane. Each box takes half. A pair's overlap has a positive area,
+// so its boxes overlap with positive extents in x and y: boxes that merely touch there (tiles
+// side by side) never pair (overlapping_entries).
 void SurfacePairSearch::bin_entries(size_t bin, const dvec3& w) {
     const dvec3 u =
         glm::normalize(glm::cross(w, std::abs(w.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0)));
@@ -202,8 +205,8 @@ void SurfacePairSearch::bin_entries(size_t bin, const dvec3& w) {
         eps.push_back(own);
     }
     for (size_t i = 0; i < entries.size(); ++i) {
-        const dvec3 grow(eps[i] + 0.5 * near_gap_max_ * lateral,
-                         eps[i] + 0.5 * near_gap_max_ * lateral, eps[i] + 0.5 * near_gap_max_);
+        const double gap = eps[i] + 0.5 * near_gap_max_ * kDirSlack;
+        const dvec3 grow(gap * lateral, gap * lateral, gap);
         entries[i].lo -= grow;
         entries[i].hi += grow;
     }

@@ -57,7 +57,7 @@ struct PlaneEntry {
 };
 
 // Calls visit(i, j) once for every pair of `entries` of different instances whose boxes
-// overlap (indices into `entries`, in either order).
+// overlap, with positive extents in x and y (indices into `entries`, in either order).
 void overlapping_entries(const std::vector<PlaneEntry>& entries,
                          const std::function<void(uint32_t, uint32_t)>& visit);
 

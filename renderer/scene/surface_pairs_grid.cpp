@@ -28,8 +28,9 @@ struct SpLevel {
     std::vector<SpRecord> records;  // one per cell a box covers, sorted by (key, lo_z)
 };
 
+// Overlap with positive extents in x and y (touching is not enough); in z, touching is.
 bool sp_overlap_xy(const PlaneEntry& a, const PlaneEntry& b) {
-    return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
+    return a.lo.x < b.hi.x && b.lo.x < a.hi.x && a.lo.y < b.hi.y && b.lo.y < a.hi.y;
 }
 
 class SpGrid {

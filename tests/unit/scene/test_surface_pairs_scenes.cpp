@@ -209,10 +209,12 @@ glm::mat4 sp_at(float x, float y, float z) {
 
 // 800 tessellated 10 m boxes (2028 triangles) 12 m apart, 5 of them twice and 5 with a copy
 // 5 m above (flush sides: coplanar), 20 stacks of 10 tessellated floors (1984 triangles) 3 m
-// apart, 5 floors with a copy 1/16 m above (near).
+// apart, 5 floors with a copy 1/16 m above (near), and a square of 200 x 200 unit tiles, one
+// instance each, side by side (none pairs).
 TEST(SurfacePairsScale, TwoMillionTrianglesOfBoxesAndStackedFloors) {
-    std::vector<Mesh> meshes = {sp_box(13, 10.0f), Mesh{}};
+    std::vector<Mesh> meshes = {sp_box(13, 10.0f), Mesh{}, Mesh{}};
     sp_add_face(meshes[1], 32, 31, glm::vec3(0.0f), {1, 0, 0}, {0, 0, 1});
+    sp_add_face(meshes[2], 1, 1, glm::vec3(0.0f), {1, 0, 0}, {0, 0, 1});
     std::vector<Instance> instances;
     for (int k = 0; k < 790; ++k)
         instances.push_back({0, sp_at(12.0f * float(k % 40), 0, 12.0f * float(k / 40)), "box"});
@@ -227,6 +229,8 @@ TEST(SurfacePairsScale, TwoMillionTrianglesOfBoxesAndStackedFloors) {
     for (int k = 0; k < 5; ++k)
         instances.push_back(
             {1, glm::translate(instances[800 + k * 10].world, {0, 0.0625f, 0}), "near"});
+    for (int k = 0; k < 200 * 200; ++k)
+        instances.push_back({2, sp_at(float(k % 200), 0, -1.0f - float(k / 200)), "tile"});
     Scene s;
     s.meshes = meshes;
     s.instances = instances;
