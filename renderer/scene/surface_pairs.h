@@ -14,7 +14,9 @@
 // - Overlap: b's triangle is projected along a's normal onto a's plane and clipped against a's
 //   (Sutherland-Hodgman). It counts when it is wider than eps: twice its area over its
 //   perimeter (its mean width) above eps at its centre, so tiles meeting at an edge, touching
-//   corners and a closed box's faces are never pairs.
+//   corners and a closed box's faces are never pairs. The overlap is seen along the normal,
+//   not from a camera: two parallel quads whose gap is large against their size can overlap
+//   on screen and not along the normal (zfight: one of its six default slots has no near pair).
 // - Gap: at every vertex q of the overlap, the signed distance along a's normal from a's plane
 //   to b's; eps there is overlay_epsilon(q, L) (decals.h), L the longer of the two triangles'
 //   longest edges. The triangle pair is COPLANAR when |gap| <= eps at every vertex; NEAR when
@@ -38,7 +40,9 @@
 // level per factor 4 of triangle size, each cell's triangles swept in order of their offset
 // along the normal. Parallel triangles that are far apart along their normal (stacked floors,
 // the two sides of a city of boxes), side by side in the plane (tiled floors) or of very
-// different sizes are never compared; the work is about linear in the triangles (DESIGN).
+// different sizes are never compared: the work is about linear in the triangles, plus the
+// triangle pairs that do lie within the gap of each other (a large near_gap_max makes many).
+// 2M triangles take about 1.5 s on one core.
 #include <cstdint>
 #include <vector>
 
@@ -63,8 +67,8 @@ struct SurfacePair {
     double overlap_area = 0.0;                // world units^2, summed over triangle pairs (above)
     double min_gap = 0.0, max_gap = 0.0;      // |gap| along the normal (0 unless Near)
     uint32_t triangle_pairs = 0;              // overlapping triangle pairs of this kind
-    glm::dvec3 normal{0.0};                   // a's, of the largest overlap
-    glm::dvec3 point{0.0};                    // world point inside that overlap
+    glm::dvec3 normal{0.0};                   // a's facing normal, at the largest overlap
+    glm::dvec3 point{0.0};                    // world point inside it, on a's plane
     uint32_t triangle_a = 0, triangle_b = 0;  // triangle indices (mesh index / 3) of it
 };
 
@@ -76,8 +80,8 @@ std::vector<SurfacePair> find_surface_pairs(const std::vector<Mesh>& meshes,
 // Degenerate triangles. A triangle is degenerate when an index repeats or lies outside the
 // vertices, or its area is at most kDegenerateArea times its longest edge squared (zero-length
 // edges, collinear corners, non-finite positions): its height is then at most 2e-7 of that
-// edge, the float precision of its own corners, so its normal is rounding noise and it covers
-// no pixel. Counted per mesh in object space (instances do not multiply it).
+// edge, about the float precision of its own corners, so its normal is rounding noise and it
+// covers next to nothing. Counted per mesh in object space (instances do not multiply it).
 inline constexpr double kDegenerateArea = 1e-7;
 bool degenerate_triangle(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2);
 
