@@ -140,11 +140,11 @@ TEST(SurfacePairsBuiltin, OverdrawLayersAreNearPairsWithinTheGap) {
     }
 }
 
-// Besides its 15 decals on their walls and floor, the atrium's architecture overlaps itself
-// where parts are sunk into others with flush faces: the bottoms of the end columns' plinths
-// inside the end walls' boxes and of the upper columns inside the parapets (facing down, never
-// seen), the tops of the gallery and loggia arches flush with the upper floor slabs (seen
-// from the upper galleries), the corners where the gallery and loggia roofs and floors meet.
+// Besides its 15 decals on their walls and floor, the atrium's parts still share planes where
+// they meet inside other solids: the gallery arches' ends with the upper slabs' edges (inside
+// the arcade arches and the outer walls), the loggia arches' ends with its floor's, and roofs,
+// floors and arches ending in the far wall's plane, facing into it. All are coplanar (the
+// lint leaves them out as enclosed); nothing is near within 1 cm.
 TEST(SurfacePairsBuiltin, AtriumsDecalsAreCoplanarWithTheirBasesAndNothingIsNear) {
     const Scene s = load_scene("atrium", Settings{});
     const auto start = std::chrono::steady_clock::now();
@@ -161,7 +161,7 @@ TEST(SurfacePairsBuiltin, AtriumsDecalsAreCoplanarWithTheirBasesAndNothingIsNear
         std::printf("  %s\n", sp_describe(s, p).c_str());
         SCOPED_TRACE(sp_describe(s, p));
         EXPECT_EQ(p.kind, PairKind::Coplanar);
-        EXPECT_GT(p.overlap_area, 0.05);
+        EXPECT_GT(p.overlap_area, 0.0);
         for (const auto& [overlay, base] : {std::pair(p.a, p.b), std::pair(p.b, p.a)}) {
             if (!decal_base.count(overlay)) continue;
             EXPECT_EQ(decal_base.at(overlay), base);
