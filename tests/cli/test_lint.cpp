@@ -67,11 +67,21 @@ TEST(Lint, BuiltInScenesFindExactlyTheirPairsDecalsAndOverdraw) {
     EXPECT_EQ(l.exit_code, 1) << "zfight's coplanar pairs are errors";
     const json &zfight = l.report[0], &decals = l.report[1], &overdraw = l.report[2],
                &atrium = l.report[3];
-    // zfight: 6 slots, each an exactly coplanar pair and a near pair, nothing else.
+    // zfight: 6 slots, each an exactly coplanar pair and a near pair, nothing else. The near
+    // pairs' back quads are pushed along the view ray, not the normal: seen head-on, slot 3's
+    // lies beside its front quad (they overlap only from the scene's camera; surface_pairs.h),
+    // so 5 of the 6 are near pairs, each between its own slot's quads.
     const auto coplanar = with_code(zfight, "COPLANAR_OVERLAP");
     const auto near = with_code(zfight, "NEAR_COPLANAR_FIGHT");
     ASSERT_EQ(coplanar.size(), 6u) << zfight.dump(1);
-    ASSERT_EQ(near.size(), 6u) << zfight.dump(1);
+    ASSERT_EQ(near.size(), 5u) << zfight.dump(1);
+    std::set<std::string> near_slots;
+    for (const json& m : near) {
+        const std::string a = m["surfaces"][0]["node"], b = m["surfaces"][1]["node"];
+        EXPECT_EQ(a.substr(a.rfind('_')), b.substr(b.rfind('_'))) << a << " " << b;
+        near_slots.insert(a.substr(a.rfind('_')));
+    }
+    EXPECT_EQ(near_slots, (std::set<std::string>{"_0", "_1", "_2", "_4", "_5"}));
     for (const json& m : coplanar) {
         EXPECT_EQ(m["severity"], 0);
         EXPECT_EQ(m["surfaces"][0]["material"].get<std::string>().substr(0, 9), "coplanar_");
