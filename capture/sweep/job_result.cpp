@@ -130,6 +130,13 @@ json job_result(const Job& job, const ChildExit& exit, const fs::path& dir) {
              at = line.find(staging, at))
             line.replace(at, staging.size(), "jobs/" + job.id);
         failure = exit_text(exit) + (line.empty() ? "" : ": " + line);
+        // lint's exit 1 with its report read: the findings at --fail-on are the reason.
+        if (exit.signal == 0 && exit.exit_code == 1 && result.contains("lint"))
+            failure = "lint: " + std::to_string(result["lint"].value("numErrors", 0)) +
+                      " errors, " + std::to_string(result["lint"].value("numWarnings", 0)) +
+                      " warnings, " + std::to_string(result["lint"].value("numInfos", 0)) +
+                      " infos at --fail-on " +
+                      (job.action.fail_on.empty() ? "error" : job.action.fail_on) + " (lint.json)";
     }
     result["status"] = failure.empty() ? "passed" : "failed";
     if (!failure.empty()) result["message"] = failure;

@@ -170,6 +170,22 @@ TEST(Sweep, BenchTimingsAreReportedAgainstABaselineNeverCompared) {
     EXPECT_FALSE(summary["results"][0].contains("timings")) << "sweep.json holds no times";
 }
 
+// lint jobs: zfight's coplanar pairs fail at --fail-on error (the reason is lint's counts),
+// atrium passes; the JUnit has both, one failed; the counts are in sweep.json.
+TEST(Sweep, LintJobsFailByTheirFindingsInTheJunit) {
+    const fs::path dir = ds::test::fresh_dir("sweep_lint");
+    const fs::path manifest = write_manifest(dir, "m.json", R"({"scenes": ["zfight", "atrium"],
+        "actions": [{"action": "lint", "fail_on": "error"}]})");
+    const ProcessResult r = sweep(manifest.string() + " --out " + (dir / "out").string());
+    EXPECT_EQ(r.exit_code, 1) << r.err << r.out;
+    EXPECT_EQ(parse_junit(dir / "out" / "junit.xml"),
+              "2 1\nlint: 6 errors, 0 warnings, 5 infos at --fail-on error (lint.json)\n");
+    const json summary = read_json(dir / "out" / "sweep.json");
+    ASSERT_EQ(summary["results"].size(), 2u) << summary.dump();
+    for (const json& job : summary["results"])
+        EXPECT_EQ(job["lint"]["numErrors"], job["scene"] == "zfight" ? 6 : 0) << job.dump();
+}
+
 // The sweep (and with it its running job) is killed with SIGKILL while a job runs: that job has
 // no folder, and the merge makes it a failed testcase "no result". Run again, every job passes.
 TEST(Sweep, AJobKilledMidRunIsAFailedTestcaseAfterTheMerge) {
