@@ -119,7 +119,7 @@ std::optional<Finding> near_finding(const PairContext& c, const scene::SurfacePa
     if (!nearest) return std::nullopt;
     f.severity = chosen ? Severity::Warning : Severity::Info;
     f.magnitude = {chosen.value_or(*nearest), "scene units"};
-    f.message = pair_label(f) + " are parallel and overlap " + g3(p.min_gap) +
+    f.message = pair_label(f) + " are parallel, overlap and lie " + g3(p.min_gap) +
                 " apart: seen head-on they store one depth " +
                 (chosen ? "beyond " + g3(*chosen) + " in " + depth_name(c.chosen)
                         : "only in other formats than " + depth_name(c.chosen)) +
