@@ -23,15 +23,6 @@ std::string coverage_percent(double fraction) {
     return text;
 }
 
-// The instances drawn with material `material` (at most kCoverageMaxSurfaces).
-std::vector<FindingSurface> material_surfaces(const scene::Scene& scene, uint32_t material) {
-    std::vector<FindingSurface> out;
-    for (uint32_t i = 0; i < scene.instances.size() && out.size() < kCoverageMaxSurfaces; ++i)
-        if (scene.meshes.at(scene.instances[i].mesh).material == material)
-            out.push_back(surface_of(scene, i));
-    return out;
-}
-
 Finding coverage_finding(const scene::Scene& scene, const scene::MaterialAlphaCoverage& c,
                          const std::vector<scene::LevelCoverage>& levels,
                          const scene::CoverageDrop& drop) {
@@ -54,7 +45,7 @@ Finding coverage_finding(const scene::Scene& scene, const scene::MaterialAlphaCo
                 ? "alpha_mip_coverage=preserve (mips whose alpha keeps level 0's coverage)"
                 : "author the texture's alpha so its mips can keep the coverage (preserve scales "
                   "a level's alpha as a whole), or alpha_level0=on";
-    f.surfaces = material_surfaces(scene, c.material);
+    f.surfaces = material_surfaces(scene, c.material, kCoverageMaxSurfaces);
     if (!f.surfaces.empty()) f.pointer = f.surfaces.front().pointer;
     return f;
 }

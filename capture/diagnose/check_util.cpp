@@ -21,6 +21,15 @@ FindingSurface surface_named(const scene::Scene& scene, const SurfaceName& name)
     return {name.mesh, name.material, name.node, ""};
 }
 
+std::vector<FindingSurface> material_surfaces(const scene::Scene& scene, uint32_t material,
+                                              size_t max) {
+    std::vector<FindingSurface> out;
+    for (uint32_t i = 0; i < scene.instances.size() && out.size() < max; ++i)
+        if (scene.meshes.at(scene.instances[i].mesh).material == material)
+            out.push_back(surface_of(scene, i));
+    return out;
+}
+
 std::string label(const FindingSurface& s) {
     if (!s.node.empty() && !s.node.starts_with("node ")) return s.node;
     return s.mesh + " (" + s.material + ")";

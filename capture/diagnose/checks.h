@@ -65,6 +65,9 @@ bool has_masked_texture(const scene::Scene& scene);
 FindingSurface surface_of(const scene::Scene& scene, uint32_t instance);
 // The first instance a report's name stands for, as above; without a pointer when none.
 FindingSurface surface_named(const scene::Scene& scene, const SurfaceName& name);
+// The instances drawn with material `material` (at most `max`), as surface_of names them.
+std::vector<FindingSurface> material_surfaces(const scene::Scene& scene, uint32_t material,
+                                              size_t max);
 // How a message names a surface: its node, or "mesh (material)" when the node is unnamed.
 std::string label(const FindingSurface& s);
 // A draw group (instances first .. first + count - 1): its instances' surfaces (at most

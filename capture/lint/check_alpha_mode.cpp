@@ -16,6 +16,7 @@ namespace ds::lint {
 namespace {
 
 constexpr double kMeaningfulShare = 0.01;
+constexpr size_t kMaxSurfaces = 8;  // a finding names at most this many
 
 struct AlphaFacts {
     bool only_0_or_1 = true;
@@ -48,14 +49,6 @@ AlphaFacts alpha_facts(const scene::Scene& scene, const scene::Material& m) {
     return a;
 }
 
-std::vector<FindingSurface> surfaces_of_material(const scene::Scene& scene, uint32_t material) {
-    std::vector<FindingSurface> out;
-    for (uint32_t i = 0; i < scene.instances.size() && out.size() < 8; ++i)
-        if (scene.meshes.at(scene.instances[i].mesh).material == material)
-            out.push_back(diagnose::surface_of(scene, i));
-    return out;
-}
-
 Finding mode_finding(const scene::Scene& scene, uint32_t material, std::string message,
                      std::string fix, double magnitude, std::string unit) {
     Finding f;
@@ -66,7 +59,7 @@ Finding mode_finding(const scene::Scene& scene, uint32_t material, std::string m
     f.message = "material " + scene.materials[material].name + ": " + std::move(message);
     f.fix = std::move(fix);
     f.magnitude = {magnitude, std::move(unit)};
-    f.surfaces = surfaces_of_material(scene, material);
+    f.surfaces = diagnose::material_surfaces(scene, material, kMaxSurfaces);
     return f;
 }
 

@@ -10,10 +10,7 @@ namespace ds::lint {
 
 void check_degenerate(const Input& in, Output& out) {
     out.ran.push_back("degenerate");
-    std::vector<int64_t> instance_of(in.scene.meshes.size(), -1);
-    for (uint32_t i = 0; i < in.scene.instances.size(); ++i)
-        if (instance_of.at(in.scene.instances[i].mesh) < 0)
-            instance_of[in.scene.instances[i].mesh] = i;
+    const std::vector<int64_t> instance_of = first_instances(in.scene);
     for (const scene::DegenerateTriangles& d : scene::find_degenerate_triangles(in.scene.meshes)) {
         if (instance_of[d.mesh] < 0) continue;  // a mesh no node draws
         const scene::Mesh& m = in.scene.meshes.at(d.mesh);

@@ -37,10 +37,7 @@ Finding mesh_finding(const Input& in, uint32_t mesh, const meshopt_OverdrawStati
 
 void check_mesh_overdraw(const Input& in, Output& out) {
     out.ran.push_back("mesh_overdraw");
-    std::vector<int64_t> first_instance(in.scene.meshes.size(), -1);
-    for (uint32_t i = 0; i < in.scene.instances.size(); ++i)
-        if (first_instance.at(in.scene.instances[i].mesh) < 0)
-            first_instance[in.scene.instances[i].mesh] = i;
+    const std::vector<int64_t> first_instance = first_instances(in.scene);
     for (uint32_t m = 0; m < in.scene.meshes.size(); ++m) {
         const scene::Mesh& mesh = in.scene.meshes[m];
         if (first_instance[m] < 0 || mesh.indices.size() < 3 || mesh.vertices.empty()) continue;

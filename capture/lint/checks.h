@@ -31,6 +31,9 @@ void check_overdraw(const Input& in, Output& out);       // OVERDRAW (rendered)
 void check_mesh_overdraw(const Input& in, Output& out);  // OVERDRAW (info, per mesh)
 void check_depth_range(const Input& in, Output& out);    // DEPTH_RANGE
 
+// Per mesh, the first instance that draws it, or -1 for a mesh no node places (lint_run.cpp).
+std::vector<int64_t> first_instances(const scene::Scene& scene);
+
 // --- lint_depth.cpp ---
 
 // The formats a depth fact is given for: d32f reverse-Z, d32f forward-Z, d24, d16 (unorm steps

@@ -11,6 +11,13 @@ constexpr Check kChecks[] = {check_surface_pairs, check_degenerate,  check_decal
 
 }  // namespace
 
+std::vector<int64_t> first_instances(const scene::Scene& scene) {
+    std::vector<int64_t> first(scene.meshes.size(), -1);
+    for (uint32_t i = 0; i < scene.instances.size(); ++i)
+        if (first.at(scene.instances[i].mesh) < 0) first[scene.instances[i].mesh] = i;
+    return first;
+}
+
 Report lint_scene(const Input& in) {
     Report r;
     r.scene = in.scene.name;
