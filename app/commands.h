@@ -24,7 +24,7 @@ int run_layer(const Options& options);
 int run_tune(const Options& options);  // tune msaa | tune alpha
 // 0, or 1 when a finding is at --fail-on's level (default error) or above; 3 validation first
 int run_lint(const Options& options);
-bool display_available();              // $DISPLAY or $WAYLAND_DISPLAY set
+bool display_available();  // $DISPLAY or $WAYLAND_DISPLAY set
 // 0 when every job passed (and nothing regressed against --baseline), 1 otherwise
 int run_sweep(const Options& options);
 bool display_available();  // $DISPLAY or $WAYLAND_DISPLAY set

@@ -1,6 +1,5 @@
 #include "capture/sweep/manifest.h"
 
-
 #include "capture/sweep/sweep_files.h"
 #include "renderer/common/error.h"
 #include "renderer/common/quoted.h"

@@ -54,7 +54,9 @@ inline void write_lint_bin(const std::filesystem::path& file) {
     const uint16_t diag_a[6] = {0, 1, 2, 0, 2, 3}, diag_b[6] = {0, 1, 3, 1, 2, 3};
     const uint16_t sliver_idx[6] = {0, 1, 2, 0, 2, 3};  // 0,1,2 collinear
     std::ofstream bin(file, std::ios::binary);
-    const auto put = [&](const void* p, size_t n) { bin.write(static_cast<const char*>(p), long(n)); };
+    const auto put = [&](const void* p, size_t n) {
+        bin.write(static_cast<const char*>(p), long(n));
+    };
     put(square, 48), put(diag_a, 12), put(square, 48), put(diag_b, 12), put(sliver, 48),
         put(sliver_idx, 12);
 }
@@ -66,8 +68,9 @@ inline nlohmann::json lint_gltf(const std::vector<LintNode>& nodes,
     json j = {{"asset", {{"version", "2.0"}}}, {"scene", 0}, {"accessors", lint_accessors()}};
     j["buffers"] = {{{"uri", bin_name}, {"byteLength", 180}}};
     for (int v = 0; v < 6; ++v)
-        j["bufferViews"].push_back(
-            {{"buffer", 0}, {"byteOffset", (v / 2) * 60 + (v % 2) * 48}, {"byteLength", v % 2 ? 12 : 48}});
+        j["bufferViews"].push_back({{"buffer", 0},
+                                    {"byteOffset", (v / 2) * 60 + (v % 2) * 48},
+                                    {"byteLength", v % 2 ? 12 : 48}});
     const char* names[3] = {"square", "square_other_diagonal", "sliver"};
     for (int m = 0; m < 3; ++m)
         j["meshes"].push_back(
@@ -90,16 +93,18 @@ inline nlohmann::json lint_gltf(const std::vector<LintNode>& nodes,
         j["scenes"][0]["nodes"].push_back(n);
     }
     for (const LintMaterial& m : materials)
-        j["materials"].push_back({{"name", m.name},
-                                  {"alphaMode", m.alpha_mode},
-                                  {"doubleSided", m.double_sided},
-                                  {"pbrMetallicRoughness",
-                                   {{"baseColorFactor", {0.8, 0.8, 0.8, m.alpha}}, {"metallicFactor", 0.0}}}});
+        j["materials"].push_back(
+            {{"name", m.name},
+             {"alphaMode", m.alpha_mode},
+             {"doubleSided", m.double_sided},
+             {"pbrMetallicRoughness",
+              {{"baseColorFactor", {0.8, 0.8, 0.8, m.alpha}}, {"metallicFactor", 0.0}}}});
     return j;
 }
 
 // Writes DIR/NAME.gltf and DIR/NAME.bin; returns the .gltf path.
-inline std::filesystem::path write_lint_scene(const std::filesystem::path& dir, const std::string& name,
+inline std::filesystem::path write_lint_scene(const std::filesystem::path& dir,
+                                              const std::string& name,
                                               const std::vector<LintNode>& nodes,
                                               const std::vector<LintMaterial>& materials) {
     write_lint_bin(dir / (name + ".bin"));

@@ -43,7 +43,8 @@ std::vector<json> with_code(const json& report, const std::string& code) {
 }
 
 std::set<std::string> node_pair(const json& m) {
-    return {m["surfaces"][0]["node"].get<std::string>(), m["surfaces"][1]["node"].get<std::string>()};
+    return {m["surfaces"][0]["node"].get<std::string>(),
+            m["surfaces"][1]["node"].get<std::string>()};
 }
 
 ds::view::DepthConfig format_named(const std::string& name, double n, double f) {
@@ -173,7 +174,8 @@ TEST(Lint, ReportReadsBackInGltfValidatorsShapeWithPointersIntoTheFile) {
     const Lint l = run_lint("shape", gltf.string());
     const json& r = l.report;
     ASSERT_TRUE(r.is_object()) << l.err;
-    for (const char* key : {"uri", "mimeType", "validatorVersion"}) EXPECT_TRUE(r[key].is_string()) << key;
+    for (const char* key : {"uri", "mimeType", "validatorVersion"})
+        EXPECT_TRUE(r[key].is_string()) << key;
     EXPECT_EQ(r["mimeType"], "model/gltf+json");
     const json& issues = r["issues"];
     for (const char* key : {"numErrors", "numWarnings", "numInfos", "numHints"})
@@ -208,23 +210,32 @@ TEST(Lint, ConfigIgnoresOverridesTruncatesAndSetsTheExitCode) {
     const Lint plain = run_lint("config_plain", gltf.string());
     EXPECT_EQ(plain.exit_code, 1);
     EXPECT_FALSE(with_code(plain.report, "COPLANAR_OVERLAP").empty());
-    const Lint ignored = run_lint(
-        "config_ignore",
-        gltf.string() + config("ignore.json", {{"ignore", {"COPLANAR_OVERLAP", "DUPLICATE_INSTANCE"}}}));
+    const Lint ignored =
+        run_lint("config_ignore",
+                 gltf.string() + config("ignore.json",
+                                        {{"ignore", {"COPLANAR_OVERLAP", "DUPLICATE_INSTANCE"}}}));
     EXPECT_EQ(ignored.exit_code, 0) << ignored.out;
     EXPECT_TRUE(with_code(ignored.report, "COPLANAR_OVERLAP").empty());
     EXPECT_EQ(ignored.report["issues"]["numErrors"], 0);
-    const Lint only = run_lint("config_only", gltf.string() + config("only.json", {{"only", {"ALPHA_MODE"}}}));
-    EXPECT_EQ(only.report["issues"]["messages"].size(), with_code(plain.report, "ALPHA_MODE").size());
-    const Lint over = run_lint(
-        "config_override", gltf.string() + config("override.json", {{"override", {{"ALPHA_MODE", 0}}}}) +
-                               " --fail-on error");
-    EXPECT_EQ(over.report["issues"]["numErrors"], plain.report["issues"]["numErrors"].get<int>() + 2);
-    const Lint capped = run_lint("config_max", gltf.string() + config("max.json", {{"max-issues", 1}}));
+    const Lint only =
+        run_lint("config_only", gltf.string() + config("only.json", {{"only", {"ALPHA_MODE"}}}));
+    EXPECT_EQ(only.report["issues"]["messages"].size(),
+              with_code(plain.report, "ALPHA_MODE").size());
+    const Lint over =
+        run_lint("config_override",
+                 gltf.string() + config("override.json", {{"override", {{"ALPHA_MODE", 0}}}}) +
+                     " --fail-on error");
+    EXPECT_EQ(over.report["issues"]["numErrors"],
+              plain.report["issues"]["numErrors"].get<int>() + 2);
+    const Lint capped =
+        run_lint("config_max", gltf.string() + config("max.json", {{"max-issues", 1}}));
     EXPECT_EQ(capped.report["issues"]["messages"].size(), 1u);
     EXPECT_TRUE(capped.report["issues"]["truncated"].get<bool>());
-    const Lint warn = run_lint("config_warn", gltf.string() + config("ignore2.json",
-        {{"ignore", {"COPLANAR_OVERLAP", "DUPLICATE_INSTANCE"}}}) + " --fail-on warning");
+    const Lint warn = run_lint(
+        "config_warn",
+        gltf.string() +
+            config("ignore2.json", {{"ignore", {"COPLANAR_OVERLAP", "DUPLICATE_INSTANCE"}}}) +
+            " --fail-on warning");
     EXPECT_EQ(warn.exit_code, 1) << "ALPHA_MODE warnings remain";
 }
 
@@ -246,7 +257,8 @@ TEST(Lint, BadInputIsOneLineAndWritesNothing) {
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"missing scene", "lint " + (dir / "missing.gltf").string() + json_out},
         {"broken scene", "lint " + (dir / "broken.gltf").string() + json_out},
-        {"malformed config", "lint zfight --config " + (dir / "malformed.json").string() + json_out},
+        {"malformed config",
+         "lint zfight --config " + (dir / "malformed.json").string() + json_out},
         {"unknown key", "lint zfight --config " + (dir / "unknown.json").string() + json_out},
         {"ignore and only", "lint zfight --config " + (dir / "both.json").string() + json_out},
         {"bad severity", "lint zfight --config " + (dir / "severity.json").string() + json_out},

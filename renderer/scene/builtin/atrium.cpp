@@ -147,9 +147,8 @@ void add_far_loggia(ModelBuilder& b, const Materials& m, const ArcadeMeshes& arc
         const float x = (static_cast<float>(i) - 1.0f) * bay;
         b.add_node("loggia_arch_" + std::to_string(i), arcade.arch,
                    {{x, kColumnHeight, z}, glm::quat(1, 0, 0, 0), {scale, lower_y, 1.0f}});
-        b.add_node(
-            "loggia_upper_arch_" + std::to_string(i), arcade.arch,
-            {{x, kUpperSpringing, z}, glm::quat(1, 0, 0, 0), {scale, upper_y, 0.8f}});
+        b.add_node("loggia_upper_arch_" + std::to_string(i), arcade.arch,
+                   {{x, kUpperSpringing, z}, glm::quat(1, 0, 0, 0), {scale, upper_y, 0.8f}});
     }
     // The floor and roof stop 2 kEmbed behind the arches' face, so the two faces never share
     // the plane z = front (a band of Z-fighting across the loggia, seen from the courtyard).
@@ -158,11 +157,11 @@ void add_far_loggia(ModelBuilder& b, const Materials& m, const ArcadeMeshes& arc
                                           make_box({-kArcadeX, kUpperFloor - 0.3f, -kHalfLength},
                                                    {kArcadeX, kUpperFloor + kEmbed, front}, 0.5f),
                                           m.plaster));
-    b.add_node("loggia_roof", b.add_mesh("loggia_roof",
-                                         make_box({-kArcadeX, kRoofBottom - kEmbed, -kHalfLength},
-                                                  {kArcadeX, kRoofBottom + 0.3f + kEmbed, front},
-                                                  0.5f),
-                                         m.plaster));
+    b.add_node("loggia_roof",
+               b.add_mesh("loggia_roof",
+                          make_box({-kArcadeX, kRoofBottom - kEmbed, -kHalfLength},
+                                   {kArcadeX, kRoofBottom + 0.3f + kEmbed, front}, 0.5f),
+                          m.plaster));
 }
 
 void add_upper_gallery(ModelBuilder& b, const Materials& m) {
