@@ -10,6 +10,8 @@
 namespace ds::capture {
 
 nlohmann::json read_json_file(const std::filesystem::path& file) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec)) throw Error(file.string() + ": is a folder");
     std::ifstream in(file);
     if (!in) throw Error(file.string() + ": cannot be read");
     try {

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <regex>
 
 #include <nlohmann/json.hpp>
 
+#include "capture/layer_capture_data.h"
 #include "renderer/common/error.h"
 
 namespace ds::lint {
@@ -91,13 +91,9 @@ Config parse_config(const nlohmann::json& j) {
 }
 
 Config read_config(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    if (!in || std::filesystem::is_directory(file))
-        throw InputError(file.string() + ": cannot be read");
+    const nlohmann::json j = capture::read_json_file(file);  // "FILE: why" when unreadable or malformed
     try {
-        return parse_config(nlohmann::json::parse(in));
-    } catch (const nlohmann::json::exception& e) {
-        throw InputError(file.string() + ": " + e.what());
+        return parse_config(j);
     } catch (const Error& e) {
         throw InputError(file.string() + ": " + e.what());
     }

@@ -27,7 +27,8 @@ struct Config {
     Thresholds thresholds;
 };
 
-// Throws ds::InputError "FILE: why" for a file that cannot be read or holds a bad config.
+// Throws ds::Error "FILE: why" for a file that cannot be read or is no JSON (capture::
+// read_json_file), ds::InputError "FILE: why" for a bad config.
 Config read_config(const std::filesystem::path& file);
 Config parse_config(const nlohmann::json& j);  // throws ds::Error "why"
 
